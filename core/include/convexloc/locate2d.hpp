@@ -1,0 +1,236 @@
+// convexloc — point location in a convex polygon: the paper's five methods.
+//
+// Every locator answers exactly (see Location) and shares one interface:
+//   locate(p)            one point
+//   locate(points, out)  a batch; allocates nothing per point
+//   trace(p)             the steps taken: cell, predicates and their signs, result
+//   stats()              size and shape of the subdivision
+//   cells()              the subdivision as drawable geometry, with the edges each cell holds
+// A locator keeps its own copy of the vertices; the polygon may go away after the build.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "convexloc/geometry.hpp"
+#include "convexloc/polygon.hpp"
+
+namespace convexloc {
+
+// === Common result types
+
+// the 2D methods, in the paper's order
+enum class Method2D : std::uint8_t { Halfplane, Wedge, Slab, Uniform, Polar };
+
+// "halfplane", "wedge", "slab", "uniform", "polar"
+std::string_view toString(Method2D m);
+// the method with that name, if any
+std::optional<Method2D> parseMethod2D(std::string_view name);
+// every method, in order
+inline constexpr Method2D kAllMethods2D[] = {Method2D::Halfplane, Method2D::Wedge, Method2D::Slab,
+                                             Method2D::Uniform, Method2D::Polar};
+
+// one edge test: sign of orient2d(edge start, edge end, point); > 0 is the inner side
+struct EdgeTest {
+  std::uint32_t edge = 0;
+  int sign = 0;
+};
+
+// one ray test: sign of orient2d(apex, vertex, point); > 0 means the point is
+// counter-clockwise of the ray from the apex through the vertex
+struct RayTest {
+  std::uint32_t vertex = 0;
+  int sign = 0;
+};
+
+// What one query did, step by step.
+struct Trace2D {
+  Method2D method = Method2D::Halfplane;
+  Location result = Location::Outside;
+  bool outsideBox = false;       // decided by the bounding box before any cell
+  std::int64_t cell = -1;        // slab or polar cell index; -1 when none was used
+  int octant = -1;               // polar: 0..7 counter-clockwise from +x, else -1
+  bool crowded = false;          // the cell held many edges and was searched by bisection
+  bool atCentre = false;         // polar: the point is the centre itself
+  Vec2 apex{};                   // wedge: vertex 0; polar: the centre
+  std::vector<RayTest> rays;     // bisection steps (wedge, crowded polar cells)
+  std::vector<EdgeTest> edges;   // edges tested, in order
+};
+
+// Size and shape of a subdivision. Methods without cells report zero cells.
+struct Stats2D {
+  std::size_t edges = 0;
+  std::size_t cells = 0;
+  std::size_t entries = 0;        // sum over cells of the edges listed
+  std::size_t maxPerCell = 0;
+  double meanPerCell = 0.0;
+  std::size_t crowdedCells = 0;   // cells searched by bisection rather than tested edge by edge
+  std::size_t bytes = 0;          // memory the locator holds, vertices included
+  double bytesPerEdge = 0.0;
+  double buildSeconds = 0.0;
+  std::vector<std::size_t> histogram;  // histogram[k]: cells holding k edges; the last bucket
+                                       // counts every cell holding at least that many
+};
+
+// One cell of a subdivision, for drawing and teaching.
+struct Cell2D {
+  std::uint32_t index = 0;
+  int octant = -1;                     // polar only
+  std::vector<Vec2> outline;           // the cell clipped to the locator's box, CCW
+  Vec2 dirLo{}, dirHi{};               // polar: directions of the two bounding rays
+  Vec2 hitLo{}, hitHi{};               // polar: where those rays leave the box
+  double y0 = 0.0, y1 = 0.0;           // slab, uniform: the y range
+  std::vector<std::uint32_t> edges;    // edges listed in the cell
+};
+
+// edges per cell above which a cell is searched by bisection
+inline constexpr std::size_t kCrowdedCell = 8;
+
+// === halfplane, O(N): inside iff on the inner side of every edge (eq. 1)
+
+class HalfplaneLocator {
+public:
+  explicit HalfplaneLocator(const ConvexPolygon& polygon);
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  std::vector<Cell2D> cells() const { return {}; }
+
+private:
+  std::vector<Vec2> v_;
+  double buildSeconds_ = 0.0;
+};
+
+// === wedge, O(log N): bisection over the fan of diagonals from vertex 0 (eq. 3)
+
+class WedgeLocator {
+public:
+  explicit WedgeLocator(const ConvexPolygon& polygon);
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  // the fan triangles (vertex 0, i, i+1), each holding edge i
+  std::vector<Cell2D> cells() const;
+
+private:
+  template <class Sink>
+  Location run(Vec2 p, Sink& sink) const noexcept;
+  std::vector<Vec2> v_;
+  double buildSeconds_ = 0.0;
+};
+
+// === slab, O(log N): horizontal slabs at the vertices' y, binary search, two active edges
+
+class SlabLocator {
+public:
+  explicit SlabLocator(const ConvexPolygon& polygon);
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  std::vector<Cell2D> cells() const;
+
+private:
+  template <class Sink>
+  Location run(Vec2 p, Sink& sink) const noexcept;
+  std::vector<Vec2> v_;
+  std::vector<double> ys_;             // distinct vertex y, ascending
+  std::vector<std::uint32_t> active_;  // per slab: rising edge, falling edge
+  Box2 box_{};
+  double buildSeconds_ = 0.0;
+};
+
+// === uniform, O(1): equal horizontal slabs (eq. 4), each listing its active edges
+
+class UniformLocator {
+public:
+  // `slabs` = 0 chooses from the edge count
+  explicit UniformLocator(const ConvexPolygon& polygon, std::uint32_t slabs = 0);
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  std::vector<Cell2D> cells() const;
+  std::uint32_t slabCount() const noexcept { return slabs_; }
+  // the slab a point with this y maps to (the index function of queries and build alike)
+  std::uint32_t slabOf(double y) const noexcept;
+
+private:
+  template <class Sink>
+  Location run(Vec2 p, Sink& sink) const noexcept;
+  std::vector<Vec2> v_;
+  std::vector<std::uint32_t> offsets_;  // CSR: slab s lists entries [offsets_[s], offsets_[s+1])
+  std::vector<std::uint32_t> entries_;  // rising edges by y, then falling, then horizontal
+  std::vector<std::uint32_t> rising_;   // per slab: how many leading entries are rising
+  std::vector<std::uint32_t> falling_;  // per slab: how many entries after those are falling
+  Box2 box_{};
+  std::uint32_t slabs_ = 1;
+  double scale_ = 0.0;
+  double buildSeconds_ = 0.0;
+};
+
+// === polar, O(1): the paper's polar slabs around a centre strictly inside
+
+class PolarLocator {
+public:
+  // `slabsPerOctant` = 0 chooses from the edge count
+  explicit PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerOctant = 0);
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  std::vector<Cell2D> cells() const;
+  // the centre, a double point strictly inside the polygon
+  Vec2 centre() const noexcept { return c_; }
+  std::uint32_t slabsPerOctant() const noexcept { return q_; }
+  std::uint32_t cellCount() const noexcept { return 8 * q_; }
+  // the cell a point maps to, or -1 for the centre and for directions too large to compute
+  // (the index function of queries and build alike)
+  std::int64_t cellOf(Vec2 p) const noexcept;
+  // the box the cells are drawn to (the polygon's bounding box)
+  Box2 box() const noexcept { return box_; }
+
+private:
+  template <class Sink>
+  Location run(Vec2 p, Sink& sink) const noexcept;
+  template <class Sink>
+  Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count, Sink& sink) const noexcept;
+  std::vector<Vec2> v_;
+  std::vector<std::uint32_t> offsets_;  // CSR over 8 * q_ cells
+  std::vector<std::uint32_t> entries_;  // each cell's edges in counter-clockwise order
+  Box2 box_{};
+  Vec2 c_{};
+  std::uint32_t q_ = 1;
+  double qd_ = 1.0;
+  double buildSeconds_ = 0.0;
+};
+
+// === Any of the five, chosen at run time
+
+class Locator2D {
+public:
+  // builds `method`; `resolution` is the uniform slab count or the polar slabs per octant
+  // (0 chooses from the polygon), ignored by the other methods
+  Locator2D(const ConvexPolygon& polygon, Method2D method, std::uint32_t resolution = 0);
+  Method2D method() const noexcept { return static_cast<Method2D>(impl_.index()); }
+  Location locate(Vec2 p) const noexcept;
+  void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
+  Trace2D trace(Vec2 p) const;
+  Stats2D stats() const;
+  std::vector<Cell2D> cells() const;
+  // the underlying locator, for method-specific introspection
+  template <class T>
+  const T* get() const noexcept { return std::get_if<T>(&impl_); }
+
+private:
+  std::variant<HalfplaneLocator, WedgeLocator, SlabLocator, UniformLocator, PolarLocator> impl_;
+};
+
+}  // namespace convexloc

@@ -1,0 +1,62 @@
+// convexloc — exact geometric predicates.
+//
+// Each predicate first evaluates in double precision with a proven error bound
+// (Shewchuk's orient2d bound, with guards for overflow and underflow, where the bound
+// does not hold) and, only when that cannot decide the sign, recomputes exactly with
+// GMP integers. The sign returned is the sign of the exact real value for the doubles given.
+#pragma once
+
+#include <cmath>
+
+#include "convexloc/geometry.hpp"
+
+namespace convexloc {
+
+namespace detail {
+// unit roundoff of binary64 (half an ulp of 1)
+inline constexpr double kEps = 0x1p-53;
+// Shewchuk's bound for a 2x2 determinant of differences: |error| <= kCcwBound * permanent
+inline constexpr double kCcwBound = (3.0 + 16.0 * kEps) * kEps;
+// below this permanent a product may have underflowed, and the bound above does not hold
+inline constexpr double kTinyPermanent = 0x1p-960;
+// absolute slack for one underflowed product (half the smallest subnormal, twice over)
+inline constexpr double kUnderflowSlack = 0x1p-1072;
+
+// exact sign of (p1 - p0) x (q1 - q0) for finite doubles, with GMP integers
+int crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept;
+
+// sign of (p1 - p0) x (q1 - q0): the filter, then the exact fallback when it cannot decide
+inline int crossFiltered(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+  double left = (p1.x - p0.x) * (q1.y - q0.y);
+  double right = (p1.y - p0.y) * (q1.x - q0.x);
+  double det = left - right;
+  double permanent = std::fabs(left) + std::fabs(right);
+  if (permanent >= kTinyPermanent) {  // false for NaN (overflow) and for a tiny permanent
+    double bound = kCcwBound * permanent + kUnderflowSlack;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  } else if (permanent == 0.0 && (p1.x == p0.x || q1.y == q0.y) &&
+             (p1.y == p0.y || q1.x == q0.x)) {
+    return 0;  // both products are exact zeros (axis-aligned data), not underflow
+  }
+  return crossExact(p0, p1, q0, q1);
+}
+}  // namespace detail
+
+// Sign of (a - c) x (b - c): +1 when a, b, c turn counter-clockwise, -1 clockwise,
+// 0 when exactly collinear.
+inline int orient2d(Vec2 a, Vec2 b, Vec2 c) noexcept { return detail::crossFiltered(c, a, c, b); }
+
+// Sign of the cross product (b - a) x (d - c) of two segment directions.
+inline int crossDiff2d(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
+  return detail::crossFiltered(a, b, c, d);
+}
+
+// Sign of the determinant | a-d ; b-d ; c-d |: +1 when d lies below the plane through
+// a, b, c oriented counter-clockwise seen from above (Shewchuk's convention), 0 when coplanar.
+int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept;
+
+// How many times the exact fallback ran in this thread (for tests and statistics).
+unsigned long long exactFallbackCount() noexcept;
+
+}  // namespace convexloc

@@ -1,0 +1,68 @@
+// convexloc — reading points from text: one point per line, numbers separated by
+// whitespace and/or one comma, '#' starting a comment, blank lines skipped, LF or CRLF.
+// A number is a decimal as C's strtod reads it (sign, digits, point, exponent; no hex,
+// inf or nan) and becomes the nearest double.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "convexloc/geometry.hpp"
+
+namespace convexloc {
+
+// The longest line accepted, in bytes; a longer one is a ParseError, never an allocation.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
+// Parses one line into `dims` numbers. Returns false for a blank or comment line.
+// Throws ParseError carrying `lineNo` with the problem: a bad number, too few or too many.
+bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out);
+
+// Streams the data rows of a file in constant memory.
+class RowReader {
+public:
+  // reads from `file`, which stays owned by the caller; `dims` numbers per row
+  RowReader(std::FILE* file, int dims);
+  // the next data row into out[0..dims); false at the end of the input.
+  // Throws ParseError (with the line) on bad text, Error on a read failure.
+  bool next(double* out);
+  // the line number of the row last returned (1-based)
+  std::size_t line() const noexcept { return line_; }
+
+private:
+  bool fill();
+  std::FILE* file_;
+  int dims_;
+  std::vector<char> buf_;
+  std::size_t begin_ = 0, end_ = 0;
+  std::size_t line_ = 0;
+  bool eof_ = false;
+};
+
+// An opened file, closed when it goes; "-" is standard input. Throws Error when it
+// cannot be opened.
+class InputFile {
+public:
+  explicit InputFile(const std::string& path);
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+  std::FILE* get() const noexcept { return f_; }
+
+private:
+  std::FILE* f_ = nullptr;
+  bool owned_ = false;
+};
+
+// Every 2D point of a file, with the line each came from.
+struct PointList {
+  std::vector<Vec2> points;
+  std::vector<std::size_t> lines;
+  std::size_t lastLine = 0;  // the number of lines read
+};
+PointList readPoints2D(const std::string& path);
+
+}  // namespace convexloc

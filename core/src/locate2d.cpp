@@ -1,0 +1,781 @@
+// convexloc — the five 2D locators.
+#include "convexloc/locate2d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "convexloc/error.hpp"
+#include "convexloc/predicates.hpp"
+
+namespace convexloc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// === Trace sinks: the query code is written once and either records or not
+
+// records nothing; compiles away in locate()
+struct NoSink {
+  void ray(std::uint32_t, int) {}
+  void edge(std::uint32_t, int) {}
+  void cell(std::int64_t, int) {}
+  void crowded() {}
+  void outsideBox() {}
+  void atCentre() {}
+};
+
+// records every step into a Trace2D
+struct TraceSink {
+  Trace2D& t;
+  void ray(std::uint32_t v, int s) { t.rays.push_back({v, s}); }
+  void edge(std::uint32_t e, int s) { t.edges.push_back({e, s}); }
+  void cell(std::int64_t c, int octant) {
+    t.cell = c;
+    t.octant = octant;
+  }
+  void crowded() { t.crowded = true; }
+  void outsideBox() { t.outsideBox = true; }
+  void atCentre() { t.atCentre = true; }
+};
+
+// orient2d of p against edge e of the ring v
+inline int edgeSign(const std::vector<Vec2>& v, std::uint32_t e, Vec2 p) {
+  std::uint32_t next = e + 1 == v.size() ? 0 : e + 1;
+  return orient2d(v[e], v[next], p);
+}
+
+// the class from the edge tests of a cell whose edges include every edge p can exit through
+struct Verdict {
+  bool zero = false;
+  bool negative = false;
+  Location result() const {
+    return negative ? Location::Outside : (zero ? Location::Boundary : Location::Inside);
+  }
+};
+
+// tests p against the listed edges, stopping at the first outer side
+template <class Sink>
+inline Location testEdges(const std::vector<Vec2>& v, const std::uint32_t* first,
+                          const std::uint32_t* last, Vec2 p, Sink& sink) {
+  bool zero = false;
+  for (const std::uint32_t* it = first; it != last; ++it) {
+    int s = edgeSign(v, *it, p);
+    sink.edge(*it, s);
+    if (s < 0) return Location::Outside;
+    zero |= s == 0;
+  }
+  return zero ? Location::Boundary : Location::Inside;
+}
+
+// p outside the closed box
+inline bool outsideBox(const Box2& b, Vec2 p) {
+  return !(p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y);
+}
+
+// Bisection over the fan from vertex 0 (the wedge method), shared by `wedge` and by the
+// polar locator's fallback. v is counter-clockwise and strictly convex.
+template <class Sink>
+Location fanLocate(const std::vector<Vec2>& v, Vec2 p, Sink& sink) {
+  const std::uint32_t n = static_cast<std::uint32_t>(v.size());
+  const Vec2 o = v[0];
+  int first = orient2d(o, v[1], p);
+  sink.ray(1, first);
+  if (first < 0) return Location::Outside;  // clockwise of the first edge's line
+  int last = orient2d(o, v[n - 1], p);
+  sink.ray(n - 1, last);
+  if (last > 0) return Location::Outside;  // counter-clockwise of the last edge's line
+  if (first == 0 && last == 0) return Location::Boundary;  // p is vertex 0
+  std::uint32_t lo = 1, hi = n - 1;  // orient(o, v[lo], p) >= 0 >= orient(o, v[hi], p)
+  while (hi - lo > 1) {
+    std::uint32_t mid = lo + (hi - lo) / 2;
+    int s = orient2d(o, v[mid], p);
+    sink.ray(mid, s);
+    if (s >= 0) lo = mid;
+    else hi = mid;
+  }
+  int s = orient2d(v[lo], v[hi], p);
+  sink.edge(lo, s);
+  if (s < 0) return Location::Outside;
+  if (s == 0) return Location::Boundary;
+  // strictly inside triangle edge lo; on the fan's outer rays means on edge 0 or n-1
+  if ((lo == 1 && first == 0) || (hi == n - 1 && last == 0)) return Location::Boundary;
+  return Location::Inside;
+}
+
+// rough bytes held by a vector
+template <class T>
+std::size_t bytesOf(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+
+// statistics of a CSR table
+Stats2D csrStats(std::size_t edges, const std::vector<std::uint32_t>& offsets, std::size_t bytes,
+                 double buildSeconds) {
+  Stats2D s;
+  s.edges = edges;
+  s.cells = offsets.empty() ? 0 : offsets.size() - 1;
+  s.bytes = bytes;
+  s.bytesPerEdge = edges ? static_cast<double>(bytes) / static_cast<double>(edges) : 0.0;
+  s.buildSeconds = buildSeconds;
+  s.histogram.assign(kCrowdedCell + 2, 0);
+  for (std::size_t c = 0; c < s.cells; ++c) {
+    std::size_t k = offsets[c + 1] - offsets[c];
+    s.entries += k;
+    s.maxPerCell = std::max(s.maxPerCell, k);
+    if (k > kCrowdedCell) ++s.crowdedCells;
+    ++s.histogram[std::min(k, s.histogram.size() - 1)];
+  }
+  s.meanPerCell = s.cells ? static_cast<double>(s.entries) / static_cast<double>(s.cells) : 0.0;
+  return s;
+}
+
+Stats2D plainStats(std::size_t edges, std::size_t bytes, double buildSeconds) {
+  Stats2D s;
+  s.edges = edges;
+  s.bytes = bytes;
+  s.bytesPerEdge = edges ? static_cast<double>(bytes) / static_cast<double>(edges) : 0.0;
+  s.buildSeconds = buildSeconds;
+  return s;
+}
+
+std::vector<Vec2> copyVertices(const ConvexPolygon& polygon) {
+  return {polygon.vertices().begin(), polygon.vertices().end()};
+}
+
+template <class Locator>
+void locateAll(const Locator& loc, std::span<const Vec2> points, std::span<Location> out) {
+  const std::size_t n = std::min(points.size(), out.size());
+  for (std::size_t i = 0; i < n; ++i) out[i] = loc.locate(points[i]);
+}
+
+}  // namespace
+
+// === Method names
+
+std::string_view toString(Method2D m) {
+  switch (m) {
+    case Method2D::Halfplane: return "halfplane";
+    case Method2D::Wedge: return "wedge";
+    case Method2D::Slab: return "slab";
+    case Method2D::Uniform: return "uniform";
+    case Method2D::Polar: return "polar";
+  }
+  return "?";
+}
+
+std::optional<Method2D> parseMethod2D(std::string_view name) {
+  for (Method2D m : kAllMethods2D)
+    if (toString(m) == name) return m;
+  return std::nullopt;
+}
+
+// === halfplane
+
+HalfplaneLocator::HalfplaneLocator(const ConvexPolygon& polygon) {
+  auto t0 = Clock::now();
+  v_ = copyVertices(polygon);
+  buildSeconds_ = secondsSince(t0);
+}
+
+Location HalfplaneLocator::locate(Vec2 p) const noexcept {
+  bool zero = false;
+  const std::size_t n = v_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    int s = orient2d(v_[i], v_[i + 1 == n ? 0 : i + 1], p);
+    if (s < 0) return Location::Outside;
+    zero |= s == 0;
+  }
+  return zero ? Location::Boundary : Location::Inside;
+}
+
+void HalfplaneLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace2D HalfplaneLocator::trace(Vec2 p) const {
+  Trace2D t;
+  t.method = Method2D::Halfplane;
+  bool zero = false;
+  t.result = Location::Inside;
+  for (std::uint32_t i = 0; i < v_.size(); ++i) {
+    int s = edgeSign(v_, i, p);
+    t.edges.push_back({i, s});
+    if (s < 0) {
+      t.result = Location::Outside;
+      return t;
+    }
+    zero |= s == 0;
+  }
+  if (zero) t.result = Location::Boundary;
+  return t;
+}
+
+Stats2D HalfplaneLocator::stats() const {
+  return plainStats(v_.size(), sizeof(*this) + bytesOf(v_), buildSeconds_);
+}
+
+// === wedge
+
+WedgeLocator::WedgeLocator(const ConvexPolygon& polygon) {
+  auto t0 = Clock::now();
+  v_ = copyVertices(polygon);
+  buildSeconds_ = secondsSince(t0);
+}
+
+Location WedgeLocator::locate(Vec2 p) const noexcept {
+  NoSink sink;
+  return fanLocate(v_, p, sink);
+}
+
+void WedgeLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace2D WedgeLocator::trace(Vec2 p) const {
+  Trace2D t;
+  t.method = Method2D::Wedge;
+  t.apex = v_[0];
+  TraceSink sink{t};
+  t.result = fanLocate(v_, p, sink);
+  if (!t.edges.empty()) t.cell = t.edges.back().edge;
+  return t;
+}
+
+Stats2D WedgeLocator::stats() const {
+  return plainStats(v_.size(), sizeof(*this) + bytesOf(v_), buildSeconds_);
+}
+
+std::vector<Cell2D> WedgeLocator::cells() const {
+  std::vector<Cell2D> out;
+  const std::uint32_t n = static_cast<std::uint32_t>(v_.size());
+  for (std::uint32_t i = 1; i + 1 < n; ++i) {
+    Cell2D c;
+    c.index = i;
+    c.outline = {v_[0], v_[i], v_[i + 1]};
+    c.edges = {i};
+    if (i == 1) c.edges.insert(c.edges.begin(), 0);
+    if (i + 2 == n) c.edges.push_back(n - 1);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// === slab
+
+SlabLocator::SlabLocator(const ConvexPolygon& polygon) {
+  auto t0 = Clock::now();
+  v_ = copyVertices(polygon);
+  box_ = polygon.bounds();
+  const std::uint32_t n = static_cast<std::uint32_t>(v_.size());
+  ys_.reserve(n);
+  for (Vec2 p : v_) ys_.push_back(p.y);
+  std::sort(ys_.begin(), ys_.end());
+  ys_.erase(std::unique(ys_.begin(), ys_.end()), ys_.end());
+  const std::size_t slabs = ys_.size() - 1;  // >= 1: a polygon with area spans some height
+  active_.assign(2 * slabs, 0);
+  auto rank = [&](double y) {
+    return static_cast<std::size_t>(std::lower_bound(ys_.begin(), ys_.end(), y) - ys_.begin());
+  };
+  for (std::uint32_t e = 0; e < n; ++e) {
+    Vec2 a = v_[e], b = v_[e + 1 == n ? 0 : e + 1];
+    if (a.y == b.y) continue;
+    bool rising = a.y < b.y;
+    std::size_t r0 = rank(std::min(a.y, b.y)), r1 = rank(std::max(a.y, b.y));
+    for (std::size_t s = r0; s < r1; ++s) active_[2 * s + (rising ? 0 : 1)] = e;
+  }
+  buildSeconds_ = secondsSince(t0);
+}
+
+template <class Sink>
+Location SlabLocator::run(Vec2 p, Sink& sink) const noexcept {
+  if (outsideBox(box_, p)) {
+    sink.outsideBox();
+    return Location::Outside;
+  }
+  const std::size_t slabs = ys_.size() - 1;
+  std::size_t s = static_cast<std::size_t>(std::upper_bound(ys_.begin(), ys_.end(), p.y) - ys_.begin());
+  s = std::min(s == 0 ? 0 : s - 1, slabs - 1);
+  sink.cell(static_cast<std::int64_t>(s), -1);
+  const std::uint32_t* pair = active_.data() + 2 * s;
+  Location r = testEdges(v_, pair, pair + 2, p, sink);
+  // on the bottom or top line, the only points between the chains are boundary points
+  if (r == Location::Inside && (p.y == box_.lo.y || p.y == box_.hi.y)) return Location::Boundary;
+  return r;
+}
+
+Location SlabLocator::locate(Vec2 p) const noexcept {
+  NoSink sink;
+  return run(p, sink);
+}
+
+void SlabLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace2D SlabLocator::trace(Vec2 p) const {
+  Trace2D t;
+  t.method = Method2D::Slab;
+  TraceSink sink{t};
+  t.result = run(p, sink);
+  return t;
+}
+
+Stats2D SlabLocator::stats() const {
+  Stats2D s = plainStats(v_.size(),
+                         sizeof(*this) + bytesOf(v_) + bytesOf(ys_) + bytesOf(active_),
+                         buildSeconds_);
+  s.cells = ys_.size() - 1;
+  s.entries = active_.size();
+  s.maxPerCell = 2;
+  s.meanPerCell = 2.0;
+  s.histogram.assign(kCrowdedCell + 2, 0);
+  s.histogram[2] = s.cells;
+  return s;
+}
+
+std::vector<Cell2D> SlabLocator::cells() const {
+  std::vector<Cell2D> out;
+  for (std::size_t s = 0; s + 1 < ys_.size(); ++s) {
+    Cell2D c;
+    c.index = static_cast<std::uint32_t>(s);
+    c.y0 = ys_[s];
+    c.y1 = ys_[s + 1];
+    c.outline = {{box_.lo.x, c.y0}, {box_.hi.x, c.y0}, {box_.hi.x, c.y1}, {box_.lo.x, c.y1}};
+    c.edges = {active_[2 * s], active_[2 * s + 1]};
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// === uniform
+
+UniformLocator::UniformLocator(const ConvexPolygon& polygon, std::uint32_t slabs) {
+  auto t0 = Clock::now();
+  v_ = copyVertices(polygon);
+  box_ = polygon.bounds();
+  const std::uint32_t n = static_cast<std::uint32_t>(v_.size());
+  if (slabs > (1u << 26)) throw UsageError("uniform: at most 2^26 slabs");
+  slabs_ = slabs ? slabs : n;
+  double extent = box_.hi.y - box_.lo.y;
+  scale_ = static_cast<double>(slabs_) / extent;
+  if (!std::isfinite(extent) || !std::isfinite(scale_)) {
+    // too tall or too flat for the index arithmetic: one slab, searched by bisection
+    slabs_ = 1;
+    scale_ = 0.0;
+  }
+  // the bottom vertex: rising edges follow it in ascending y, then falling ones descend
+  std::uint32_t bottom = 0;
+  for (std::uint32_t i = 1; i < n; ++i)
+    if (v_[i].y < v_[bottom].y) bottom = i;
+  enum Kind { Rising, Falling, Flat };
+  auto kindOf = [&](std::uint32_t e) {
+    double a = v_[e].y, b = v_[e + 1 == n ? 0 : e + 1].y;
+    return a < b ? Rising : (a > b ? Falling : Flat);
+  };
+  auto range = [&](std::uint32_t e) {
+    double a = v_[e].y, b = v_[e + 1 == n ? 0 : e + 1].y;
+    return std::pair{slabOf(std::min(a, b)), slabOf(std::max(a, b))};
+  };
+  std::vector<std::uint32_t> count(3 * std::size_t{slabs_}, 0);
+  for (std::uint32_t e = 0; e < n; ++e) {
+    auto [s0, s1] = range(e);
+    Kind k = kindOf(e);
+    for (std::uint32_t s = s0; s <= s1; ++s) ++count[3 * std::size_t{s} + k];
+  }
+  offsets_.assign(slabs_ + 1, 0);
+  rising_.resize(slabs_);
+  falling_.resize(slabs_);
+  std::vector<std::uint64_t> cursor(3 * std::size_t{slabs_});
+  std::uint64_t total = 0;
+  for (std::uint32_t s = 0; s < slabs_; ++s) {
+    offsets_[s] = static_cast<std::uint32_t>(total);
+    rising_[s] = count[3 * s + Rising];
+    falling_[s] = count[3 * s + Falling];
+    cursor[3 * s + Rising] = total;
+    cursor[3 * s + Falling] = total + rising_[s];
+    cursor[3 * s + Flat] = total + rising_[s] + falling_[s];
+    total += count[3 * s] + count[3 * s + 1] + count[3 * s + 2];
+    if (total > std::numeric_limits<std::uint32_t>::max())
+      throw UsageError("uniform: the table would exceed 2^32 entries; use fewer slabs");
+  }
+  offsets_[slabs_] = static_cast<std::uint32_t>(total);
+  entries_.resize(total);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    std::uint32_t e = (bottom + k) % n;
+    auto [s0, s1] = range(e);
+    Kind kind = kindOf(e);
+    for (std::uint32_t s = s0; s <= s1; ++s) entries_[cursor[3 * std::size_t{s} + kind]++] = e;
+  }
+  buildSeconds_ = secondsSince(t0);
+}
+
+std::uint32_t UniformLocator::slabOf(double y) const noexcept {
+  double t = (y - box_.lo.y) * scale_;  // y >= lo.y; NaN only when scale_ is 0 and y - lo is inf
+  return t < static_cast<double>(slabs_) ? static_cast<std::uint32_t>(t) : slabs_ - 1;
+}
+
+template <class Sink>
+Location UniformLocator::run(Vec2 p, Sink& sink) const noexcept {
+  if (outsideBox(box_, p)) {
+    sink.outsideBox();
+    return Location::Outside;
+  }
+  const std::uint32_t s = slabOf(p.y);
+  sink.cell(s, -1);
+  const std::uint32_t* first = entries_.data() + offsets_[s];
+  const std::uint32_t* last = entries_.data() + offsets_[s + 1];
+  if (static_cast<std::size_t>(last - first) <= kCrowdedCell) return testEdges(v_, first, last, p, sink);
+  // crowded: the rising edge and the falling edge spanning p.y, and any horizontal edges
+  sink.crowded();
+  auto startY = [&](std::uint32_t e) { return v_[e].y; };
+  const std::uint32_t r = rising_[s], f = falling_[s];
+  // last rising edge starting at or below p.y
+  const std::uint32_t* rise = std::upper_bound(first, first + r, p.y,
+                                               [&](double y, std::uint32_t e) { return y < startY(e); });
+  // last falling edge starting at or above p.y
+  const std::uint32_t* fall = std::upper_bound(first + r, first + r + f, p.y,
+                                               [&](double y, std::uint32_t e) { return y > startY(e); });
+  std::uint32_t pick[4];
+  std::uint32_t k = 0;
+  pick[k++] = *(rise - 1);
+  pick[k++] = *(fall - 1);
+  for (const std::uint32_t* it = first + r + f; it != last && k < 4; ++it) pick[k++] = *it;
+  return testEdges(v_, pick, pick + k, p, sink);
+}
+
+Location UniformLocator::locate(Vec2 p) const noexcept {
+  NoSink sink;
+  return run(p, sink);
+}
+
+void UniformLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace2D UniformLocator::trace(Vec2 p) const {
+  Trace2D t;
+  t.method = Method2D::Uniform;
+  TraceSink sink{t};
+  t.result = run(p, sink);
+  return t;
+}
+
+Stats2D UniformLocator::stats() const {
+  return csrStats(v_.size(), offsets_,
+                  sizeof(*this) + bytesOf(v_) + bytesOf(offsets_) + bytesOf(entries_) +
+                      bytesOf(rising_) + bytesOf(falling_),
+                  buildSeconds_);
+}
+
+std::vector<Cell2D> UniformLocator::cells() const {
+  std::vector<Cell2D> out;
+  const double h = (box_.hi.y - box_.lo.y) / slabs_;
+  for (std::uint32_t s = 0; s < slabs_; ++s) {
+    Cell2D c;
+    c.index = s;
+    c.y0 = box_.lo.y + h * s;
+    c.y1 = s + 1 == slabs_ ? box_.hi.y : box_.lo.y + h * (s + 1);
+    c.outline = {{box_.lo.x, c.y0}, {box_.hi.x, c.y0}, {box_.hi.x, c.y1}, {box_.lo.x, c.y1}};
+    c.edges.assign(entries_.begin() + offsets_[s], entries_.begin() + offsets_[s + 1]);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// === polar
+
+namespace {
+
+// margin, in pseudo-angle units (8 per turn), added on both sides of an edge's span when
+// registering it; far above the few ulps by which a query's computed cell can stray
+constexpr double kPolarMargin = 0x1p-40;
+
+// Quadrant and canonical coordinates (u > 0, v >= 0) of a direction; false for (0, 0).
+// Each quadrant is the direction rotated by a multiple of 90 degrees, which is exact.
+inline bool canonical(double dx, double dy, int& quad, double& u, double& v) {
+  if (dy >= 0 && dx > 0) { quad = 0; u = dx; v = dy; }
+  else if (dx <= 0 && dy > 0) { quad = 1; u = dy; v = -dx; }
+  else if (dx < 0 && dy <= 0) { quad = 2; u = -dx; v = -dy; }
+  else if (dx >= 0 && dy < 0) { quad = 3; u = -dy; v = dx; }
+  else return false;
+  return true;
+}
+
+// the pseudo-angle in [0, 8] of a direction, computed with the query's own operations
+double pseudoAngle(double dx, double dy) {
+  int quad = 0;
+  double u = 0, v = 0;
+  canonical(dx, dy, quad, u, v);
+  return v <= u ? 2 * quad + v / u : 2 * quad + 1 + (1 - u / v);
+}
+
+// direction for a pseudo-angle (drawing only)
+Vec2 directionOf(double angle) {
+  int oct = std::clamp(static_cast<int>(std::floor(angle)), 0, 7);
+  double f = angle - oct;
+  double u = 1, v = f;
+  if (oct % 2) { u = 1 - f; v = 1; }
+  switch (oct / 2) {
+    case 0: return {u, v};
+    case 1: return {-v, u};
+    case 2: return {-u, -v};
+    default: return {v, -u};
+  }
+}
+
+// where the ray from c along d leaves the box b (c inside b)
+Vec2 rayExit(const Box2& b, Vec2 c, Vec2 d) {
+  double t = std::numeric_limits<double>::infinity();
+  if (d.x > 0) t = std::min(t, (b.hi.x - c.x) / d.x);
+  if (d.x < 0) t = std::min(t, (b.lo.x - c.x) / d.x);
+  if (d.y > 0) t = std::min(t, (b.hi.y - c.y) / d.y);
+  if (d.y < 0) t = std::min(t, (b.lo.y - c.y) / d.y);
+  return {c.x + t * d.x, c.y + t * d.y};
+}
+
+// all edges strictly on the inner side of c
+bool strictlyInside(const std::vector<Vec2>& v, Vec2 c) {
+  for (std::uint32_t e = 0; e < v.size(); ++e)
+    if (edgeSign(v, e, c) <= 0) return false;
+  return true;
+}
+
+// a double point strictly inside, if one of a few natural candidates is
+std::optional<Vec2> findCentre(const std::vector<Vec2>& v) {
+  const std::size_t n = v.size();
+  std::vector<Vec2> candidates;
+  long double sx = 0, sy = 0, ax = 0, ay = 0, area = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sx += static_cast<long double>(v[i].x) / n;
+    sy += static_cast<long double>(v[i].y) / n;
+    // area centroid of the fan from vertex 0, relative to vertex 0
+    if (i >= 1 && i + 1 < n) {
+      long double x1 = static_cast<long double>(v[i].x) - v[0].x;
+      long double y1 = static_cast<long double>(v[i].y) - v[0].y;
+      long double x2 = static_cast<long double>(v[i + 1].x) - v[0].x;
+      long double y2 = static_cast<long double>(v[i + 1].y) - v[0].y;
+      long double a = x1 * y2 - x2 * y1;
+      area += a;
+      ax += a * (x1 + x2) / 3;
+      ay += a * (y1 + y2) / 3;
+    }
+  }
+  if (area > 0)
+    candidates.push_back({static_cast<double>(v[0].x + ax / area), static_cast<double>(v[0].y + ay / area)});
+  candidates.push_back({static_cast<double>(sx), static_cast<double>(sy)});
+  auto third = [&](std::size_t a, std::size_t b, std::size_t c) {
+    long double x = (static_cast<long double>(v[a].x) + v[b].x + v[c].x) / 3;
+    long double y = (static_cast<long double>(v[a].y) + v[b].y + v[c].y) / 3;
+    return Vec2{static_cast<double>(x), static_cast<double>(y)};
+  };
+  candidates.push_back(third(0, n / 3, 2 * n / 3));
+  // the triangle of the three vertices farthest apart along the box diagonal directions
+  for (std::size_t i = 0; i + 2 < n && candidates.size() < 8; i += std::max<std::size_t>(1, n / 4))
+    candidates.push_back(third(i, (i + 1) % n, (i + 2) % n));
+  for (Vec2 c : candidates)
+    if (std::isfinite(c.x) && std::isfinite(c.y) && strictlyInside(v, c)) return c;
+  return std::nullopt;
+}
+
+}  // namespace
+
+PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerOctant) {
+  auto t0 = Clock::now();
+  v_ = copyVertices(polygon);
+  box_ = polygon.bounds();
+  const std::uint32_t n = static_cast<std::uint32_t>(v_.size());
+  if (slabsPerOctant > (1u << 23)) throw UsageError("polar: at most 2^23 slabs per octant");
+  q_ = slabsPerOctant ? slabsPerOctant : std::max<std::uint32_t>(1, (n + 3) / 4);
+  qd_ = static_cast<double>(q_);
+  const std::uint32_t cells = 8 * q_;
+  auto centre = findCentre(v_);
+  if (!centre) {
+    // no double point lies strictly inside (a sliver thinner than the double grid):
+    // keep an empty table and answer by bisection over the fan from vertex 0
+    c_ = v_[0];
+    offsets_.assign(cells + 1, 0);
+    buildSeconds_ = secondsSince(t0);
+    return;
+  }
+  c_ = *centre;
+
+  // each edge's cells: its pseudo-angle span, widened by the margin, as a cyclic range
+  std::vector<std::int64_t> first(n), last(n);
+  std::vector<double> angle(n);
+  for (std::uint32_t i = 0; i < n; ++i) angle[i] = pseudoAngle(v_[i].x - c_.x, v_[i].y - c_.y);
+  std::vector<std::uint32_t> count(cells, 0);
+  std::uint64_t total = 0;
+  for (std::uint32_t e = 0; e < n; ++e) {
+    double a0 = angle[e], a1 = angle[e + 1 == n ? 0 : e + 1];
+    if (a1 < a0) a1 += 8;  // the span wraps past direction +x
+    first[e] = static_cast<std::int64_t>(std::floor((a0 - kPolarMargin) * qd_));
+    last[e] = static_cast<std::int64_t>(std::floor((a1 + kPolarMargin) * qd_));
+    for (std::int64_t c = first[e]; c <= last[e]; ++c) ++count[((c % cells) + cells) % cells];
+    total += static_cast<std::uint64_t>(last[e] - first[e] + 1);
+  }
+  if (total > std::numeric_limits<std::uint32_t>::max())
+    throw UsageError("polar: the table would exceed 2^32 entries; use fewer slabs");
+  offsets_.assign(cells + 1, 0);
+  for (std::uint32_t c = 0; c < cells; ++c) offsets_[c + 1] = offsets_[c] + count[c];
+  entries_.resize(total);
+  std::vector<std::uint32_t> cursor(offsets_.begin(), offsets_.end() - 1);
+  for (std::uint32_t e = 0; e < n; ++e)
+    for (std::int64_t c = first[e]; c <= last[e]; ++c) entries_[cursor[((c % cells) + cells) % cells]++] = e;
+  // each cell's edges are a cyclic run; rotate those that wrap past edge 0 into order
+  for (std::uint32_t c = 0; c < cells; ++c) {
+    auto b = entries_.begin() + offsets_[c], end = entries_.begin() + offsets_[c + 1];
+    for (auto it = b + 1; it < end; ++it)
+      if (*it != *(it - 1) + 1) {
+        std::rotate(b, it, end);
+        break;
+      }
+  }
+  buildSeconds_ = secondsSince(t0);
+}
+
+std::int64_t PolarLocator::cellOf(Vec2 p) const noexcept {
+  int quad = 0;
+  double u = 0, v = 0;
+  if (!canonical(p.x - c_.x, p.y - c_.y, quad, u, v)) return -1;
+  if (!(u < std::numeric_limits<double>::infinity() && v < std::numeric_limits<double>::infinity()))
+    return -1;
+  const std::uint32_t last = q_ - 1;
+  if (v <= u) {
+    std::uint32_t s = std::min(static_cast<std::uint32_t>((v / u) * qd_), last);
+    return static_cast<std::int64_t>(2 * quad) * q_ + s;
+  }
+  std::uint32_t s = std::min(static_cast<std::uint32_t>((u / v) * qd_), last);
+  return static_cast<std::int64_t>(2 * quad + 1) * q_ + (last - s);
+}
+
+template <class Sink>
+Location PolarLocator::searchRange(Vec2 p, std::uint32_t first, std::uint32_t count,
+                                   Sink& sink) const noexcept {
+  // The run's inner vertices and p's direction lie within the cell's widened angular range
+  // (under 90 degrees), so the side of each ray from the centre is monotone along the run.
+  const std::uint32_t* e = entries_.data() + first;
+  std::uint32_t lo = 0, hi = count;
+  while (hi - lo > 1) {
+    std::uint32_t mid = lo + (hi - lo) / 2;
+    int s = orient2d(c_, v_[e[mid]], p);
+    sink.ray(e[mid], s);
+    if (s >= 0) lo = mid;
+    else hi = mid;
+  }
+  // the ray from the centre through p leaves through edge e[lo]: one test decides
+  int s = edgeSign(v_, e[lo], p);
+  sink.edge(e[lo], s);
+  return s > 0 ? Location::Inside : (s == 0 ? Location::Boundary : Location::Outside);
+}
+
+template <class Sink>
+Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
+  if (entries_.empty()) return fanLocate(v_, p, sink);  // no centre strictly inside
+  std::int64_t c = cellOf(p);
+  if (c < 0) {
+    if (p == c_) {
+      sink.atCentre();
+      return Location::Inside;
+    }
+    return fanLocate(v_, p, sink);  // offsets too large for the index arithmetic
+  }
+  const std::uint32_t cell = static_cast<std::uint32_t>(c);
+  sink.cell(c, static_cast<int>(cell / q_));
+  const std::uint32_t b = offsets_[cell], k = offsets_[cell + 1] - b;
+  if (k <= kCrowdedCell) return testEdges(v_, entries_.data() + b, entries_.data() + b + k, p, sink);
+  sink.crowded();
+  return searchRange(p, b, k, sink);
+}
+
+Location PolarLocator::locate(Vec2 p) const noexcept {
+  NoSink sink;
+  return run(p, sink);
+}
+
+void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace2D PolarLocator::trace(Vec2 p) const {
+  Trace2D t;
+  t.method = Method2D::Polar;
+  t.apex = entries_.empty() ? v_[0] : c_;
+  TraceSink sink{t};
+  t.result = run(p, sink);
+  return t;
+}
+
+Stats2D PolarLocator::stats() const {
+  return csrStats(v_.size(), offsets_,
+                  sizeof(*this) + bytesOf(v_) + bytesOf(offsets_) + bytesOf(entries_), buildSeconds_);
+}
+
+std::vector<Cell2D> PolarLocator::cells() const {
+  std::vector<Cell2D> out;
+  if (entries_.empty()) return out;
+  const std::uint32_t cells = 8 * q_;
+  Vec2 corners[4] = {box_.hi, {box_.lo.x, box_.hi.y}, box_.lo, {box_.hi.x, box_.lo.y}};
+  for (std::uint32_t i = 0; i < cells; ++i) {
+    Cell2D c;
+    c.index = i;
+    c.octant = static_cast<int>(i / q_);
+    double a0 = static_cast<double>(i) / qd_, a1 = static_cast<double>(i + 1) / qd_;
+    c.dirLo = directionOf(a0);
+    c.dirHi = directionOf(a1 >= 8 ? 8 - 1e-12 : a1);
+    c.hitLo = rayExit(box_, c_, c.dirLo);
+    c.hitHi = rayExit(box_, c_, c.dirHi);
+    c.outline = {c_, c.hitLo};
+    for (Vec2 k : corners) {
+      double a = pseudoAngle(k.x - c_.x, k.y - c_.y);
+      if (a > a0 && a < a1) c.outline.push_back(k);
+    }
+    c.outline.push_back(c.hitHi);
+    c.edges.assign(entries_.begin() + offsets_[i], entries_.begin() + offsets_[i + 1]);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+// === Locator2D
+
+namespace {
+std::variant<HalfplaneLocator, WedgeLocator, SlabLocator, UniformLocator, PolarLocator> build(
+    const ConvexPolygon& polygon, Method2D method, std::uint32_t resolution) {
+  switch (method) {
+    case Method2D::Halfplane: return HalfplaneLocator(polygon);
+    case Method2D::Wedge: return WedgeLocator(polygon);
+    case Method2D::Slab: return SlabLocator(polygon);
+    case Method2D::Uniform: return UniformLocator(polygon, resolution);
+    case Method2D::Polar: break;
+  }
+  return PolarLocator(polygon, resolution);
+}
+}  // namespace
+
+Locator2D::Locator2D(const ConvexPolygon& polygon, Method2D method, std::uint32_t resolution)
+    : impl_(build(polygon, method, resolution)) {}
+
+Location Locator2D::locate(Vec2 p) const noexcept {
+  return std::visit([&](const auto& l) { return l.locate(p); }, impl_);
+}
+void Locator2D::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
+  std::visit([&](const auto& l) { l.locate(points, out); }, impl_);
+}
+Trace2D Locator2D::trace(Vec2 p) const {
+  return std::visit([&](const auto& l) { return l.trace(p); }, impl_);
+}
+Stats2D Locator2D::stats() const {
+  return std::visit([&](const auto& l) { return l.stats(); }, impl_);
+}
+std::vector<Cell2D> Locator2D::cells() const {
+  return std::visit([&](const auto& l) { return l.cells(); }, impl_);
+}
+
+}  // namespace convexloc

@@ -1,0 +1,125 @@
+// convexloc — exact predicates: a double-precision filter with a proven bound, and an
+// exact integer fallback for the rare cases the filter cannot decide.
+#include "convexloc/predicates.hpp"
+
+#include <gmpxx.h>
+
+#include <array>
+#include <cmath>
+
+namespace convexloc {
+namespace {
+
+using detail::kEps;
+// Shewchuk's bound for the 3x3 determinant of differences
+constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
+
+thread_local unsigned long long tFallbacks = 0;
+
+// exponent of the least significant bit of a non-zero double
+int lowBit(double v) {
+  int e = 0;
+  std::frexp(v, &e);
+  return e - 53;
+}
+
+// smallest lsb exponent over the non-zero values, so that all scale to integers
+template <std::size_t K>
+int commonLowBit(const std::array<double, K>& vals) {
+  int lo = 0;
+  bool any = false;
+  for (double v : vals) {
+    if (v == 0.0) continue;
+    int b = lowBit(v);
+    if (!any || b < lo) lo = b;
+    any = true;
+  }
+  return lo;
+}
+
+// v * 2^-lo as an exact integer
+void scaled(mpz_class& out, double v, int lo) {
+  int e = 0;
+  double m = std::frexp(v, &e);
+  mpz_set_d(out.get_mpz_t(), std::ldexp(m, 53));  // |m| < 1, so this is an exact integer
+  int shift = e - 53 - lo;
+  if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+}
+
+int sign(const mpz_class& v) { return mpz_sgn(v.get_mpz_t()); }
+
+}  // namespace
+
+int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+  ++tFallbacks;
+  thread_local std::array<mpz_class, 8> z;
+  std::array<double, 8> in{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
+  int lo = commonLowBit(in);
+  for (std::size_t i = 0; i < in.size(); ++i) scaled(z[i], in[i], lo);
+  // (p1x - p0x) * (q1y - q0y) - (p1y - p0y) * (q1x - q0x)
+  z[2] -= z[0];
+  z[3] -= z[1];
+  z[6] -= z[4];
+  z[7] -= z[5];
+  z[0] = z[2] * z[7];
+  z[1] = z[3] * z[6];
+  z[0] -= z[1];
+  return sign(z[0]);
+}
+
+namespace {
+
+// exact sign of det[a-d; b-d; c-d]
+int exactOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  ++tFallbacks;
+  thread_local std::array<mpz_class, 12> z;
+  thread_local std::array<mpz_class, 3> t;
+  std::array<double, 12> in{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  int lo = commonLowBit(in);
+  for (std::size_t i = 0; i < in.size(); ++i) scaled(z[i], in[i], lo);
+  for (std::size_t i = 0; i < 9; ++i) z[i] -= z[9 + i % 3];
+  // rows: (z0 z1 z2), (z3 z4 z5), (z6 z7 z8)
+  t[0] = z[4] * z[8] - z[5] * z[7];
+  t[1] = z[5] * z[6] - z[3] * z[8];
+  t[2] = z[3] * z[7] - z[4] * z[6];
+  t[0] *= z[0];
+  t[1] *= z[1];
+  t[2] *= z[2];
+  t[0] += t[1];
+  t[0] += t[2];
+  return sign(t[0]);
+}
+
+// a difference whose products cannot underflow or overflow in the 3D filter
+bool tame(double v) {
+  double a = std::fabs(v);
+  return a == 0.0 || (a >= 0x1p-250 && a <= 0x1p250);
+}
+
+}  // namespace
+
+int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  if (tame(adx) && tame(ady) && tame(adz) && tame(bdx) && tame(bdy) && tame(bdz) &&
+      tame(cdx) && tame(cdy) && tame(cdz)) {
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                       (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                       (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+    double bound = kO3dBound * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    // tame differences cannot underflow: a zero permanent means every term is exactly zero
+    if (permanent == 0.0) return 0;
+  }
+  return exactOrient3d(a, b, c, d);
+}
+
+unsigned long long exactFallbackCount() noexcept { return tFallbacks; }
+
+}  // namespace convexloc

@@ -1,0 +1,187 @@
+// convexloc — a strict, fast reader for point text files.
+#include "convexloc/text_reader.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "convexloc/error.hpp"
+
+namespace convexloc {
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+// a short, printable quote of the text at the start of s, for messages
+std::string quote(std::string_view s) {
+  std::string out = "'";
+  std::size_t n = 0;
+  for (char c : s) {
+    if (isBlank(c) || c == ',' || c == '#') break;
+    if (++n > 24) {
+      out += "...";
+      break;
+    }
+    unsigned char u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      out += c;
+    } else {
+      static const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    }
+  }
+  return out + "'";
+}
+
+// parses one number at s[pos..]; advances pos
+double parseNumber(std::string_view s, std::size_t& pos, std::size_t lineNo) {
+  std::size_t start = pos;
+  const char* p = s.data() + pos;
+  const char* end = s.data() + s.size();
+  bool plus = p != end && *p == '+';
+  if (plus) ++p;
+  const char* digits = (p != end && *p == '-' && !plus) ? p + 1 : p;
+  if (digits == end || !((*digits >= '0' && *digits <= '9') || *digits == '.'))
+    throw ParseError("not a number: " + quote(s.substr(start)), lineNo);
+  double v = 0.0;
+  auto [ptr, ec] = std::from_chars(p, end, v, std::chars_format::general);
+  if (ec == std::errc::invalid_argument)
+    throw ParseError("not a number: " + quote(s.substr(start)), lineNo);
+  if (ptr != end && !isBlank(*ptr) && *ptr != ',' && *ptr != '#')
+    throw ParseError("not a number: " + quote(s.substr(start)), lineNo);
+  if (ec == std::errc::result_out_of_range) {
+    // underflow rounds to zero, as strtod does; overflow has no finite nearest value
+    std::string token(p, ptr);
+    errno = 0;
+    double r = std::strtod(token.c_str(), nullptr);
+    if (r != 0.0)
+      throw ParseError("number out of the range of double: " + quote(s.substr(start)), lineNo);
+    v = token[0] == '-' ? -0.0 : 0.0;
+  }
+  pos = static_cast<std::size_t>(ptr - s.data());
+  return v;
+}
+
+}  // namespace
+
+bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::size_t pos = 0;
+  while (pos < line.size() && isBlank(line[pos])) ++pos;
+  if (pos == line.size() || line[pos] == '#') return false;
+  for (int k = 0; k < dims; ++k) {
+    if (k > 0) {
+      std::size_t before = pos;
+      while (pos < line.size() && isBlank(line[pos])) ++pos;
+      if (pos < line.size() && line[pos] == ',') {
+        ++pos;
+        while (pos < line.size() && isBlank(line[pos])) ++pos;
+      }
+      if (pos == line.size() || line[pos] == '#')
+        throw ParseError("expected " + std::to_string(dims) + " numbers, found " +
+                             std::to_string(k),
+                         lineNo);
+      if (pos == before)
+        throw ParseError("numbers must be separated by whitespace or a comma", lineNo);
+    }
+    out[k] = parseNumber(line, pos, lineNo);
+  }
+  while (pos < line.size() && isBlank(line[pos])) ++pos;
+  if (pos == line.size() || line[pos] == '#') return true;
+  std::size_t extra = pos;
+  if (line[extra] == ',') ++extra;
+  while (extra < line.size() && isBlank(line[extra])) ++extra;
+  std::size_t probe = extra;
+  bool number = true;
+  try {
+    parseNumber(line, probe, lineNo);
+  } catch (const ParseError&) {
+    number = false;
+  }
+  if (number)
+    throw ParseError("expected " + std::to_string(dims) + " numbers, found more", lineNo);
+  throw ParseError("unexpected text after " + std::to_string(dims) + " numbers: " +
+                       quote(line.substr(extra)),
+                   lineNo);
+}
+
+RowReader::RowReader(std::FILE* file, int dims) : file_(file), dims_(dims), buf_(1 << 16) {}
+
+bool RowReader::fill() {
+  if (eof_) return false;
+  if (begin_ > 0) {
+    std::memmove(buf_.data(), buf_.data() + begin_, end_ - begin_);
+    end_ -= begin_;
+    begin_ = 0;
+  }
+  if (end_ == buf_.size()) {
+    if (buf_.size() >= kMaxLineBytes + 2)
+      throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_ + 1);
+    buf_.resize(std::min(buf_.size() * 2, kMaxLineBytes + 2));
+  }
+  std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
+  end_ += got;
+  if (got == 0) {
+    if (std::ferror(file_)) throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
+    eof_ = true;
+    return false;
+  }
+  return true;
+}
+
+bool RowReader::next(double* out) {
+  for (;;) {
+    const char* base = buf_.data();
+    const void* nl = std::memchr(base + begin_, '\n', end_ - begin_);
+    std::string_view line;
+    if (nl) {
+      std::size_t len = static_cast<std::size_t>(static_cast<const char*>(nl) - (base + begin_));
+      line = {base + begin_, len};
+      begin_ += len + 1;
+    } else if (fill()) {
+      continue;
+    } else if (begin_ < end_) {
+      line = {base + begin_, end_ - begin_};  // the last line has no newline
+      begin_ = end_;
+    } else {
+      return false;
+    }
+    ++line_;
+    if (line.size() > kMaxLineBytes)
+      throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
+    if (parseRow(line, line_, dims_, out)) return true;
+  }
+}
+
+InputFile::InputFile(const std::string& path) {
+  if (path == "-") {
+    f_ = stdin;
+    return;
+  }
+  f_ = std::fopen(path.c_str(), "rb");
+  if (!f_) throw Error(std::string("cannot open: ") + std::strerror(errno));
+  owned_ = true;
+}
+
+InputFile::~InputFile() {
+  if (owned_) std::fclose(f_);
+}
+
+PointList readPoints2D(const std::string& path) {
+  InputFile in(path);
+  RowReader reader(in.get(), 2);
+  PointList out;
+  double row[2];
+  while (reader.next(row)) {
+    out.points.push_back({row[0], row[1]});
+    out.lines.push_back(reader.line());
+  }
+  out.lastLine = reader.line();
+  return out;
+}
+
+}  // namespace convexloc
