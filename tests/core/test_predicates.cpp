@@ -1,0 +1,110 @@
+// orient2d / orient3d against a plain rational evaluation (GMP mpq), which shares no code
+// with the filter or the integer fallback in core.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "convexloc/generate2d.hpp"
+#include "convexloc/predicates.hpp"
+
+using namespace convexloc;
+
+namespace {
+
+int sgn(const mpq_class& v) { return mpq_sgn(v.get_mpq_t()); }
+
+int refOrient2d(Vec2 a, Vec2 b, Vec2 c) {
+  mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
+  return sgn(mpq_class((ax - cx) * (by - cy) - (ay - cy) * (bx - cx)));
+}
+
+int refOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  mpq_class m[3][3] = {{mpq_class(a.x) - d.x, mpq_class(a.y) - d.y, mpq_class(a.z) - d.z},
+                       {mpq_class(b.x) - d.x, mpq_class(b.y) - d.y, mpq_class(b.z) - d.z},
+                       {mpq_class(c.x) - d.x, mpq_class(c.y) - d.y, mpq_class(c.z) - d.z}};
+  mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                  m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return sgn(det);
+}
+
+// a double with a random exponent in [lo, hi] and a random sign
+double wild(Rng& r, int lo, int hi) {
+  double m = 1 + r.uniform();
+  int e = lo + static_cast<int>(r.below(static_cast<std::uint64_t>(hi - lo + 1)));
+  return (r.below(2) ? -1 : 1) * std::ldexp(m, e);
+}
+
+}  // namespace
+
+TEST(Orient2d, SimpleTurns) {
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0, 1}), 1);
+  EXPECT_EQ(orient2d({0, 0}, {0, 1}, {1, 0}), -1);
+  EXPECT_EQ(orient2d({0, 0}, {1, 1}, {2, 2}), 0);
+  EXPECT_EQ(orient2d({0.5, 0.5}, {12, 12}, {24, 24}), 0);
+}
+
+TEST(Orient2d, NearlyCollinearMatchesRational) {
+  // points one ulp off the line y = x at many scales: the filter alone would guess
+  Rng r(11);
+  for (int i = 0; i < 200000; ++i) {
+    double s = std::ldexp(1.0, static_cast<int>(r.below(200)) - 100);
+    Vec2 a{s * r.uniform(), 0}, b{s * r.uniform(), 0};
+    a.y = a.x;
+    b.y = b.x;
+    Vec2 c{s * r.uniform(), 0};
+    c.y = c.x;
+    switch (r.below(3)) {
+      case 0: c.y = std::nextafter(c.y, 1e300); break;
+      case 1: c.y = std::nextafter(c.y, -1e300); break;
+      default: break;
+    }
+    ASSERT_EQ(orient2d(a, b, c), refOrient2d(a, b, c)) << a.x << ' ' << b.x << ' ' << c.x;
+  }
+}
+
+TEST(Orient2d, ExtremeMagnitudesMatchRational) {
+  // subnormals, huge values and overflow of the products all take the exact path
+  Rng r(12);
+  const int ranges[][2] = {{-1074, -1000}, {-600, -400}, {-10, 10}, {400, 600}, {1000, 1023}, {-1074, 1023}};
+  for (auto [lo, hi] : ranges)
+    for (int i = 0; i < 20000; ++i) {
+      Vec2 a{wild(r, lo, hi), wild(r, lo, hi)}, b{wild(r, lo, hi), wild(r, lo, hi)};
+      Vec2 c = r.below(4) == 0 ? Vec2{a.x, b.y} : Vec2{wild(r, lo, hi), wild(r, lo, hi)};
+      ASSERT_EQ(orient2d(a, b, c), refOrient2d(a, b, c)) << lo << ' ' << hi;
+    }
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(orient2d({0, 0}, {tiny, tiny}, {2 * tiny, 2 * tiny}), 0);
+  EXPECT_EQ(orient2d({0, 0}, {tiny, 0}, {0, tiny}), 1);
+  const double big = std::numeric_limits<double>::max();
+  EXPECT_EQ(orient2d({-big, -big}, {big, -big}, {0, big}), 1);
+  EXPECT_EQ(orient2d({-big, -big}, {big, big}, {0, 0}), 0);
+}
+
+TEST(CrossDiff2d, MatchesOrientWhenSharingAPoint) {
+  Rng r(13);
+  for (int i = 0; i < 10000; ++i) {
+    Vec2 a{r.uniform(), r.uniform()}, b{r.uniform(), r.uniform()}, c{r.uniform(), r.uniform()};
+    ASSERT_EQ(crossDiff2d(a, b, a, c), orient2d(b, c, a));
+  }
+}
+
+TEST(Orient3d, MatchesRational) {
+  Rng r(14);
+  for (int i = 0; i < 100000; ++i) {
+    int lo = -20, hi = 20;
+    if (i % 5 == 1) lo = -1074, hi = -900;
+    if (i % 5 == 2) lo = 900, hi = 1023;
+    if (i % 5 == 3) lo = -1074, hi = 1023;
+    Vec3 a{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    Vec3 b{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    Vec3 c{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    Vec3 d{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    if (i % 5 == 4) d = {a.x + (b.x - a.x) * 0.5, a.y + (b.y - a.y) * 0.5, a.z + (b.z - a.z) * 0.5};
+    ASSERT_EQ(orient3d(a, b, c, d), refOrient3d(a, b, c, d)) << i;
+  }
+  EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 0}), 0);
+  EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, -1}), 1);
+}
