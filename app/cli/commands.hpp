@@ -1,0 +1,142 @@
+// convexloc CLI — the subcommands, their options, and how they fail.
+//
+// main.cpp parses the command line into the option structs below and calls one command.
+// A command returns normally on success and throws Failure otherwise; main turns that
+// into the exit code and the message on stderr. Nothing a command writes to stdout may
+// precede a Failure caused by bad input: commands validate everything first.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "convexloc/geometry.hpp"
+#include "convexloc/locate2d.hpp"
+#include "convexloc/polygon.hpp"
+
+namespace convexloc::cli {
+
+// === Exit codes
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitBadUsage = 2;
+
+// A reason to stop, with the exit code and the complete message for stderr.
+class Failure : public std::runtime_error {
+ public:
+  Failure(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  int code() const noexcept { return code_; }
+  bool isUsage() const noexcept { return code_ == kExitBadUsage; }
+
+ private:
+  int code_;
+};
+
+// a bad-usage failure (exit 2); main adds the usage text
+[[noreturn]] void failUsage(const std::string& message);
+
+// a bad-input failure about `file` (exit 1): "FILE:LINE: problem", or "FILE: problem" for line 0
+[[noreturn]] void failInput(const std::string& file, std::size_t line, const std::string& problem);
+
+// how a file is named in messages: its path, or "<stdin>" for "-"
+std::string displayName(const std::string& path);
+
+// Runs `fn`, turning a convexloc::Error into a Failure that names `file` (and its line),
+// and a convexloc::UsageError into a bad-usage Failure.
+void aboutFile(const std::string& file, const std::function<void()>& fn);
+
+// === Shapes
+
+// true for a path naming a polyhedron (.off or .obj, any case)
+bool isPolyhedronPath(std::string_view path);
+
+// The polygon in a vertex file ("-" for stdin), validated; Failure naming the file otherwise.
+// `input`, when given, receives the vertices as read, before normalisation.
+ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input = nullptr);
+
+// the 2D method with that name, or a bad-usage failure listing the choices
+Method2D methodOrFail(const std::string& name);
+
+// === Options, one struct per subcommand
+
+struct ClassifyOptions {
+  std::string shape;
+  std::string points;
+  std::string method = "polar";
+  std::uint32_t resolution = 0;  // 0: chosen from the shape
+};
+
+struct InfoOptions {
+  std::string shape;
+  std::string method;  // empty: every method, in a table
+  std::uint32_t resolution = 0;
+};
+
+struct GeneratePolygonOptions {
+  std::string kind;
+  std::size_t n = 16;
+  std::uint64_t seed = 1;
+};
+
+struct GeneratePointsOptions {
+  std::string shape;
+  std::size_t count = 1000;
+  std::uint64_t seed = 1;
+  bool nearBoundary = false;
+};
+
+// === Commands, one per dimension where the dimension matters
+
+void classify2D(const ClassifyOptions& o);
+void info2D(const InfoOptions& o);
+void generatePolygon(const GeneratePolygonOptions& o);
+void generatePoints2D(const GeneratePointsOptions& o);
+
+// The 3D side (polyhedron.cpp): .off / .obj shapes. Same contracts as the 2D commands.
+void classify3D(const ClassifyOptions& o);
+void info3D(const InfoOptions& o);
+void generatePoints3D(const GeneratePointsOptions& o);
+
+// === Output
+
+// Writes to stdout through a large buffer; a failed write is a Failure.
+class Output {
+ public:
+  Output();
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+  // appends raw text
+  void put(std::string_view text) {
+    if (text.size() > buf_.size() - used_) flushBuffer();
+    if (text.size() > buf_.size()) {
+      writeDirect(text);
+      return;
+    }
+    text.copy(buf_.data() + used_, text.size());
+    used_ += text.size();
+  }
+  // appends a double in the shortest form that reads back to the same double
+  void number(double v);
+  // appends "x y\n"
+  void point(Vec2 p) {
+    number(p.x);
+    put(" ");
+    number(p.y);
+    put("\n");
+  }
+  // writes everything buffered and flushes stdout; Failure when the write failed
+  void finish();
+
+ private:
+  void flushBuffer();
+  void writeDirect(std::string_view text);
+  std::vector<char> buf_;
+  std::size_t used_ = 0;
+};
+
+}  // namespace convexloc::cli

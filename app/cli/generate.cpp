@@ -1,0 +1,69 @@
+// convexloc CLI — `generate polygon` and `generate points`: files in the formats classify reads.
+#include <algorithm>
+#include <string>
+
+#include "commands.hpp"
+#include "convexloc/error.hpp"
+#include "convexloc/generate2d.hpp"
+
+namespace convexloc::cli {
+namespace {
+
+// points generated per call of the core generator; fixed, so the output never depends on it
+constexpr std::size_t kPointBlock = std::size_t{1} << 16;
+
+// the seed of block `b` of a point stream: block 0 uses the seed itself, so a short stream
+// equals one call of generatePoints; later blocks use a hash of (seed, b)
+std::uint64_t blockSeed(std::uint64_t seed, std::size_t b) {
+  if (b == 0) return seed;
+  Rng mix(seed ^ (static_cast<std::uint64_t>(b) * 0xd1b54a32d192ed03ULL));
+  return mix.next();
+}
+
+// the kind with that name, or a bad-usage failure listing the choices
+PolygonKind kindOrFail(const std::string& name) {
+  if (auto k = parsePolygonKind(name)) return *k;
+  std::string choices;
+  for (PolygonKind k : kAllPolygonKinds)
+    choices += (choices.empty() ? "" : ", ") + std::string(toString(k));
+  failUsage("unknown polygon kind '" + name + "'; choose one of " + choices);
+}
+
+}  // namespace
+
+void generatePolygon(const GeneratePolygonOptions& o) {
+  const PolygonKind kind = kindOrFail(o.kind);
+  std::vector<Vec2> vertices;
+  try {
+    vertices = convexloc::generatePolygon(kind, o.n, o.seed);
+  } catch (const UsageError& e) {
+    failUsage(e.what());
+  }
+  Output out;
+  out.put("# convexloc generate polygon --kind " + std::string(toString(kind)) + " --n " +
+          std::to_string(o.n) + " --seed " + std::to_string(o.seed) + "\n");
+  out.put("# " + std::to_string(vertices.size()) +
+          " vertices, counter-clockwise, one 'x y' per line");
+  out.put(kind == PolygonKind::Degenerate
+              ? " (repeated and collinear on purpose: it reduces to a square)\n"
+              : "\n");
+  for (Vec2 v : vertices) out.point(v);
+  out.finish();
+}
+
+void generatePoints2D(const GeneratePointsOptions& o) {
+  const ConvexPolygon polygon = loadPolygon(o.shape);
+  Output out;
+  out.put("# convexloc generate points --shape " + displayName(o.shape) + " --count " +
+          std::to_string(o.count) + " --seed " + std::to_string(o.seed) +
+          (o.nearBoundary ? " --near-boundary" : "") + "\n");
+  for (std::size_t done = 0, b = 0; done < o.count; ++b) {
+    const std::size_t n = std::min(kPointBlock, o.count - done);
+    for (Vec2 p : convexloc::generatePoints(polygon, n, blockSeed(o.seed, b), o.nearBoundary))
+      out.point(p);
+    done += n;
+  }
+  out.finish();
+}
+
+}  // namespace convexloc::cli
