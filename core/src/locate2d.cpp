@@ -249,7 +249,21 @@ Trace2D WedgeLocator::trace(Vec2 p) const {
 }
 
 Stats2D WedgeLocator::stats() const {
-  return plainStats(v_.size(), sizeof(*this) + bytesOf(v_), buildSeconds_);
+  // the fan triangles of cells(): one per inner diagonal pair, holding 1 to 3 edges
+  Stats2D s = plainStats(v_.size(), sizeof(*this) + bytesOf(v_), buildSeconds_);
+  const std::size_t n = v_.size();
+  s.cells = n - 2;
+  s.entries = n;
+  s.maxPerCell = n == 3 ? 3 : 2;
+  s.meanPerCell = static_cast<double>(n) / static_cast<double>(n - 2);
+  s.histogram.assign(kCrowdedCell + 2, 0);
+  if (n == 3) {
+    s.histogram[3] = 1;
+  } else {
+    s.histogram[2] = 2;
+    s.histogram[1] = n - 4;
+  }
+  return s;
 }
 
 std::vector<Cell2D> WedgeLocator::cells() const {

@@ -115,7 +115,10 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::
     return true;
   };
   for (std::uint32_t i = 0; i < n; ++i) {
-    if (!ring.empty() && points[ring.back()] == points[i]) continue;
+    if (!ring.empty() && points[ring.back()] == points[i]) {
+      ++repeated_;
+      continue;
+    }
     ring.push_back(i);
     while (ring.size() >= 3 &&
            collapse(ring[ring.size() - 3], ring[ring.size() - 2], ring[ring.size() - 1])) {
@@ -126,6 +129,7 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::
     changed = false;
     if (points[ring.back()] == points[ring.front()]) {
       ring.pop_back();
+      ++repeated_;
       changed = true;
     } else if (collapse(ring[ring.size() - 2], ring.back(), ring.front())) {
       ring.pop_back();

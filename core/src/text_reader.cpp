@@ -7,6 +7,8 @@
 #include <cstring>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "convexloc/error.hpp"
 
 namespace convexloc {
@@ -162,6 +164,9 @@ InputFile::InputFile(const std::string& path) {
     f_ = stdin;
     return;
   }
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    throw Error("cannot open: it is a directory, not a file");
   f_ = std::fopen(path.c_str(), "rb");
   if (!f_) throw Error(std::string("cannot open: ") + std::strerror(errno));
   owned_ = true;
