@@ -1,0 +1,4 @@
+// convexloc-viewer — the one place that includes the OpenGL loader.
+#pragma once
+
+#include <glad/gl.h>

@@ -1,0 +1,261 @@
+// convexloc-viewer — the GL backend.
+#include "gl/renderer.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace convexloc::viewer {
+namespace {
+
+// the layouts uploaded, as the shaders read them
+struct GpuFill {
+  float pos[3];
+  float colour[4];
+  float normal[3];
+};
+struct GpuSegment {
+  float a[3];
+  float b[3];
+  float colour[4];
+  float style[2];
+};
+struct GpuMarker {
+  float pos[3];
+  float colour[4];
+  float sizeShape[2];
+};
+
+void put3(float* out, glm::dvec3 p, glm::dvec3 origin) {
+  const glm::dvec3 l = p - origin;
+  out[0] = static_cast<float>(l.x);
+  out[1] = static_cast<float>(l.y);
+  out[2] = static_cast<float>(l.z);
+}
+void put4(float* out, Rgba c) {
+  out[0] = c.r;
+  out[1] = c.g;
+  out[2] = c.b;
+  out[3] = c.a;
+}
+glm::vec4 vec(Rgba c) { return {c.r, c.g, c.b, c.a}; }
+
+// a float attribute of `size` components at byte `offset`, advancing per vertex or instance
+void attribute(GLuint index, GLint size, GLsizei stride, std::size_t offset, GLuint divisor) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(offset));
+  glVertexAttribDivisor(index, divisor);
+}
+
+template <class T>
+void uploadBuffer(GLuint vbo, const std::vector<T>& data) {
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)),
+               data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+}
+
+void commonUniforms(ShaderProgram& p, const FrameParams& f) {
+  p.use();
+  p.set("uClipFromLocal", f.clipFromLocal);
+  p.set("uPixelRatio", f.pixelRatio);
+}
+
+void blending(bool depth) {
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (depth) glEnable(GL_DEPTH_TEST);
+  else glDisable(GL_DEPTH_TEST);
+}
+
+}  // namespace
+
+Renderer::~Renderer() {
+  if (!created_) return;
+  for (GpuLayer& l : layers_) {
+    GLuint vaos[3] = {l.fillVao, l.segVao, l.markVao};
+    GLuint vbos[3] = {l.fillVbo, l.segVbo, l.markVbo};
+    glDeleteVertexArrays(3, vaos);
+    glDeleteBuffers(3, vbos);
+  }
+  glDeleteVertexArrays(1, &pointVao_);
+  GLuint vbos[2] = {pointVbo_, classVbo_};
+  glDeleteBuffers(2, vbos);
+}
+
+bool Renderer::init(const std::string& dir) {
+  dir_ = dir;
+  if (!created_) {
+    created_ = true;
+    for (GpuLayer& l : layers_) {
+      glGenVertexArrays(1, &l.fillVao);
+      glGenBuffers(1, &l.fillVbo);
+      glBindVertexArray(l.fillVao);
+      glBindBuffer(GL_ARRAY_BUFFER, l.fillVbo);
+      attribute(0, 3, sizeof(GpuFill), offsetof(GpuFill, pos), 0);
+      attribute(1, 4, sizeof(GpuFill), offsetof(GpuFill, colour), 0);
+      attribute(2, 3, sizeof(GpuFill), offsetof(GpuFill, normal), 0);
+
+      glGenVertexArrays(1, &l.segVao);
+      glGenBuffers(1, &l.segVbo);
+      glBindVertexArray(l.segVao);
+      glBindBuffer(GL_ARRAY_BUFFER, l.segVbo);
+      attribute(0, 3, sizeof(GpuSegment), offsetof(GpuSegment, a), 1);
+      attribute(1, 3, sizeof(GpuSegment), offsetof(GpuSegment, b), 1);
+      attribute(2, 4, sizeof(GpuSegment), offsetof(GpuSegment, colour), 1);
+      attribute(3, 2, sizeof(GpuSegment), offsetof(GpuSegment, style), 1);
+
+      glGenVertexArrays(1, &l.markVao);
+      glGenBuffers(1, &l.markVbo);
+      glBindVertexArray(l.markVao);
+      glBindBuffer(GL_ARRAY_BUFFER, l.markVbo);
+      attribute(0, 3, sizeof(GpuMarker), offsetof(GpuMarker, pos), 0);
+      attribute(1, 4, sizeof(GpuMarker), offsetof(GpuMarker, colour), 0);
+      attribute(2, 2, sizeof(GpuMarker), offsetof(GpuMarker, sizeShape), 0);
+    }
+    glGenVertexArrays(1, &pointVao_);
+    glGenBuffers(1, &pointVbo_);
+    glGenBuffers(1, &classVbo_);
+    glBindVertexArray(pointVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, pointVbo_);
+    attribute(0, 3, 3 * sizeof(float), 0, 0);
+    glBindBuffer(GL_ARRAY_BUFFER, classVbo_);
+    glEnableVertexAttribArray(1);
+    glVertexAttribIPointer(1, 1, GL_UNSIGNED_BYTE, 1, nullptr);
+    glBindVertexArray(0);
+  }
+  return compileAll();
+}
+
+bool Renderer::reload() { return compileAll(); }
+
+bool Renderer::compileAll() {
+  log_.clear();
+  bool ok = fill_.load(dir_, "fill", log_);
+  ok = segments_.load(dir_, "segments", log_) && ok;
+  ok = markers_.load(dir_, "markers", log_) && ok;
+  ok = points_.load(dir_, "points", log_) && ok;
+  return ok;
+}
+
+void Renderer::upload(Layer layer, const DrawList& list, glm::dvec3 origin) {
+  GpuLayer& l = layers_[static_cast<int>(layer)];
+  std::vector<GpuFill> fills(list.fills.size());
+  for (std::size_t i = 0; i < fills.size(); ++i) {
+    const FillVertex& v = list.fills[i];
+    put3(fills[i].pos, v.p, origin);
+    put4(fills[i].colour, v.colour);
+    std::memcpy(fills[i].normal, &v.normal[0], sizeof fills[i].normal);
+  }
+  uploadBuffer(l.fillVbo, fills);
+  l.fills = static_cast<GLsizei>(fills.size());
+
+  std::vector<GpuSegment> segs(list.segments.size());
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const Segment& s = list.segments[i];
+    put3(segs[i].a, s.a, origin);
+    put3(segs[i].b, s.b, origin);
+    put4(segs[i].colour, s.colour);
+    segs[i].style[0] = s.width;
+    segs[i].style[1] = s.dash;
+  }
+  uploadBuffer(l.segVbo, segs);
+  l.segments = static_cast<GLsizei>(segs.size());
+
+  std::vector<GpuMarker> marks(list.markers.size());
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    const Marker& m = list.markers[i];
+    put3(marks[i].pos, m.p, origin);
+    put4(marks[i].colour, m.colour);
+    marks[i].sizeShape[0] = m.size;
+    marks[i].sizeShape[1] = static_cast<float>(m.shape);
+  }
+  uploadBuffer(l.markVbo, marks);
+  l.markers = static_cast<GLsizei>(marks.size());
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::uploadClasses(std::span<const Location> classes) {
+  static_assert(sizeof(Location) == 1, "classes upload as bytes");
+  glBindBuffer(GL_ARRAY_BUFFER, classVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(classes.size()),
+               classes.empty() ? nullptr : classes.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::uploadPoints(std::span<const Vec2> points, std::span<const Location> classes,
+                            glm::dvec3 origin) {
+  const std::size_t n = std::min(points.size(), classes.size());
+  std::vector<float> xyz(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xyz[3 * i] = static_cast<float>(points[i].x - origin.x);
+    xyz[3 * i + 1] = static_cast<float>(points[i].y - origin.y);
+    xyz[3 * i + 2] = 0.0f;
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, pointVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)),
+               xyz.empty() ? nullptr : xyz.data(), GL_STATIC_DRAW);
+  uploadClasses(classes.first(n));
+  pointCount_ = n;
+}
+
+void Renderer::uploadPoints(std::span<const Vec3> points, std::span<const Location> classes,
+                            glm::dvec3 origin) {
+  const std::size_t n = std::min(points.size(), classes.size());
+  std::vector<float> xyz(3 * n);
+  for (std::size_t i = 0; i < n; ++i) put3(&xyz[3 * i], {points[i].x, points[i].y, points[i].z}, origin);
+  glBindBuffer(GL_ARRAY_BUFFER, pointVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)),
+               xyz.empty() ? nullptr : xyz.data(), GL_STATIC_DRAW);
+  uploadClasses(classes.first(n));
+  pointCount_ = n;
+}
+
+void Renderer::drawFills(Layer layer, const FrameParams& f) {
+  const GpuLayer& l = layers_[static_cast<int>(layer)];
+  if (!l.fills || !fill_.ready()) return;
+  blending(f.depth);
+  commonUniforms(fill_, f);
+  fill_.set("uEye", f.eyeLocal);
+  glBindVertexArray(l.fillVao);
+  glDrawArrays(GL_TRIANGLES, 0, l.fills);
+}
+
+void Renderer::drawSegments(Layer layer, const FrameParams& f) {
+  const GpuLayer& l = layers_[static_cast<int>(layer)];
+  if (!l.segments || !segments_.ready()) return;
+  blending(f.depth);
+  commonUniforms(segments_, f);
+  segments_.set("uViewport", f.framebuffer);
+  glBindVertexArray(l.segVao);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, l.segments);
+}
+
+void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
+  const GpuLayer& l = layers_[static_cast<int>(layer)];
+  if (!l.markers || !markers_.ready()) return;
+  blending(false);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  commonUniforms(markers_, f);
+  glBindVertexArray(l.markVao);
+  glDrawArrays(GL_POINTS, 0, l.markers);
+}
+
+void Renderer::drawPoints(const FrameParams& f) {
+  if (!pointCount_ || !points_.ready()) return;
+  blending(f.depth);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  commonUniforms(points_, f);
+  points_.set("uPointSize", f.pointSize);
+  points_.set("uBoundaryScale", 1.7f);
+  points_.set("uVisible", static_cast<int>(f.visibleMask));
+  const glm::vec4 colours[3] = {vec(f.classColours[0]), vec(f.classColours[1]), vec(f.classColours[2])};
+  points_.setArray("uColours", colours, 3);
+  points_.set("uRim", vec(f.rim));
+  glBindVertexArray(pointVao_);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(pointCount_));
+}
+
+}  // namespace convexloc::viewer

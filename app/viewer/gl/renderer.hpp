@@ -1,0 +1,82 @@
+// convexloc-viewer — the thin GL backend: it uploads draw lists and points (as floats
+// relative to an origin, so that shapes far from zero stay sharp) and draws them. It knows
+// nothing of polygons or locators; what to draw comes from logic/.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "convexloc/geometry.hpp"
+#include "gl/gl.hpp"
+#include "gl/shader.hpp"
+#include "logic/colour.hpp"
+#include "logic/draw_list.hpp"
+
+namespace convexloc::viewer {
+
+// the draw lists the renderer keeps
+enum class Layer : int { Structure = 0, Overlay = 1 };
+inline constexpr int kLayerCount = 2;
+
+// what a frame's draw calls share
+struct FrameParams {
+  glm::mat4 clipFromLocal{1.0f};
+  glm::vec3 eyeLocal{0.0f};      // 3D: the eye, for the headlight
+  glm::vec2 framebuffer{1.0f};   // pixels
+  float pixelRatio = 1.0f;       // framebuffer pixels per window pixel
+  float pointSize = 4.0f;        // window pixels
+  unsigned visibleMask = 7u;     // classes of points drawn
+  Rgba classColours[3];
+  Rgba rim;
+  bool depth = false;            // 3D: depth-test
+};
+
+class Renderer {
+public:
+  Renderer() = default;
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Creates the buffers and compiles the shaders in `dir`. False when a shader failed:
+  // shaderLog() then holds the compiler's words, and the layers it draws are skipped.
+  bool init(const std::string& dir);
+  // compiles the shaders again (after editing them); false and shaderLog() on failure
+  bool reload();
+  const std::string& shaderLog() const { return log_; }
+  const std::string& shaderDir() const { return dir_; }
+
+  // replaces a layer's geometry
+  void upload(Layer layer, const DrawList& list, glm::dvec3 origin);
+  // replaces the points and their classes
+  void uploadPoints(std::span<const Vec2> points, std::span<const Location> classes, glm::dvec3 origin);
+  void uploadPoints(std::span<const Vec3> points, std::span<const Location> classes, glm::dvec3 origin);
+  std::size_t pointCount() const { return pointCount_; }
+
+  void drawFills(Layer layer, const FrameParams& f);
+  void drawSegments(Layer layer, const FrameParams& f);
+  void drawMarkers(Layer layer, const FrameParams& f);
+  void drawPoints(const FrameParams& f);
+
+private:
+  struct GpuLayer {
+    GLuint fillVao = 0, fillVbo = 0;
+    GLuint segVao = 0, segVbo = 0;
+    GLuint markVao = 0, markVbo = 0;
+    GLsizei fills = 0, segments = 0, markers = 0;
+  };
+  bool compileAll();
+  void uploadClasses(std::span<const Location> classes);
+
+  std::string dir_, log_;
+  ShaderProgram fill_, segments_, markers_, points_;
+  GpuLayer layers_[kLayerCount];
+  GLuint pointVao_ = 0, pointVbo_ = 0, classVbo_ = 0;
+  std::size_t pointCount_ = 0;
+  bool created_ = false;
+};
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,124 @@
+// convexloc-viewer — the two themes' palettes.
+#include "logic/colour.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace convexloc::viewer {
+namespace {
+
+// Okabe and Ito's colour-blind-safe palette
+constexpr Rgba kSkyBlue = hex(0x56B4E9);
+constexpr Rgba kBlue = hex(0x0072B2);
+constexpr Rgba kOrange = hex(0xE69F00);
+constexpr Rgba kYellow = hex(0xF0E442);
+constexpr Rgba kGreen = hex(0x009E73);
+constexpr Rgba kVermillion = hex(0xD55E00);
+constexpr Rgba kPurple = hex(0xCC79A7);
+
+Palette makeDark() {
+  Palette p;
+  p.background = hex(0x15171c);
+  p.text = hex(0xe8eaed);
+  p.textMuted = hex(0x9aa0a6);
+  p.polygonEdge = hex(0xf4f5f7);
+  p.polygonFill = hex(0xffffff, 0.05f);
+  p.box = hex(0x8b929c, 0.9f);
+  p.octant = hex(0xd4d8de, 0.85f);
+  p.structure = hex(0x7d8590, 0.55f);
+  p.structureStrong = hex(0xaab1bb, 0.9f);
+  p.centre = hex(0xffffff);
+  p.inside = kSkyBlue;
+  p.boundary = kYellow;
+  p.outside = kOrange;
+  p.rim = hex(0x111111, 0.9f);
+  p.extraEdges = hex(0x2fbf8f);
+  p.crowded = kPurple;
+  p.hoverFill = hex(0xffffff, 0.10f);
+  p.hoverOutline = hex(0xffffff, 0.95f);
+  p.hoverEdge = kPurple;
+  p.positive = hex(0x35c08f);
+  p.zero = kYellow;
+  p.negative = hex(0xff7a3d);
+  p.handle = hex(0xf4f5f7);
+  p.handleError = kVermillion;
+  p.meshFill = hex(0x8fb8de, 0.35f);
+  p.meshEdge = hex(0xe8eaed, 0.8f);
+  p.cube = hex(0x9aa0a6, 0.7f);
+  p.slicePlane = hex(0xcfd8e3, 0.12f);
+  return p;
+}
+
+Palette makeLight() {
+  Palette p;
+  p.background = hex(0xfbfbfa);
+  p.text = hex(0x1f2328);
+  p.textMuted = hex(0x5f6770);
+  p.polygonEdge = hex(0x1f2328);
+  p.polygonFill = hex(0x000000, 0.035f);
+  p.box = hex(0x6b7280, 0.9f);
+  p.octant = hex(0x3c4249, 0.8f);
+  p.structure = hex(0x8a929c, 0.55f);
+  p.structureStrong = hex(0x4b525a, 0.9f);
+  p.centre = hex(0x111111);
+  p.inside = kBlue;
+  p.boundary = kYellow;
+  p.outside = kOrange;
+  p.rim = hex(0x111111, 0.9f);
+  p.extraEdges = kGreen;
+  p.crowded = kPurple;
+  p.hoverFill = hex(0x000000, 0.07f);
+  p.hoverOutline = hex(0x111111, 0.9f);
+  p.hoverEdge = hex(0xb8498a);
+  p.positive = kGreen;
+  p.zero = hex(0xb59f00);
+  p.negative = kVermillion;
+  p.handle = hex(0x1f2328);
+  p.handleError = kVermillion;
+  p.meshFill = hex(0x5b8fc0, 0.30f);
+  p.meshEdge = hex(0x1f2328, 0.75f);
+  p.cube = hex(0x5f6770, 0.7f);
+  p.slicePlane = hex(0x40607f, 0.10f);
+  return p;
+}
+
+}  // namespace
+
+Rgba mix(Rgba a, Rgba b, float t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
+          a.a + (b.a - a.a) * t};
+}
+
+std::string_view toString(Theme t) { return t == Theme::Dark ? "dark" : "light"; }
+
+const Palette& paletteFor(Theme t) {
+  static const Palette dark = makeDark();
+  static const Palette light = makeLight();
+  return t == Theme::Dark ? dark : light;
+}
+
+Rgba colourOf(const Palette& p, Location l) {
+  switch (l) {
+    case Location::Inside: return p.inside;
+    case Location::Boundary: return p.boundary;
+    case Location::Outside: return p.outside;
+  }
+  return p.outside;
+}
+
+Rgba cellTint(const Palette& p, std::size_t edges, std::size_t base, bool crowded) {
+  if (crowded) return withAlpha(p.crowded, 0.40f);
+  if (edges <= base) return withAlpha(p.extraEdges, 0.0f);
+  // one extra edge: clearly visible; each further one a little stronger, up to a cap
+  const float extra = static_cast<float>(std::min<std::size_t>(edges - base, 4));
+  return withAlpha(p.extraEdges, 0.16f + 0.08f * (extra - 1.0f));
+}
+
+std::uint32_t packAbgr(Rgba c) {
+  auto byte = [](float v) {
+    return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  };
+  return byte(c.r) | (byte(c.g) << 8) | (byte(c.b) << 16) | (byte(c.a) << 24);
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,82 @@
+// convexloc-viewer — everything the app shows, GL-free: which scene (2D now, 3D beside it),
+// its camera, the view settings, recent files and the last error. The UI edits it, the
+// interaction moves it, the renderer draws it.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "logic/camera2d.hpp"
+#include "logic/camera3d.hpp"
+#include "logic/colour.hpp"
+#include "logic/options.hpp"
+#include "logic/picking.hpp"
+#include "logic/scene2d.hpp"
+#include "logic/structure2d.hpp"
+
+namespace convexloc::viewer {
+
+// which scene is shown
+enum class Dim : std::uint8_t { Two, Three };
+
+struct Settings {
+  Theme theme = Theme::Dark;
+  float fontScale = 1.0f;
+  bool showUi = true;
+  float pointSize = 0.0f;            // pixels; 0 chooses from the count and the window
+  unsigned visibleMask = kAllClasses;  // which classes of sprayed points are drawn
+  View2DOptions view2d;
+};
+
+// the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
+float autoPointSize(std::size_t count, double areaPx);
+
+class Model {
+public:
+  Model() = default;
+
+  Dim dim = Dim::Two;
+  Scene2D scene2d;
+  Camera2D camera2d;
+  Camera3D camera3d;
+  Settings settings;
+  std::vector<std::string> recent;  // files opened, newest first
+
+  // Opens a shape file, chosen by extension (.txt polygon; .off/.obj polyhedron). On
+  // failure the scene stays and error() says why (file and line where known).
+  bool open(const std::string& path);
+  // a degenerate-gallery shape; false and error() for an unknown name
+  bool applyPreset(std::string_view name);
+  // Applies the command line's scene settings (shape, method, spray, probe, ...). Returns
+  // an empty string, or what went wrong (the scene then keeps what could be applied).
+  std::string apply(const Options& o);
+
+  // the camera is fitted to the shape at the next frame (the UI knows the free area)
+  void requestFit() { fitPending_ = true; }
+  bool takeFitRequest() {
+    const bool f = fitPending_;
+    fitPending_ = false;
+    return f;
+  }
+  // fits the current scene's camera into `area`
+  void fit(ScreenRect area);
+
+  // the last error shown to the user, from the model or a scene; the serial grows with each
+  const std::string& error() const { return error_; }
+  std::uint64_t errorSerial() const { return errorSerial_; }
+  void fail(std::string message);
+  // collects a scene's new error, if any (call once per frame)
+  void collectErrors();
+
+private:
+  void remember(const std::string& path);
+  bool fitPending_ = true;
+  std::string error_;
+  std::uint64_t errorSerial_ = 0;
+  std::uint64_t seen2d_ = 0;
+};
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,183 @@
+// convexloc-viewer — command-line parsing.
+#include "logic/options.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace convexloc::viewer {
+namespace {
+
+// a whole number in [lo, hi]
+template <class T>
+bool parseInt(std::string_view s, T lo, T hi, T& out) {
+  T v{};
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || v < lo || v > hi) return false;
+  out = v;
+  return true;
+}
+
+// a finite double
+bool parseDouble(std::string_view s, double& out) {
+  double v = 0.0;
+  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return false;
+  out = v;
+  return true;
+}
+
+// "X,Y"
+bool parsePoint(std::string_view s, Vec2& out) {
+  const std::size_t comma = s.find(',');
+  if (comma == std::string_view::npos) return false;
+  return parseDouble(s.substr(0, comma), out.x) && parseDouble(s.substr(comma + 1), out.y);
+}
+
+// a count written plainly or as 1e6
+bool parseCount(std::string_view s, std::size_t& out) {
+  if (parseInt<std::size_t>(s, 0, std::size_t{1} << 26, out)) return true;
+  double d = 0.0;
+  if (!parseDouble(s, d) || d < 0.0 || d > static_cast<double>(std::size_t{1} << 26) || d != std::floor(d))
+    return false;
+  out = static_cast<std::size_t>(d);
+  return true;
+}
+
+}  // namespace
+
+ParsedOptions parseOptions(std::span<const std::string_view> args) {
+  ParsedOptions r;
+  Options& o = r.options;
+  auto fail = [&](std::string msg) {
+    r.error = std::move(msg);
+    return r;
+  };
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string_view a = args[i];
+    // the value of an option that takes one
+    auto value = [&](std::string_view& v) {
+      if (i + 1 >= args.size()) return false;
+      v = args[++i];
+      return true;
+    };
+    std::string_view v;
+    if (a == "-h" || a == "--help") o.help = true;
+    else if (a == "--version") o.version = true;
+    else if (a == "--near-boundary") o.nearBoundary = true;
+    else if (a == "--hide-ui") o.hideUi = true;
+    else if (a == "--no-xvfb") o.noXvfb = true;
+    else if (a == "--method") {
+      if (!value(v)) return fail("--method needs a method name");
+      o.method = std::string(v);
+    } else if (a == "--resolution") {
+      std::uint32_t x = 0;
+      if (!value(v) || !parseInt<std::uint32_t>(v, 0, 1u << 26, x))
+        return fail("--resolution needs a whole number from 0 (automatic) to 2^26");
+      o.resolution = x;
+    } else if (a == "--preset") {
+      if (!value(v)) return fail("--preset needs a name");
+      o.preset = std::string(v);
+    } else if (a == "--generate") {
+      if (!value(v)) return fail("--generate needs a kind (regular, random, ellipse, ...)");
+      o.generate = std::string(v);
+    } else if (a == "--n") {
+      std::size_t x = 0;
+      if (!value(v) || !parseCount(v, x) || x < 3) return fail("--n needs a whole number >= 3");
+      o.n = x;
+    } else if (a == "--seed") {
+      std::uint64_t x = 0;
+      if (!value(v) || !parseInt<std::uint64_t>(v, 0, ~std::uint64_t{0}, x))
+        return fail("--seed needs a whole number");
+      o.seed = x;
+    } else if (a == "--spray") {
+      std::size_t x = 0;
+      if (!value(v) || !parseCount(v, x) || x > 10000000)
+        return fail("--spray needs a count from 0 to 10^7 (1000, 1e6, ...)");
+      o.spray = x;
+    } else if (a == "--show") {
+      if (!value(v) || (v != "all" && v != "inside" && v != "outside" && v != "boundary"))
+        return fail("--show needs all, inside, outside or boundary");
+      o.show = std::string(v);
+    } else if (a == "--probe" || a == "--hover") {
+      Vec2 p;
+      if (!value(v) || !parsePoint(v, p)) return fail(std::string(a) + " needs X,Y");
+      (a == "--probe" ? o.probe : o.hover) = p;
+    } else if (a == "--theme") {
+      if (!value(v) || (v != "dark" && v != "light")) return fail("--theme needs dark or light");
+      o.theme = v == "dark" ? Theme::Dark : Theme::Light;
+    } else if (a == "--font-scale") {
+      double x = 0.0;
+      if (!value(v) || !parseDouble(v, x) || x < 0.5 || x > 4.0)
+        return fail("--font-scale needs a number from 0.5 to 4");
+      o.fontScale = static_cast<float>(x);
+    } else if (a == "--screenshot") {
+      if (!value(v) || v.empty()) return fail("--screenshot needs a file name");
+      o.screenshot = std::string(v);
+    } else if (a == "--frames") {
+      if (!value(v) || !parseInt<int>(v, 1, 100000, o.frames))
+        return fail("--frames needs a whole number from 1 to 100000");
+      o.framesGiven = true;
+    } else if (a == "--size") {
+      const std::size_t x = value(v) ? v.find('x') : std::string_view::npos;
+      if (x == std::string_view::npos || !parseInt<int>(v.substr(0, x), 64, 16384, o.width) ||
+          !parseInt<int>(v.substr(x + 1), 64, 16384, o.height))
+        return fail("--size needs WIDTHxHEIGHT, e.g. 1024x768");
+    } else if (a == "--samples") {
+      if (!value(v) || !parseInt<int>(v, 0, 16, o.samples))
+        return fail("--samples needs a whole number from 0 (no anti-aliasing) to 16");
+    } else if (a == "--shaders") {
+      if (!value(v)) return fail("--shaders needs a directory");
+      o.shaderDir = std::string(v);
+    } else if (!a.empty() && a[0] == '-' && a != "-") {
+      return fail("unknown option " + std::string(a) + " (see --help)");
+    } else if (o.shape.empty()) {
+      o.shape = std::string(a);
+    } else {
+      return fail("more than one shape given: " + o.shape + " and " + std::string(a));
+    }
+  }
+  if (!o.shape.empty() && (o.preset || o.generate))
+    return fail("give a shape file, --preset or --generate, not several");
+  if (o.preset && o.generate) return fail("give --preset or --generate, not both");
+  return r;
+}
+
+std::string usageText() {
+  return R"(convexloc-viewer: see how point location in a convex polygon or polyhedron works
+
+Usage: convexloc-viewer [SHAPE] [options]
+
+  SHAPE                 a polygon (.txt, one vertex 'x y' per line) or a polyhedron (.off, .obj);
+                        without one, a random polygon with the paper's polar slabs
+Scene:
+  --method M            halfplane | wedge | slab | uniform | polar (2D);
+                        halfspace | walk | cubemap (3D)
+  --resolution R        uniform slabs, polar slabs per octant, cube grid size (0: automatic)
+  --preset NAME         degenerate gallery: sliver, tiny-edges, large-offset,
+                        collinear-duplicate, thin-slab, tiny-faces, coplanar-faces
+  --generate KIND       a generated shape (regular, random, ellipse, sliver, ...) with
+  --n N --seed S        its size and seed
+  --spray N             spray N points (0 .. 10^7; 1e6 works) classified by the locator
+  --near-boundary       spray core's hard cases on and next to the boundary instead
+  --show WHICH          all | inside | outside | boundary points
+  --probe X,Y           place a point there and show its trace
+  --hover X,Y           hover there (shows the cell under it)
+View:
+  --theme dark|light    colours (default dark)
+  --font-scale F        text size, 0.5 .. 4 (default 1)
+  --hide-ui             only the scene and its legend
+  --size WxH            window size in pixels (default 1440x900)
+  --shaders DIR         load the GLSL shaders from DIR
+  --samples N           multisampling for anti-aliasing (default 4; 0 is fastest)
+Without hands:
+  --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
+  --frames N            render N frames, print the mean frame time and exit
+  --no-xvfb             without a display, fail instead of re-running under xvfb-run
+
+Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
+place a point, drag a vertex handle to edit the polygon. Keys: F fit, H hide panels,
+1..5 method, Space new spray, Esc clear the point, F12 screenshot.
+)";
+}
+
+}  // namespace convexloc::viewer

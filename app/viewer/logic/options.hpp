@@ -1,0 +1,55 @@
+// convexloc-viewer — the command line: what to open and how, so that a scene can be set
+// up and rendered to a PNG without hands (figures for slides, smoke tests).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "convexloc/geometry.hpp"
+#include "logic/colour.hpp"
+
+namespace convexloc::viewer {
+
+struct Options {
+  std::string shape;                      // a .txt polygon or an .off/.obj polyhedron
+  std::optional<std::string> method;      // halfplane..polar (2D), halfspace|walk|cubemap (3D)
+  std::optional<std::uint32_t> resolution;
+  std::optional<std::string> preset;      // a degenerate-gallery name
+  std::optional<std::string> generate;    // a core generator kind
+  std::optional<std::size_t> n;           // its size
+  std::optional<std::uint64_t> seed;      // its seed, and the spray's
+  std::optional<std::size_t> spray;       // how many points to spray
+  bool nearBoundary = false;              // spray core's hard cases near the boundary
+  std::optional<std::string> show;        // all | inside | outside | boundary
+  std::optional<Vec2> probe;              // place a point there (2D world coordinates)
+  std::optional<Vec2> hover;              // hover there (2D world coordinates)
+  Theme theme = Theme::Dark;
+  float fontScale = 1.0f;
+  bool hideUi = false;
+  std::string screenshot;                 // render, write this PNG and exit
+  int frames = 3;                         // frames rendered before the screenshot or exit
+  bool framesGiven = false;               // --frames without --screenshot: time and exit
+  int width = 1440, height = 900;         // window size
+  std::string shaderDir;                  // overrides the built-in shader directory
+  int samples = 4;                        // MSAA samples (0: no multisampling)
+  bool noXvfb = false;                    // do not re-run under xvfb-run without a display
+  bool help = false, version = false;
+};
+
+// the result of parsing: options, or the reason they are wrong
+struct ParsedOptions {
+  Options options;
+  std::string error;  // empty when fine
+};
+
+// parses argv[1..] (without the program name)
+ParsedOptions parseOptions(std::span<const std::string_view> args);
+
+// the --help text
+std::string usageText();
+
+}  // namespace convexloc::viewer

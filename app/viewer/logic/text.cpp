@@ -1,0 +1,123 @@
+// convexloc-viewer — the inspector's words.
+#include "logic/text.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+namespace convexloc::viewer {
+namespace {
+
+TraceLine::Kind signKind(int s) {
+  return s > 0 ? TraceLine::Positive : (s < 0 ? TraceLine::Negative : TraceLine::Zero);
+}
+
+// "+1", "0", "-1"
+std::string signWord(int s) { return s > 0 ? "+1" : (s < 0 ? "-1" : "0"); }
+
+std::string edgeLine(const EdgeTest& e) {
+  std::string side = e.sign > 0 ? "inner side" : (e.sign < 0 ? "outer side" : "on its line");
+  return "edge " + std::to_string(e.edge) + ": orient2d = " + signWord(e.sign) + "  (" + side + ")";
+}
+
+std::string rayLine(const RayTest& r, const char* apex) {
+  std::string side = r.sign > 0 ? "counter-clockwise of it" : (r.sign < 0 ? "clockwise of it" : "on it");
+  return std::string("ray ") + apex + " -> vertex " + std::to_string(r.vertex) + ": " +
+         signWord(r.sign) + "  (" + side + ")";
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  return out;
+}
+
+}  // namespace
+
+std::string exact(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string exact(Vec2 p) {
+  std::string out = "(";
+  out += exact(p.x);
+  out += ", ";
+  out += exact(p.y);
+  out += ')';
+  return out;
+}
+
+std::string approx(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string numbered(std::string_view prefix, std::uint64_t n) {
+  std::string out(prefix);
+  out.append(std::to_string(n));
+  return out;
+}
+
+std::string signText(int sign) { return sign > 0 ? " +" : (sign < 0 ? " -" : " 0"); }
+
+std::string grouped(std::size_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ' ';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string bytesText(std::size_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (bytes < 1024) return std::to_string(bytes) + " B";
+  if (bytes < 1024 * 1024) return approx(b / 1024.0, 3) + " kB";
+  return approx(b / (1024.0 * 1024.0), 3) + " MB";
+}
+
+std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolygon& polygon,
+                                     std::uint32_t q) {
+  std::vector<TraceLine> out;
+  auto add = [&](TraceLine::Kind k, std::string s) { out.push_back({k, std::move(s)}); };
+  add(TraceLine::Heading, std::string(toString(t.method)) + ": point " + exact(p));
+  switch (t.method) {
+    case Method2D::Halfplane:
+      add(TraceLine::Step, "every edge's line, in order, until an outer side:");
+      break;
+    case Method2D::Wedge:
+      add(TraceLine::Step, "fan from x0 = vertex 0 " + exact(polygon.vertex(0)) + ":");
+      break;
+    case Method2D::Slab:
+    case Method2D::Uniform:
+      if (t.outsideBox) add(TraceLine::Step, "outside the bounding box: no slab is needed");
+      else if (t.cell >= 0)
+        add(TraceLine::Step, std::string(t.method == Method2D::Slab ? "binary search of y" : "slab index from y (eq. 4)") +
+                                 ": slab " + std::to_string(t.cell));
+      break;
+    case Method2D::Polar:
+      if (t.atCentre) add(TraceLine::Step, "the point is the centre x_T itself");
+      else if (t.octant >= 0) {
+        add(TraceLine::Step, "centre x_T = " + exact(t.apex));
+        add(TraceLine::Step, "octant " + std::to_string(t.octant) +
+                                 " (signs of dx, dy and |dx| vs |dy|)");
+        if (q > 0)
+          add(TraceLine::Step, "polar slab " + std::to_string(t.cell % q) + " of " + std::to_string(q) +
+                                   " in the octant: cell " + std::to_string(t.cell));
+      } else {
+        add(TraceLine::Step, "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
+      }
+      break;
+  }
+  if (t.crowded) add(TraceLine::Step, "the cell lists many edges: bisection over them");
+  const char* apex = t.method == Method2D::Polar ? "x_T" : "x0";
+  for (const RayTest& r : t.rays) add(signKind(r.sign), rayLine(r, apex));
+  for (const EdgeTest& e : t.edges) add(signKind(e.sign), edgeLine(e));
+  add(TraceLine::Result, "result: " + upper(toString(t.result)) + "  (" +
+                             std::to_string(t.rays.size() + t.edges.size()) + " predicates)");
+  return out;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,43 @@
+// convexloc-viewer — words for the inspector: numbers that read back to the same double,
+// and a trace told step by step.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "convexloc/locate2d.hpp"
+#include "convexloc/polygon.hpp"
+
+namespace convexloc::viewer {
+
+// the shortest decimal that reads back to exactly `v`
+std::string exact(double v);
+// "(x, y)" with exact()
+std::string exact(Vec2 p);
+// `v` with `digits` significant digits, for statistics
+std::string approx(double v, int digits = 4);
+// `prefix` followed by `n` ("e7", "octant 3")
+std::string numbered(std::string_view prefix, std::uint64_t n);
+// " +", " 0" or " -" (the sign of a predicate, for labels)
+std::string signText(int sign);
+// "1 234 567": thousands apart, for counts
+std::string grouped(std::size_t n);
+// "12.3 kB", "4.0 MB"
+std::string bytesText(std::size_t bytes);
+
+// one line of the inspector
+struct TraceLine {
+  enum Kind { Heading, Step, Positive, Zero, Negative, Result } kind = Step;
+  std::string text;
+};
+
+// The trace of one query, told for a student: where the point went (box, octant, cell,
+// wedge), each predicate evaluated with its sign, and the result. `q` is the polar slabs
+// per octant (0 for other methods).
+std::vector<TraceLine> describeTrace(const Trace2D& trace, Vec2 point, const ConvexPolygon& polygon,
+                                     std::uint32_t q);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,112 @@
+// convexloc-viewer — the panels' theme and font.
+#include "ui/style.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+
+namespace convexloc::viewer {
+namespace {
+
+ImVec4 im(Rgba c) { return {c.r, c.g, c.b, c.a}; }
+
+// places a font may be installed (Debian's fonts-dejavu-core first)
+constexpr const char* kFontFiles[] = {
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+    "/usr/share/fonts/TTF/DejaVuSans.ttf",
+    "/usr/share/fonts/dejavu/DejaVuSans.ttf",
+};
+
+}  // namespace
+
+void applyStyle(Theme theme, float scale) {
+  ImGuiStyle style;
+  if (theme == Theme::Dark) ImGui::StyleColorsDark(&style);
+  else ImGui::StyleColorsLight(&style);
+  style.WindowRounding = 6.0f;
+  style.FrameRounding = 4.0f;
+  style.GrabRounding = 4.0f;
+  style.PopupRounding = 4.0f;
+  style.ScrollbarRounding = 6.0f;
+  style.TabRounding = 4.0f;
+  style.WindowBorderSize = 0.0f;
+  style.FrameBorderSize = theme == Theme::Light ? 1.0f : 0.0f;
+  style.WindowPadding = ImVec2(12.0f, 10.0f);
+  style.FramePadding = ImVec2(7.0f, 4.0f);
+  style.ItemSpacing = ImVec2(8.0f, 6.0f);
+  style.IndentSpacing = 14.0f;
+
+  const Palette& p = paletteFor(theme);
+  ImVec4* c = style.Colors;
+  const Rgba accent = theme == Theme::Dark ? hex(0x4f8fd6) : hex(0x2f6fb6);
+  if (theme == Theme::Dark) {
+    c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.115f, 0.135f, 0.94f);
+    c[ImGuiCol_ChildBg] = ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
+    c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.155f, 0.98f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.17f, 0.185f, 0.215f, 1.0f);
+    c[ImGuiCol_FrameBgHovered] = ImVec4(0.22f, 0.24f, 0.28f, 1.0f);
+    c[ImGuiCol_FrameBgActive] = ImVec4(0.26f, 0.29f, 0.34f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.17f, 0.19f, 0.23f, 1.0f);
+    c[ImGuiCol_HeaderHovered] = ImVec4(0.22f, 0.25f, 0.30f, 1.0f);
+    c[ImGuiCol_HeaderActive] = ImVec4(0.26f, 0.30f, 0.36f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.20f, 0.23f, 0.28f, 1.0f);
+    c[ImGuiCol_ButtonHovered] = im(withAlpha(accent, 0.75f));
+    c[ImGuiCol_ButtonActive] = im(accent);
+    c[ImGuiCol_Separator] = ImVec4(0.25f, 0.27f, 0.31f, 1.0f);
+    c[ImGuiCol_TitleBg] = c[ImGuiCol_WindowBg];
+    c[ImGuiCol_TitleBgActive] = c[ImGuiCol_WindowBg];
+  } else {
+    c[ImGuiCol_WindowBg] = ImVec4(0.965f, 0.965f, 0.96f, 0.96f);
+    c[ImGuiCol_FrameBg] = ImVec4(1.0f, 1.0f, 1.0f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.88f, 0.89f, 0.91f, 1.0f);
+    c[ImGuiCol_HeaderHovered] = ImVec4(0.83f, 0.86f, 0.90f, 1.0f);
+    c[ImGuiCol_HeaderActive] = ImVec4(0.78f, 0.83f, 0.89f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.88f, 0.90f, 0.93f, 1.0f);
+    c[ImGuiCol_ButtonHovered] = im(withAlpha(accent, 0.35f));
+    c[ImGuiCol_ButtonActive] = im(withAlpha(accent, 0.55f));
+  }
+  c[ImGuiCol_Text] = im(p.text);
+  c[ImGuiCol_TextDisabled] = im(p.textMuted);
+  c[ImGuiCol_CheckMark] = im(accent);
+  c[ImGuiCol_SliderGrab] = im(accent);
+  c[ImGuiCol_SliderGrabActive] = im(accent);
+  c[ImGuiCol_PlotHistogram] = im(p.extraEdges);
+  c[ImGuiCol_PlotHistogramHovered] = im(p.crowded);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+}
+
+void loadFont(float pixels, bool recreateTexture) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  bool loaded = false;
+  for (const char* path : kFontFiles) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) continue;
+    ImFontConfig cfg;
+    cfg.OversampleH = 2;
+    cfg.OversampleV = 2;
+    // Latin-1, punctuation, super- and subscripts, arrows, mathematical operators
+    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2000, 0x209F, 0x2190, 0x21FF,
+                                     0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+    if (io.Fonts->AddFontFromFileTTF(path, std::round(pixels), &cfg, ranges)) {
+      loaded = true;
+      break;
+    }
+  }
+  if (!loaded) {
+    // ImGui's built-in font is 13 pixels; scale it
+    ImFontConfig cfg;
+    cfg.SizePixels = std::round(pixels * 0.85f);
+    io.Fonts->AddFontDefault(&cfg);
+  }
+  io.Fonts->Build();
+  if (recreateTexture) {
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
+  }
+}
+
+}  // namespace convexloc::viewer
