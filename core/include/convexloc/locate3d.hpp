@@ -1,0 +1,221 @@
+// convexloc — point location in a convex polyhedron: halfspace, walk and the paper's cube map.
+//
+// Every locator answers exactly (see Location) and shares the 2D interface:
+//   locate(p)            one point
+//   locate(points, out)  a batch; allocates nothing per point
+//   trace(p)             the steps taken: cube face and cell, walk path, plane tests, result
+//   stats()              size and shape of the subdivision
+//   cells()              the subdivision as drawable geometry, with the faces each cell holds
+// "Face" below means a triangle of ConvexPolyhedron::triangles(). A locator keeps its own copy
+// of what it needs; the polyhedron may go away after the build. A point with an infinite or
+// NaN coordinate is reported Outside.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "convexloc/geometry.hpp"
+#include "convexloc/polyhedron.hpp"
+
+namespace convexloc {
+
+// === Common result types
+
+// the 3D methods
+enum class Method3D : std::uint8_t { Halfspace, Walk, Cubemap };
+
+// "halfspace", "walk", "cubemap"
+std::string_view toString(Method3D m);
+// the method with that name, if any
+std::optional<Method3D> parseMethod3D(std::string_view name);
+// every method, in order
+inline constexpr Method3D kAllMethods3D[] = {Method3D::Halfspace, Method3D::Walk, Method3D::Cubemap};
+
+// one plane test: sign of orient3d(a, b, c, p) for face (a, b, c); > 0 is the inner side
+struct FaceTest {
+  std::uint32_t face = 0;
+  int sign = 0;
+};
+
+// one walk test at `face`: sign of orient3d(centre, a, b, p) for its edge `edge` from corner
+// edge to corner edge + 1; > 0 means p's direction lies beyond that edge and the walk crosses
+struct WalkTest {
+  std::uint32_t face = 0;
+  std::uint8_t edge = 0;
+  int sign = 0;
+};
+
+// What one query did, step by step.
+struct Trace3D {
+  Method3D method = Method3D::Halfspace;
+  Location result = Location::Outside;
+  bool nonFinite = false;   // the point has an infinite or NaN coordinate
+  bool atCentre = false;    // the point is the centre itself
+  bool fallback = false;    // answered by testing every face (no centre, overflow, walk cap)
+  bool crowded = false;     // cubemap: the cell held many faces and was searched by a walk
+  std::optional<Vec3> centre;    // walk, cubemap: the centre strictly inside
+  int cubeFace = -1;             // cubemap: 0..5 for +x, -x, +y, -y, +z, -z
+  int level = -1;                // cubemap: quadtree level of the cell (0: the base grid)
+  std::uint32_t cellI = 0, cellJ = 0;  // cubemap: the cell's column (s) and row (t) at that level
+  double s = 0.0, t = 0.0;       // cubemap: the point's coordinates on the cube face, in [-1, 1]
+  std::vector<std::uint32_t> path;  // walk: the faces visited, in order
+  std::vector<WalkTest> steps;      // walk: every edge test
+  std::vector<FaceTest> faces;      // plane tests, in order
+};
+
+// Size and shape of a subdivision. Methods without cells report zero cells.
+struct Stats3D {
+  std::size_t faces = 0;
+  std::size_t vertices = 0;
+  std::size_t cells = 0;         // cubemap: leaf cells over all levels
+  std::size_t nodes = 0;         // cubemap: quadtree nodes, leaves and inner ones
+  std::size_t entries = 0;       // sum over cells of the faces listed
+  std::size_t maxPerCell = 0;
+  double meanPerCell = 0.0;
+  std::size_t crowdedCells = 0;  // cells searched by a walk rather than tested face by face
+  std::uint32_t resolution = 0;  // cubemap: G, the base grid is G x G on each cube face
+  int maxLevel = 0;              // cubemap: the deepest quadtree level
+  bool centred = false;          // a centre strictly inside exists (else every query tests all faces)
+  std::size_t bytes = 0;         // memory the locator holds, vertices included
+  double bytesPerFace = 0.0;
+  double buildSeconds = 0.0;
+  std::vector<std::size_t> histogram;  // histogram[k]: cells holding k faces; the last bucket
+                                       // counts every cell holding at least that many
+};
+
+// One cubemap cell, for drawing and teaching: a square on a cube face and the pyramid it
+// spans from the centre.
+struct Cell3D {
+  std::uint32_t index = 0;       // position in cells()
+  int cubeFace = 0;              // 0..5 for +x, -x, +y, -y, +z, -z
+  int level = 0;                 // quadtree level (0: the base grid)
+  std::uint32_t i = 0, j = 0;    // column and row among the (G * 2^level)^2 cells of the face
+  double s0 = 0, s1 = 0, t0 = 0, t1 = 0;  // the square in cube-face coordinates
+  Vec3 apex{};                   // the centre, apex of the cell's pyramid
+  std::array<Vec3, 4> corners{};  // the square's corners on the drawing cube around the centre,
+                                  // (s0,t0), (s1,t0), (s1,t1), (s0,t1)
+  std::vector<std::uint32_t> faces;  // faces listed in the cell
+};
+
+// faces per cell above which a cubemap cell is searched by a walk
+inline constexpr std::size_t kCrowdedCell3D = 8;
+
+// === halfspace, O(F): inside iff on the inner side of every face plane (eq. 2)
+
+class HalfspaceLocator {
+public:
+  explicit HalfspaceLocator(const ConvexPolyhedron& polyhedron);
+  Location locate(Vec3 p) const noexcept;
+  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  Trace3D trace(Vec3 p) const;
+  Stats3D stats() const;
+  std::vector<Cell3D> cells() const { return {}; }
+
+private:
+  std::vector<Vec3> v_;
+  std::vector<ConvexPolyhedron::Triangle> tri_;
+  double buildSeconds_ = 0.0;
+};
+
+// === walk, O(sqrt F) expected: across face adjacency toward the face the ray from the
+// centre through the point leaves by (ref. [11]), then one plane test
+
+class WalkLocator {
+public:
+  explicit WalkLocator(const ConvexPolyhedron& polyhedron);
+  Location locate(Vec3 p) const noexcept;
+  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  Trace3D trace(Vec3 p) const;
+  Stats3D stats() const;
+  std::vector<Cell3D> cells() const { return {}; }
+  // the centre, when the polyhedron has one (else every query tests all faces)
+  std::optional<Vec3> centre() const noexcept { return centre_; }
+
+private:
+  template <class Sink>
+  Location run(Vec3 p, Sink& sink) const noexcept;
+  std::vector<Vec3> v_;
+  std::vector<ConvexPolyhedron::Triangle> tri_;
+  std::vector<ConvexPolyhedron::Triangle> nb_;
+  std::vector<std::uint32_t> starts_;         // faces a walk may start from
+  std::vector<std::array<float, 3>> startDir_;  // their directions from the centre, unit length
+  std::optional<Vec3> centre_;
+  std::uint32_t cap_ = 0;
+  double buildSeconds_ = 0.0;
+};
+
+// === cubemap, O(1): the paper's "spherical" subdivision
+
+// A centre c strictly inside; the direction d = p - c picks a cube face by its dominant axis
+// and a point (s, t) = (d_u, d_v) / |d_major| in [-1, 1]^2 on it; a G x G grid per cube face,
+// refined as a quadtree where cells are crowded, lists in each cell every face whose central
+// projection meets it (built conservatively with the query's own index function); the query
+// tests p against those faces' planes. Memory stays within 128 bytes per face plus a constant.
+class CubemapLocator {
+public:
+  // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
+  // the memory budget is coarsened: stats().resolution tells the G used.
+  explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
+  Location locate(Vec3 p) const noexcept;
+  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  Trace3D trace(Vec3 p) const;
+  Stats3D stats() const;
+  // every leaf cell, cube face by cube face
+  std::vector<Cell3D> cells() const;
+  // the centre, when the polyhedron has one (else there are no cells and every query tests
+  // all faces)
+  std::optional<Vec3> centre() const noexcept;
+  // G, the base grid's cells per side on each cube face
+  std::uint32_t resolution() const noexcept { return g_; }
+  // half the side of the cube, centred on the centre, that cells() draws on (it encloses
+  // the polyhedron)
+  double cubeHalfSize() const noexcept { return half_; }
+
+private:
+  struct Node {
+    std::uint32_t first = 0;  // leaf: first entry; inner node: first of its 4 children
+    std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
+  };
+  template <class Sink>
+  Location run(Vec3 p, Sink& sink) const noexcept;
+  std::vector<Vec3> v_;
+  std::vector<ConvexPolyhedron::Triangle> tri_;
+  std::vector<ConvexPolyhedron::Triangle> nb_;
+  std::vector<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
+  std::vector<std::uint32_t> entries_;  // each leaf's faces
+  Vec3 c_{};
+  bool centred_ = false;
+  std::uint32_t g_ = 1;
+  int depth_ = 0;          // the deepest level a cell may have
+  double scale_ = 0.0;     // G * 2^(depth - 1): (s + 1) * scale_ is the index at the deepest level
+  double half_ = 1.0;
+  double buildSeconds_ = 0.0;
+};
+
+// === Any of the three, chosen at run time
+
+class Locator3D {
+public:
+  // builds `method`; `resolution` is the cubemap's G (0 chooses), ignored by the others
+  Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution = 0);
+  Method3D method() const noexcept { return static_cast<Method3D>(impl_.index()); }
+  Location locate(Vec3 p) const noexcept;
+  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  Trace3D trace(Vec3 p) const;
+  Stats3D stats() const;
+  std::vector<Cell3D> cells() const;
+  // the underlying locator, for method-specific introspection
+  template <class T>
+  const T* get() const noexcept { return std::get_if<T>(&impl_); }
+
+private:
+  std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> impl_;
+};
+
+}  // namespace convexloc

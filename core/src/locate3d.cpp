@@ -1,0 +1,871 @@
+// convexloc — the three 3D locators.
+#include "convexloc/locate3d.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "convexloc/error.hpp"
+#include "convexloc/predicates.hpp"
+
+namespace convexloc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Triangle = ConvexPolyhedron::Triangle;
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// === Trace sinks: the query code is written once and either records or not
+
+// records nothing; compiles away in locate()
+struct NoSink {
+  void face(std::uint32_t, int) {}
+  void visit(std::uint32_t) {}
+  void step(std::uint32_t, std::uint8_t, int) {}
+  void cell(int, int, std::uint64_t, std::uint64_t, double, double) {}
+  void crowded() {}
+  void fallback() {}
+  void nonFinite() {}
+  void atCentre() {}
+};
+
+// records every step into a Trace3D
+struct TraceSink {
+  Trace3D& t;
+  void face(std::uint32_t f, int s) { t.faces.push_back({f, s}); }
+  void visit(std::uint32_t f) { t.path.push_back(f); }
+  void step(std::uint32_t f, std::uint8_t e, int s) { t.steps.push_back({f, e, s}); }
+  void cell(int cubeFace, int level, std::uint64_t i, std::uint64_t j, double s, double tt) {
+    t.cubeFace = cubeFace;
+    t.level = level;
+    t.cellI = static_cast<std::uint32_t>(i);
+    t.cellJ = static_cast<std::uint32_t>(j);
+    t.s = s;
+    t.t = tt;
+  }
+  void crowded() { t.crowded = true; }
+  void fallback() { t.fallback = true; }
+  void nonFinite() { t.nonFinite = true; }
+  void atCentre() { t.atCentre = true; }
+};
+
+// all three coordinates are finite
+inline bool finite(Vec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// orient3d of p against face t: > 0 on the inner side
+inline int planeSign(const std::vector<Vec3>& v, const Triangle& t, Vec3 p) {
+  return orient3d(v[t[0]], v[t[1]], v[t[2]], p);
+}
+
+// the class of p from the plane of a face its ray from the centre leaves through
+inline Location fromExit(int s) {
+  return s > 0 ? Location::Inside : (s == 0 ? Location::Boundary : Location::Outside);
+}
+
+// tests p against every face, stopping at the first outer side (eq. 2)
+template <class Sink>
+Location testAll(const std::vector<Vec3>& v, const std::vector<Triangle>& tri, Vec3 p, Sink& sink) {
+  bool zero = false;
+  const std::uint32_t n = static_cast<std::uint32_t>(tri.size());
+  for (std::uint32_t f = 0; f < n; ++f) {
+    int s = planeSign(v, tri[f], p);
+    sink.face(f, s);
+    if (s < 0) return Location::Outside;
+    zero |= s == 0;
+  }
+  return zero ? Location::Boundary : Location::Inside;
+}
+
+// Tests p against the listed faces, which include a face its ray from the centre leaves
+// through: any outer side is Outside, else any plane through p is Boundary, else Inside.
+template <class Sink>
+Location testList(const std::vector<Vec3>& v, const std::vector<Triangle>& tri,
+                  const std::uint32_t* first, const std::uint32_t* last, Vec3 p, Sink& sink) {
+  bool zero = false;
+  for (const std::uint32_t* it = first; it != last; ++it) {
+    int s = planeSign(v, tri[*it], p);
+    sink.face(*it, s);
+    if (s < 0) return Location::Outside;
+    zero |= s == 0;
+  }
+  return zero ? Location::Boundary : Location::Inside;
+}
+
+// Remembering stochastic walk over face adjacency toward the face whose cone from the
+// centre c holds the direction p - c. At a face, the edges are tried from a random one (the
+// edge just crossed is skipped); orient3d(c, a, b, p) > 0 means the direction lies beyond
+// edge (a, b), and the walk crosses it. A face where no edge says so holds the direction in
+// its closed cone: the ray from c through p leaves the polyhedron through it. Returns that
+// face, or kNone after `cap` faces. Deterministic: the random source restarts per query.
+template <class Sink>
+std::uint32_t walkToExit(const std::vector<Vec3>& v, const std::vector<Triangle>& tri,
+                         const std::vector<Triangle>& nb, Vec3 c, Vec3 p, std::uint32_t start,
+                         std::uint32_t cap, Sink& sink) {
+  std::uint32_t face = start, from = kNone;
+  std::uint32_t rng = 0x9e3779b9u;
+  for (std::uint32_t visited = 0; visited < cap; ++visited) {
+    sink.visit(face);
+    rng ^= rng << 13;
+    rng ^= rng >> 17;
+    rng ^= rng << 5;
+    const std::uint32_t r = rng % 3;
+    std::uint32_t next = kNone;
+    for (std::uint32_t j = 0; j < 3 && next == kNone; ++j) {
+      const std::uint32_t k = (r + j) % 3;
+      if (nb[face][k] == from) continue;
+      const Triangle& t = tri[face];
+      int s = orient3d(c, v[t[k]], v[t[(k + 1) % 3]], p);
+      sink.step(face, static_cast<std::uint8_t>(k), s);
+      if (s > 0) next = nb[face][k];
+    }
+    if (next == kNone) return face;
+    from = face;
+    face = next;
+  }
+  return kNone;
+}
+
+// rough bytes held by a vector
+template <class T>
+std::size_t bytesOf(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+
+// statistics shared by every method
+Stats3D baseStats(std::size_t faces, std::size_t vertices, std::size_t bytes, double buildSeconds) {
+  Stats3D s;
+  s.faces = faces;
+  s.vertices = vertices;
+  s.bytes = bytes;
+  s.bytesPerFace = faces ? static_cast<double>(bytes) / static_cast<double>(faces) : 0.0;
+  s.buildSeconds = buildSeconds;
+  return s;
+}
+
+template <class Locator>
+void locateAll(const Locator& loc, std::span<const Vec3> points, std::span<Location> out) {
+  const std::size_t n = std::min(points.size(), out.size());
+  for (std::size_t i = 0; i < n; ++i) out[i] = loc.locate(points[i]);
+}
+
+}  // namespace
+
+// === Method names
+
+std::string_view toString(Method3D m) {
+  switch (m) {
+    case Method3D::Halfspace: return "halfspace";
+    case Method3D::Walk: return "walk";
+    case Method3D::Cubemap: return "cubemap";
+  }
+  return "?";
+}
+
+std::optional<Method3D> parseMethod3D(std::string_view name) {
+  for (Method3D m : kAllMethods3D)
+    if (toString(m) == name) return m;
+  return std::nullopt;
+}
+
+// === halfspace
+
+HalfspaceLocator::HalfspaceLocator(const ConvexPolyhedron& polyhedron) {
+  auto t0 = Clock::now();
+  v_.assign(polyhedron.vertices().begin(), polyhedron.vertices().end());
+  tri_.assign(polyhedron.triangles().begin(), polyhedron.triangles().end());
+  buildSeconds_ = secondsSince(t0);
+}
+
+Location HalfspaceLocator::locate(Vec3 p) const noexcept {
+  NoSink sink;
+  if (!finite(p)) return Location::Outside;
+  return testAll(v_, tri_, p, sink);
+}
+
+void HalfspaceLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace3D HalfspaceLocator::trace(Vec3 p) const {
+  Trace3D t;
+  t.method = Method3D::Halfspace;
+  TraceSink sink{t};
+  if (!finite(p)) {
+    sink.nonFinite();
+    t.result = Location::Outside;
+    return t;
+  }
+  t.result = testAll(v_, tri_, p, sink);
+  return t;
+}
+
+Stats3D HalfspaceLocator::stats() const {
+  return baseStats(tri_.size(), v_.size(), sizeof(*this) + bytesOf(v_) + bytesOf(tri_), buildSeconds_);
+}
+
+// === walk
+
+WalkLocator::WalkLocator(const ConvexPolyhedron& polyhedron) {
+  auto t0 = Clock::now();
+  v_.assign(polyhedron.vertices().begin(), polyhedron.vertices().end());
+  tri_.assign(polyhedron.triangles().begin(), polyhedron.triangles().end());
+  nb_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
+  centre_ = polyhedron.centre();
+  const std::size_t n = tri_.size();
+  cap_ = static_cast<std::uint32_t>(std::min<double>(64 + 8 * std::sqrt(static_cast<double>(n)), 1e9));
+  if (centre_) {
+    // jump and walk: about F^(1/3) start faces spread over the list; a query starts from the
+    // one whose direction from the centre is closest to its own
+    const std::size_t k = std::clamp<std::size_t>(static_cast<std::size_t>(std::cbrt(static_cast<double>(n))), 1, 1024);
+    const Vec3 c = *centre_;
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::uint32_t f = static_cast<std::uint32_t>(i * n / k);
+      const Triangle& t = tri_[f];
+      double d[3] = {0, 0, 0};
+      for (std::uint32_t w : t) {
+        d[0] += (v_[w].x - c.x) / 3;
+        d[1] += (v_[w].y - c.y) / 3;
+        d[2] += (v_[w].z - c.z) / 3;
+      }
+      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      if (!(len > 0) || !std::isfinite(len)) continue;
+      starts_.push_back(f);
+      startDir_.push_back({static_cast<float>(d[0] / len), static_cast<float>(d[1] / len),
+                           static_cast<float>(d[2] / len)});
+    }
+    if (starts_.empty()) starts_.push_back(0), startDir_.push_back({1, 0, 0});
+  }
+  buildSeconds_ = secondsSince(t0);
+}
+
+template <class Sink>
+Location WalkLocator::run(Vec3 p, Sink& sink) const noexcept {
+  if (!finite(p)) {
+    sink.nonFinite();
+    return Location::Outside;
+  }
+  if (!centre_) {
+    sink.fallback();
+    return testAll(v_, tri_, p, sink);
+  }
+  const Vec3 c = *centre_;
+  const double dx = p.x - c.x, dy = p.y - c.y, dz = p.z - c.z;
+  std::uint32_t start = starts_[0];
+  if (std::isfinite(dx) && std::isfinite(dy) && std::isfinite(dz)) {
+    // the start choice is a heuristic only; exactness comes from the walk's predicates
+    double best = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < starts_.size(); ++k) {
+      const double dot = dx * startDir_[k][0] + dy * startDir_[k][1] + dz * startDir_[k][2];
+      if (dot > best) {
+        best = dot;
+        start = starts_[k];
+      }
+    }
+  }
+  const std::uint32_t exit = walkToExit(v_, tri_, nb_, c, p, start, cap_, sink);
+  if (exit == kNone) {
+    sink.fallback();
+    return testAll(v_, tri_, p, sink);
+  }
+  const int s = planeSign(v_, tri_[exit], p);
+  sink.face(exit, s);
+  return fromExit(s);
+}
+
+Location WalkLocator::locate(Vec3 p) const noexcept {
+  NoSink sink;
+  return run(p, sink);
+}
+
+void WalkLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace3D WalkLocator::trace(Vec3 p) const {
+  Trace3D t;
+  t.method = Method3D::Walk;
+  t.centre = centre_;
+  TraceSink sink{t};
+  t.result = run(p, sink);
+  return t;
+}
+
+Stats3D WalkLocator::stats() const {
+  Stats3D s = baseStats(tri_.size(), v_.size(),
+                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) + bytesOf(starts_) +
+                            bytesOf(startDir_),
+                        buildSeconds_);
+  s.centred = centre_.has_value();
+  return s;
+}
+
+// === cubemap
+//
+// Coordinates. For d = p - c, the major axis a is the first of x, y, z with the largest
+// |d_a|; the cube face is 2a (d_a > 0) or 2a + 1 (d_a < 0); with (u, v) = (a + 1, a + 2)
+// mod 3, the face coordinates are s = d_u / |d_a| and t = d_v / |d_a|, in [-1, 1] exactly
+// (division is monotone). At level k a face has n_k = G 2^k cells per side; cell (i, j) is
+// s in [-1 + i / K_k, -1 + (i + 1) / K_k], t likewise, with K_k = n_k / 2, and the index
+// of a coordinate is floor((s + 1) K_k) clamped to n_k - 1. The query computes it once at
+// the deepest level D, as floor((s + 1) K_D) with K_D = K_k 2^(D - k); scaling by a power of
+// two is exact, so shifting right by D - k gives the index at level k, consistent across
+// levels. The computed (s, t) is within a few ulps of the exact direction's, even where the
+// computed major axis differs from the exact one (then the exact direction lies just past
+// the cube edge, at |s| <= 1 + a few ulps, still in the face's plane).
+//
+// Build. A face (a, b, c') seen from the centre spans the cone {w : n_i . w >= 0, i = 0..2}
+// with n_i = (v_i - c) x (v_(i+1) - v_i) (it is positively oriented from c). On cube face
+// (a, sigma), with w = (sigma, s, t), each n_i . w >= 0 is a half-plane in (s, t). Computed
+// in floating point, n_i has an error we bound (kNormalError times its permanent); relaxing
+// each half-plane by that bound, plus kSlack per unit of its (s, t) gradient, and clipping
+// the square [-1 - kReach, 1 + kReach]^2 by them gives a polygon P that contains a disc of
+// radius about kSlack around every exact point of the cone's section. A face is listed in
+// every cell whose square, grown by kReach = kMargin + kSlack, meets P (rasterised row by
+// row, P being convex up to rounding far below kSlack).
+//
+// Why the query is exact. Let p != c, and let T be a face through which the ray from c
+// through p leaves the polyhedron (one exists: c is strictly inside). The exact direction of
+// p - c lies in T's cone, at a point w* of the computed cube face's plane that is within a
+// few ulps of the computed (s, t), hence inside the computed cell's square grown by
+// kMargin. The disc of radius kSlack around w* then lies in P and in the square grown by
+// kReach, so T is listed in that cell. The ray meets T at the surface point y. If p is
+// strictly inside, it is strictly inside every face plane: all signs positive, Inside. If p
+// is on the surface, p = y lies in T's plane (sign 0) and on the inner side of every plane:
+// Boundary. If p is outside, p lies beyond y on the ray, and T's plane, which has c strictly
+// inside, separates them: T's sign is negative, Outside. A negative sign for any listed face
+// is Outside in any case. So "any negative: Outside; else any zero: Boundary; else Inside"
+// over the listed faces is exact. A crowded cell is searched by a walk from one of its
+// faces, which ends at such a face T; if the walk runs too long the cell's list is tested.
+
+namespace {
+
+constexpr double kEps = 0x1p-53;
+// how far, in (s, t) units, a query's computed coordinates may stray: far above their error
+constexpr double kMargin = 0x1p-40;
+// extra room that keeps rounding in the build's clipping from losing a face
+constexpr double kSlack = 0x1p-42;
+constexpr double kReach = kMargin + kSlack;
+// error of a computed edge-plane normal component, per unit of its permanent
+constexpr double kNormalError = 5.25 * kEps;
+// absolute slack for products that underflow in the scaled normals
+constexpr double kUnderflow = 0x1p-1060;
+// relative margin by which all three vertices must miss a cube face to skip it
+constexpr double kReject = 0x1p-30;
+// the inner-node mark in Node::count
+constexpr std::uint32_t kInner = 0xffffffffu;
+// the deepest quadtree level, and the most cells per side at any level (2^31)
+constexpr int kMaxLevel = 30;
+constexpr int kMaxSideBits = 31;
+// the largest G accepted
+constexpr std::uint32_t kMaxResolution = 8192;
+
+// a convex polygon in (s, t) with at most 4 + 3 vertices
+struct Poly {
+  Vec2 p[8];
+  int n = 0;
+};
+
+// a face's cone from the centre: edge-plane normals with their error bounds, and the vertex
+// directions (all scaled by a power of two)
+struct Cone {
+  double n[3][3];
+  double bound[3];
+  double d[3][3];
+};
+
+// the cone of face t seen from c, scaled by `scale`; false when something is not finite
+bool coneOf(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, double scale, Cone& k) {
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]];
+    k.d[i][0] = (p.x - c.x) * scale;
+    k.d[i][1] = (p.y - c.y) * scale;
+    k.d[i][2] = (p.z - c.z) * scale;
+  }
+  bool ok = true;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]], q = v[t[(i + 1) % 3]];
+    const double* d = k.d[i];
+    const double e[3] = {(q.x - p.x) * scale, (q.y - p.y) * scale, (q.z - p.z) * scale};
+    double perm = 0;
+    for (int a = 0; a < 3; ++a) {
+      const int u = (a + 1) % 3, w = (a + 2) % 3;
+      const double l = d[u] * e[w], r = d[w] * e[u];
+      k.n[i][a] = l - r;
+      perm += std::fabs(l) + std::fabs(r);
+      ok &= std::isfinite(k.n[i][a]);
+    }
+    k.bound[i] = kNormalError * perm + kUnderflow;
+    ok &= std::isfinite(perm);
+  }
+  return ok;
+}
+
+// keeps the part of P where a + b s + c t >= 0 (Sutherland-Hodgman)
+void clip(Poly& P, double a, double b, double c) {
+  Poly out;
+  for (int i = 0; i < P.n; ++i) {
+    const Vec2 p = P.p[i], q = P.p[(i + 1) % P.n];
+    const double fp = a + b * p.x + c * p.y, fq = a + b * q.x + c * q.y;
+    if (fp >= 0) out.p[out.n++] = p;
+    if ((fp >= 0) != (fq >= 0)) {
+      const double r = fp / (fp - fq);
+      out.p[out.n++] = {p.x + r * (q.x - p.x), p.y + r * (q.y - p.y)};
+    }
+  }
+  P = out;
+}
+
+// The polygon P of the face's cone on cube face `face` (see the notes above); false when
+// the cone surely misses the face's square.
+bool onCubeFace(const Cone& k, int face, Poly& P) {
+  const int a = face / 2, u = (a + 1) % 3, w = (a + 2) % 3;
+  const double sigma = (face & 1) ? -1.0 : 1.0;
+  // quick rejection: all three directions strictly on the outer side of one of the
+  // pyramid's bounding planes (or behind it), by a relative margin far above rounding
+  for (int rule = 0; rule < 5; ++rule) {
+    bool all = true;
+    for (int i = 0; i < 3 && all; ++i) {
+      const double* d = k.d[i];
+      const double da = sigma * d[a];
+      const double f = rule == 0 ? da : rule == 1 ? da + d[u] : rule == 2 ? da - d[u] : rule == 3 ? da + d[w] : da - d[w];
+      all = f < -kReject * (std::fabs(d[a]) + std::fabs(d[u]) + std::fabs(d[w]));
+    }
+    if (all) return false;
+  }
+  const double L = 1 + kReach;
+  P.n = 4;
+  P.p[0] = {-L, -L};
+  P.p[1] = {L, -L};
+  P.p[2] = {L, L};
+  P.p[3] = {-L, L};
+  for (int i = 0; i < 3; ++i) {
+    const double alpha = sigma * k.n[i][a], beta = k.n[i][u], gamma = k.n[i][w];
+    const double relax = k.bound[i] + kSlack * (std::fabs(beta) + std::fabs(gamma)) +
+                         4 * kEps * (std::fabs(alpha) + std::fabs(beta) + std::fabs(gamma));
+    clip(P, alpha + relax, beta, gamma);
+    if (P.n == 0) return false;
+  }
+  return true;
+}
+
+// Calls cell(i, j) for every cell at the level with K = (cells per side) / 2, within the
+// index window [i0, i1] x [j0, j1], whose square grown by kReach meets P.
+template <class F>
+void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1, std::int64_t j0,
+               std::int64_t j1, F&& cell) {
+  double tmin = P.p[0].y, tmax = P.p[0].y;
+  for (int k = 1; k < P.n; ++k) {
+    tmin = std::min(tmin, P.p[k].y);
+    tmax = std::max(tmax, P.p[k].y);
+  }
+  const std::int64_t jlo = std::max(j0, static_cast<std::int64_t>(std::ceil((tmin - kReach + 1) * K)) - 1);
+  const std::int64_t jhi = std::min(j1, static_cast<std::int64_t>(std::floor((tmax + kReach + 1) * K)));
+  for (std::int64_t j = jlo; j <= jhi; ++j) {
+    const double ta = -1 + static_cast<double>(j) / K - kReach;
+    const double tb = -1 + static_cast<double>(j + 1) / K + kReach;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int k = 0; k < P.n; ++k) {
+      const Vec2 p = P.p[k], q = P.p[(k + 1) % P.n];
+      if (p.y >= ta && p.y <= tb) {
+        lo = std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+      }
+      for (double y : {ta, tb})
+        if ((p.y < y) != (q.y < y)) {
+          const double x = p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+    }
+    if (lo > hi) continue;
+    const std::int64_t ilo = std::max(i0, static_cast<std::int64_t>(std::ceil((lo - kReach + 1) * K)) - 1);
+    const std::int64_t ihi = std::min(i1, static_cast<std::int64_t>(std::floor((hi + kReach + 1) * K)));
+    for (std::int64_t i = ilo; i <= ihi; ++i) cell(i, j);
+  }
+}
+
+// the direction (on the cube of half-size 1 around the centre) of point (s, t) of a face
+Vec3 cubeDirection(int face, double s, double t) {
+  const int a = face / 2;
+  double w[3];
+  w[a] = (face & 1) ? -1.0 : 1.0;
+  w[(a + 1) % 3] = s;
+  w[(a + 2) % 3] = t;
+  return {w[0], w[1], w[2]};
+}
+
+// the deepest level for base resolution g: at most 2^31 cells per side
+int depthFor(std::uint32_t g) {
+  const int bits = static_cast<int>(std::bit_width(g - 1));
+  return std::min(kMaxLevel, kMaxSideBits - bits);
+}
+
+}  // namespace
+
+CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution) {
+  auto t0 = Clock::now();
+  if (resolution > kMaxResolution)
+    throw UsageError("cubemap: the resolution is at most " + std::to_string(kMaxResolution));
+  v_.assign(polyhedron.vertices().begin(), polyhedron.vertices().end());
+  tri_.assign(polyhedron.triangles().begin(), polyhedron.triangles().end());
+  nb_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
+  const std::size_t nf = tri_.size();
+  g_ = resolution ? resolution
+                  : static_cast<std::uint32_t>(std::clamp<double>(
+                        std::round(std::sqrt(static_cast<double>(nf) / 8)), 1, kMaxResolution));
+  std::optional<Vec3> centre = polyhedron.centre();
+  double extent = 0;
+  if (centre) {
+    c_ = *centre;
+    for (const Vec3& p : v_)
+      extent = std::max({extent, std::fabs(p.x - c_.x), std::fabs(p.y - c_.y), std::fabs(p.z - c_.z)});
+  }
+  if (!centre || !std::isfinite(extent) || !(extent > 0)) {
+    // no centre (a polyhedron thinner than the double grid), or one so vast that its
+    // directions overflow: no cells; every query tests all faces
+    buildSeconds_ = secondsSince(t0);
+    return;
+  }
+  half_ = extent;
+  const double scale = std::ldexp(1.0, -std::ilogb(extent));  // extent * scale in [1, 2)
+
+  // the memory budget for the cells: 120 bytes per face in all, plus 32 KiB
+  const std::size_t fixed = sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_);
+  const std::size_t total = 120 * nf + 32768;
+  const std::size_t budget = total > fixed ? total - fixed : 0;
+
+  // calls visit(face index, cube face, polygon) for every cube face a face's cone meets
+  auto forEachProjection = [&](auto&& visit) {
+    Cone k;
+    Poly P;
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (!coneOf(v_, tri_[f], c_, scale, k)) return false;
+      for (int cf = 0; cf < 6; ++cf)
+        if (onCubeFace(k, cf, P)) visit(f, cf, P);
+    }
+    return true;
+  };
+
+  // === the base grid: count, coarsen until it fits, fill
+  std::vector<std::uint32_t> count;
+  for (;;) {
+    depth_ = depthFor(g_);
+    const std::size_t cells = 6 * static_cast<std::size_t>(g_) * g_;
+    count.assign(cells + 1, 0);
+    const double K = g_ / 2.0;
+    const std::int64_t last = g_ - 1;
+    std::size_t entries = 0;
+    bool ok = forEachProjection([&](std::uint32_t, int cf, const Poly& P) {
+      rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
+        ++count[static_cast<std::size_t>(cf) * g_ * g_ + static_cast<std::size_t>(j) * g_ + i];
+        ++entries;
+      });
+    });
+    if (!ok) {
+      buildSeconds_ = secondsSince(t0);
+      return;  // a direction overflowed: no cells, as above
+    }
+    if (g_ == 1 || cells * sizeof(Node) + entries * sizeof(std::uint32_t) <= budget) break;
+    g_ = std::max<std::uint32_t>(1, g_ / 2);
+  }
+  const std::size_t baseCells = 6 * static_cast<std::size_t>(g_) * g_;
+  nodes_.resize(baseCells);
+  {
+    std::uint32_t at = 0;
+    for (std::size_t c = 0; c < baseCells; ++c) {
+      nodes_[c] = {at, count[c]};
+      at += count[c];
+    }
+    entries_.resize(at);
+    std::vector<std::uint32_t> cursor(baseCells);
+    for (std::size_t c = 0; c < baseCells; ++c) cursor[c] = nodes_[c].first;
+    const double K = g_ / 2.0;
+    const std::int64_t last = g_ - 1;
+    forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
+      rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
+        entries_[cursor[static_cast<std::size_t>(cf) * g_ * g_ + static_cast<std::size_t>(j) * g_ + i]++] = f;
+      });
+    });
+  }
+  count = {};
+  centred_ = true;
+  scale_ = std::ldexp(static_cast<double>(g_), depth_ - 1);
+
+  // === refine crowded cells into quadtrees, breadth first, while the budget allows
+  struct Pending {
+    std::uint32_t node;
+    std::uint32_t i, j;
+    std::uint8_t face, level;
+  };
+  std::vector<Pending> queue;
+  for (std::size_t c = 0; c < baseCells; ++c)
+    if (nodes_[c].count > kCrowdedCell3D) {
+      const std::uint32_t cf = static_cast<std::uint32_t>(c / (static_cast<std::size_t>(g_) * g_));
+      const std::uint32_t rest = static_cast<std::uint32_t>(c % (static_cast<std::size_t>(g_) * g_));
+      queue.push_back({static_cast<std::uint32_t>(c), rest % g_, rest / g_, static_cast<std::uint8_t>(cf), 0});
+    }
+  std::size_t live = nodes_.size() * sizeof(Node) + entries_.size() * sizeof(std::uint32_t);
+  std::size_t liveEntries = entries_.size();
+  // rewrites entries_ with the leaves' lists only
+  auto compact = [&]() {
+    std::vector<std::uint32_t> kept;
+    kept.reserve(liveEntries);
+    for (Node& nd : nodes_) {
+      if (nd.count == kInner) continue;
+      const std::uint32_t first = static_cast<std::uint32_t>(kept.size());
+      kept.insert(kept.end(), entries_.begin() + nd.first, entries_.begin() + nd.first + nd.count);
+      nd.first = first;
+    }
+    entries_.swap(kept);
+  };
+  std::vector<std::uint32_t> child[4];
+  Cone k;
+  Poly P;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Pending q = queue[head];
+    if (q.level >= depth_) continue;
+    const Node parent = nodes_[q.node];
+    for (auto& list : child) list.clear();
+    const double K = std::ldexp(g_ / 2.0, q.level + 1);
+    const std::int64_t i0 = 2 * static_cast<std::int64_t>(q.i), j0 = 2 * static_cast<std::int64_t>(q.j);
+    for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
+      const std::uint32_t f = entries_[e];
+      if (!coneOf(v_, tri_[f], c_, scale, k) || !onCubeFace(k, q.face, P)) continue;
+      rasterise(P, K, i0, i0 + 1, j0, j0 + 1, [&](std::int64_t i, std::int64_t j) {
+        child[(j - j0) * 2 + (i - i0)].push_back(f);
+      });
+    }
+    std::size_t sum = 0, most = 0;
+    for (auto& list : child) {
+      sum += list.size();
+      most = std::max(most, list.size());
+    }
+    // a child keeping every face while the others share many: a vertex all of them meet,
+    // which no split separates; search it by a walk instead
+    if (most == parent.count && sum - most > parent.count / 2) continue;
+    const std::size_t grown = live + 4 * sizeof(Node) + (sum - parent.count) * sizeof(std::uint32_t);
+    if (grown > budget) break;
+    if (entries_.size() + sum > std::numeric_limits<std::uint32_t>::max()) break;
+    const std::uint32_t first = static_cast<std::uint32_t>(nodes_.size());
+    for (int c = 0; c < 4; ++c) {
+      nodes_.push_back({static_cast<std::uint32_t>(entries_.size()), static_cast<std::uint32_t>(child[c].size())});
+      entries_.insert(entries_.end(), child[c].begin(), child[c].end());
+      if (child[c].size() > kCrowdedCell3D)
+        queue.push_back({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+                         static_cast<std::uint32_t>(j0 + (c >> 1)), q.face, static_cast<std::uint8_t>(q.level + 1)});
+    }
+    nodes_[q.node] = {first, kInner};
+    live = grown;
+    liveEntries = liveEntries + sum - parent.count;
+    if (entries_.size() > 2 * liveEntries + (1u << 20)) compact();
+  }
+  compact();
+  nodes_.shrink_to_fit();
+  entries_.shrink_to_fit();
+  buildSeconds_ = secondsSince(t0);
+}
+
+std::optional<Vec3> CubemapLocator::centre() const noexcept {
+  if (!centred_) return std::nullopt;
+  return c_;
+}
+
+template <class Sink>
+Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
+  if (!finite(p)) {
+    sink.nonFinite();
+    return Location::Outside;
+  }
+  if (!centred_) {
+    sink.fallback();
+    return testAll(v_, tri_, p, sink);
+  }
+  const double dx = p.x - c_.x, dy = p.y - c_.y, dz = p.z - c_.z;
+  const double ax = std::fabs(dx), ay = std::fabs(dy), az = std::fabs(dz);
+  if (!(ax <= std::numeric_limits<double>::max() && ay <= std::numeric_limits<double>::max() &&
+        az <= std::numeric_limits<double>::max())) {
+    sink.fallback();  // the direction overflows
+    return testAll(v_, tri_, p, sink);
+  }
+  int a;
+  double major, du, dv;
+  if (ax >= ay && ax >= az) {
+    a = 0, major = dx, du = dy, dv = dz;
+  } else if (ay >= az) {
+    a = 1, major = dy, du = dz, dv = dx;
+  } else {
+    a = 2, major = dz, du = dx, dv = dy;
+  }
+  if (major == 0) {
+    sink.atCentre();  // d = 0: p is the centre, strictly inside
+    return Location::Inside;
+  }
+  const int face = 2 * a + (major < 0 ? 1 : 0);
+  const double m = std::fabs(major);
+  const double s = du / m, t = dv / m;
+  const std::uint64_t last = (static_cast<std::uint64_t>(g_) << depth_) - 1;
+  const std::uint64_t X = std::min(static_cast<std::uint64_t>((s + 1) * scale_), last);
+  const std::uint64_t Y = std::min(static_cast<std::uint64_t>((t + 1) * scale_), last);
+  std::uint32_t node = static_cast<std::uint32_t>(
+      (static_cast<std::uint64_t>(face) * g_ + (Y >> depth_)) * g_ + (X >> depth_));
+  int level = 0;
+  while (nodes_[node].count == kInner) {
+    ++level;
+    const int shift = depth_ - level;
+    node = nodes_[node].first + static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
+  }
+  sink.cell(face, level, X >> (depth_ - level), Y >> (depth_ - level), s, t);
+  const Node leaf = nodes_[node];
+  const std::uint32_t* first = entries_.data() + leaf.first;
+  if (leaf.count <= kCrowdedCell3D) return testList(v_, tri_, first, first + leaf.count, p, sink);
+  sink.crowded();
+  const std::uint32_t exit = walkToExit(v_, tri_, nb_, c_, p, *first, 16 + leaf.count / 4, sink);
+  if (exit != kNone) {
+    const int sign = planeSign(v_, tri_[exit], p);
+    sink.face(exit, sign);
+    return fromExit(sign);
+  }
+  return testList(v_, tri_, first, first + leaf.count, p, sink);
+}
+
+Location CubemapLocator::locate(Vec3 p) const noexcept {
+  NoSink sink;
+  return run(p, sink);
+}
+
+void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
+  locateAll(*this, points, out);
+}
+
+Trace3D CubemapLocator::trace(Vec3 p) const {
+  Trace3D t;
+  t.method = Method3D::Cubemap;
+  t.centre = centre();
+  TraceSink sink{t};
+  t.result = run(p, sink);
+  return t;
+}
+
+Stats3D CubemapLocator::stats() const {
+  Stats3D s = baseStats(tri_.size(), v_.size(),
+                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) + bytesOf(nodes_) +
+                            bytesOf(entries_),
+                        buildSeconds_);
+  s.centred = centred_;
+  s.resolution = centred_ ? g_ : 0;
+  s.nodes = nodes_.size();
+  s.histogram.assign(kCrowdedCell3D + 2, 0);
+  if (!centred_) return s;
+  for (const Node& nd : nodes_) {
+    if (nd.count == kInner) continue;
+    ++s.cells;
+    s.entries += nd.count;
+    s.maxPerCell = std::max<std::size_t>(s.maxPerCell, nd.count);
+    if (nd.count > kCrowdedCell3D) ++s.crowdedCells;
+    ++s.histogram[std::min<std::size_t>(nd.count, s.histogram.size() - 1)];
+  }
+  s.meanPerCell = s.cells ? static_cast<double>(s.entries) / static_cast<double>(s.cells) : 0.0;
+  // the deepest level: walk the inner nodes breadth first
+  const std::size_t base = 6 * static_cast<std::size_t>(g_) * g_;
+  std::vector<std::uint32_t> frontier;
+  for (std::size_t c = 0; c < base; ++c)
+    if (nodes_[c].count == kInner) frontier.push_back(static_cast<std::uint32_t>(c));
+  while (!frontier.empty()) {
+    ++s.maxLevel;
+    std::vector<std::uint32_t> next;
+    for (std::uint32_t n : frontier)
+      for (std::uint32_t c = 0; c < 4; ++c)
+        if (nodes_[nodes_[n].first + c].count == kInner) next.push_back(nodes_[n].first + c);
+    frontier.swap(next);
+  }
+  return s;
+}
+
+std::vector<Cell3D> CubemapLocator::cells() const {
+  std::vector<Cell3D> out;
+  if (!centred_) return out;
+  struct Item {
+    std::uint32_t node, i, j;
+    int level;
+  };
+  std::vector<Item> stack;
+  const std::size_t perFace = static_cast<std::size_t>(g_) * g_;
+  for (std::size_t c = 0; c < 6 * perFace; ++c) {
+    const int cf = static_cast<int>(c / perFace);
+    const std::uint32_t rest = static_cast<std::uint32_t>(c % perFace);
+    stack.push_back({static_cast<std::uint32_t>(c), rest % g_, rest / g_, 0});
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const Node nd = nodes_[it.node];
+      if (nd.count == kInner) {
+        for (std::uint32_t k = 4; k-- > 0;)
+          stack.push_back({nd.first + k, 2 * it.i + (k & 1), 2 * it.j + (k >> 1), it.level + 1});
+        continue;
+      }
+      Cell3D cell;
+      cell.index = static_cast<std::uint32_t>(out.size());
+      cell.cubeFace = cf;
+      cell.level = it.level;
+      cell.i = it.i;
+      cell.j = it.j;
+      const double K = std::ldexp(g_ / 2.0, it.level);
+      cell.s0 = -1 + it.i / K;
+      cell.s1 = -1 + (it.i + 1) / K;
+      cell.t0 = -1 + it.j / K;
+      cell.t1 = -1 + (it.j + 1) / K;
+      cell.apex = c_;
+      const double st[4][2] = {{cell.s0, cell.t0}, {cell.s1, cell.t0}, {cell.s1, cell.t1}, {cell.s0, cell.t1}};
+      for (int q = 0; q < 4; ++q) {
+        const Vec3 d = cubeDirection(cf, st[q][0], st[q][1]);
+        cell.corners[q] = {c_.x + half_ * d.x, c_.y + half_ * d.y, c_.z + half_ * d.z};
+      }
+      cell.faces.assign(entries_.begin() + nd.first, entries_.begin() + nd.first + nd.count);
+      out.push_back(std::move(cell));
+    }
+  }
+  return out;
+}
+
+// === Locator3D
+
+namespace {
+std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> build(const ConvexPolyhedron& polyhedron,
+                                                                  Method3D method,
+                                                                  std::uint32_t resolution) {
+  switch (method) {
+    case Method3D::Halfspace: return HalfspaceLocator(polyhedron);
+    case Method3D::Walk: return WalkLocator(polyhedron);
+    case Method3D::Cubemap: break;
+  }
+  return CubemapLocator(polyhedron, resolution);
+}
+}  // namespace
+
+Locator3D::Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution)
+    : impl_(build(polyhedron, method, resolution)) {}
+
+Location Locator3D::locate(Vec3 p) const noexcept {
+  return std::visit([&](const auto& l) { return l.locate(p); }, impl_);
+}
+void Locator3D::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
+  std::visit([&](const auto& l) { l.locate(points, out); }, impl_);
+}
+Trace3D Locator3D::trace(Vec3 p) const {
+  return std::visit([&](const auto& l) { return l.trace(p); }, impl_);
+}
+Stats3D Locator3D::stats() const {
+  return std::visit([&](const auto& l) { return l.stats(); }, impl_);
+}
+std::vector<Cell3D> Locator3D::cells() const {
+  return std::visit([&](const auto& l) { return l.cells(); }, impl_);
+}
+
+}  // namespace convexloc
