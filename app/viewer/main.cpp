@@ -130,27 +130,44 @@ int main(int argc, char** argv) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, options.samples);
-  if (headless) glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
-  if (!window) {
-    glfwWindowHint(GLFW_SAMPLES, 0);  // no multisampled visual: without anti-aliasing then
-    window = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
-  }
+  // a window with `samples` MSAA samples and its GL functions loaded, or null
+  auto openWindow = [&](int msaa) -> GLFWwindow* {
+    glfwWindowHint(GLFW_SAMPLES, msaa);
+    GLFWwindow* w = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
+    if (!w) return nullptr;
+    glfwMakeContextCurrent(w);
+    if (!gladLoadGL(glfwGetProcAddress)) {
+      glfwDestroyWindow(w);
+      return nullptr;
+    }
+    return w;
+  };
+  int samples = options.samples >= 0 ? options.samples : 4;
+  GLFWwindow* window = openWindow(samples);
+  if (!window && samples > 0) window = openWindow(samples = 0);  // no multisampled visual
   if (!window) {
     std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
     glfwTerminate();
     return 1;
   }
-  glfwMakeContextCurrent(window);
-  if (!gladLoadGL(glfwGetProcAddress)) {
-    std::cerr << "convexloc-viewer: cannot load the OpenGL functions\n";
-    glfwTerminate();
-    return 1;
+  // Multisampling costs a software renderer (Mesa's llvmpipe) about three times the frame
+  // time, and the shaders anti-alias lines and points themselves: without it there.
+  const std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = rendererName.find("llvmpipe") != std::string::npos ||
+                        rendererName.find("softpipe") != std::string::npos ||
+                        rendererName.find("SWR") != std::string::npos;
+  if (options.samples < 0 && software && samples > 0) {
+    glfwDestroyWindow(window);
+    window = openWindow(samples = 0);
+    if (!window) {
+      std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
+      glfwTerminate();
+      return 1;
+    }
   }
   glfwSwapInterval(headless ? 0 : 1);
   glfwSetDropCallback(window, onDrop);
-  if (options.samples > 0) glEnable(GL_MULTISAMPLE);
+  if (samples > 0) glEnable(GL_MULTISAMPLE);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -175,8 +192,8 @@ int main(int argc, char** argv) {
   ui.assetDir = CONVEXLOC_ASSET_DIR;
   cv::scanAssets(ui);
   ui.fontScaleEdit = model.settings.fontScale;
-  ui.glInfo = std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))) + ", GL " +
-              reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  ui.glInfo = rendererName + ", GL " + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
+              (samples > 0 ? ", MSAA " + std::to_string(samples) + "x" : ", no MSAA");
   float xscale = 1.0f, yscale = 1.0f;
   glfwGetWindowContentScale(window, &xscale, &yscale);
   const float dpi = std::max(1.0f, xscale);

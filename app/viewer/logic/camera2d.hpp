@@ -45,7 +45,7 @@ public:
   void zoomAt(glm::dvec2 screen, double factor);
   // the largest scale at which `box`, grown by `margin` of its size on each side, fits
   // in `area` (a part of the viewport), centred there
-  void fit(const Box2& box, ScreenRect area, double margin = 0.06);
+  void fit(const Box2& box, ScreenRect area, double margin = 0.13);
 
   // the world box the viewport shows
   Box2 visible() const;

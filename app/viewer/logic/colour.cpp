@@ -28,9 +28,10 @@ Palette makeDark() {
   p.structure = hex(0x7d8590, 0.55f);
   p.structureStrong = hex(0xaab1bb, 0.9f);
   p.centre = hex(0xffffff);
+  // sky blue and vermillion: apart in hue and in lightness on the dark background
   p.inside = kSkyBlue;
   p.boundary = kYellow;
-  p.outside = kOrange;
+  p.outside = kVermillion;
   p.rim = hex(0x111111, 0.9f);
   p.extraEdges = hex(0x2fbf8f);
   p.crowded = kPurple;
@@ -61,6 +62,7 @@ Palette makeLight() {
   p.structure = hex(0x8a929c, 0.55f);
   p.structureStrong = hex(0x4b525a, 0.9f);
   p.centre = hex(0x111111);
+  // blue and orange: apart in hue and in lightness on the light background
   p.inside = kBlue;
   p.boundary = kYellow;
   p.outside = kOrange;

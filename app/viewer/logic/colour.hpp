@@ -33,7 +33,7 @@ std::string_view toString(Theme t);
 
 // Every colour the scene uses. The class colours follow Okabe and Ito's palette, which
 // stays distinguishable for the common forms of colour blindness: inside blue, outside
-// orange, boundary bright yellow (drawn larger and with a rim).
+// orange (vermillion on dark), boundary bright yellow (drawn larger and with a dark rim).
 struct Palette {
   Rgba background;
   Rgba text, textMuted;

@@ -168,7 +168,8 @@ View:
   --hide-ui             only the scene and its legend
   --size WxH            window size in pixels (default 1440x900)
   --shaders DIR         load the GLSL shaders from DIR
-  --samples N           multisampling for anti-aliasing (default 4; 0 is fastest)
+  --samples N           multisampling (default 4 on a GPU, 0 on a software renderer,
+                        where lines and points are anti-aliased by the shaders alone)
 Without hands:
   --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
   --frames N            render N frames, print the mean frame time and exit

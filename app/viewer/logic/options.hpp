@@ -35,7 +35,7 @@ struct Options {
   bool framesGiven = false;               // --frames without --screenshot: time and exit
   int width = 1440, height = 900;         // window size
   std::string shaderDir;                  // overrides the built-in shader directory
-  int samples = 4;                        // MSAA samples (0: no multisampling)
+  int samples = -1;                       // MSAA samples; 0 none; -1: 4, none in software
   bool noXvfb = false;                    // do not re-run under xvfb-run without a display
   bool help = false, version = false;
 };

@@ -36,6 +36,7 @@ std::string baseName(const std::string& path) {
 constexpr std::size_t kDefaultVertices = 16;
 constexpr std::uint64_t kDefaultSeed = 7;
 constexpr std::size_t kDefaultSpray = 3000;
+constexpr std::uint32_t kDefaultPolarSlabs = 8;
 
 }  // namespace
 
@@ -44,6 +45,9 @@ std::size_t baseEdgesPerCell(Method2D m) {
 }
 
 Scene2D::Scene2D() {
+  // eight polar slabs per octant: most cells then list one edge, and the cells where a
+  // vertex falls stand out, as in the paper's figure
+  resolution_[static_cast<std::size_t>(Method2D::Polar)] = kDefaultPolarSlabs;
   generate(PolygonKind::Random, kDefaultVertices, kDefaultSeed);
   spray({kDefaultSpray, 1, false});
 }

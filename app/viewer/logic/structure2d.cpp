@@ -188,7 +188,7 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   // the centre x_T
   if (auto c = scene.centre()) {
     out.marker(at2(toGlm(*c)), pal.centre, 11.0f, MarkerShape::Cross);
-    if (opt.showLabels) out.label(at2(toGlm(*c)), "x_T", pal.text, {9.0f, -12.0f});
+    if (opt.showLabels) out.label(at2(toGlm(*c)), "x_T", pal.text, {16.0f, -14.0f});
   }
   // the wedge's apex x0
   if (method == Method2D::Wedge && opt.showLabels)

@@ -115,8 +115,9 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
   const char* apex = t.method == Method2D::Polar ? "x_T" : "x0";
   for (const RayTest& r : t.rays) add(signKind(r.sign), rayLine(r, apex));
   for (const EdgeTest& e : t.edges) add(signKind(e.sign), edgeLine(e));
-  add(TraceLine::Result, "result: " + upper(toString(t.result)) + "  (" +
-                             std::to_string(t.rays.size() + t.edges.size()) + " predicates)");
+  const std::size_t k = t.rays.size() + t.edges.size();
+  add(TraceLine::Result, "result: " + upper(toString(t.result)) + "  (" + std::to_string(k) +
+                             (k == 1 ? " predicate)" : " predicates)"));
   return out;
 }
 

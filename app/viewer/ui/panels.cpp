@@ -225,10 +225,9 @@ void methodPanel(Model& model, UiState& ui) {
   }
   if (!s.histogram.empty() && s.cells) {
     std::vector<float> h(s.histogram.begin(), s.histogram.end());
-    const std::string caption = "cells by edges listed: 0.." + std::to_string(h.size() - 2) + ", " +
-                                std::to_string(h.size() - 1) + "+";
-    ImGui::PlotHistogram("##hist", h.data(), static_cast<int>(h.size()), 0, caption.c_str(), 0.0f,
-                         FLT_MAX, ImVec2(-1.0f, ImGui::GetFontSize() * 4.0f));
+    ImGui::TextDisabled("cells by edges listed: 0, 1, ..., %zu+", h.size() - 1);
+    ImGui::PlotHistogram("##hist", h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f,
+                         FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f));
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (std::size_t k = 0; k < s.histogram.size(); ++k)
@@ -376,22 +375,13 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   if (!ui.glInfo.empty()) ImGui::TextDisabled("%s", ui.glInfo.c_str());
 }
 
-// === Inspector
+// === Inspector: the hovered cell and the placed point's trace
 
-void inspector(Model& model, float x, float width, float maxHeight) {
+void inspectorContents(Model& model, float maxTraceHeight, bool hints) {
   Scene2D& scene = model.scene2d;
-  const bool hovered = scene.hoveredCell() >= 0;
-  const auto& probe = scene.probe();
-  if (!hovered && !probe) return;
   const Palette& pal = paletteFor(model.settings.theme);
-  ImGui::SetNextWindowPos(ImVec2(x, 8.0f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, maxHeight));
-  ImGui::SetNextWindowBgAlpha(0.90f);
-  ImGui::Begin("Inspector", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoFocusOnAppearing);
-  if (hovered) {
+  const auto& probe = scene.probe();
+  if (scene.hoveredCell() >= 0) {
     const Cell2D& c = scene.cells()[static_cast<std::size_t>(scene.hoveredCell())];
     ImGui::TextColored(im(pal.hoverEdge), "Under the cursor");
     std::string what = "cell " + std::to_string(c.index);
@@ -403,45 +393,53 @@ void inspector(Model& model, float x, float width, float maxHeight) {
     for (std::size_t i = 0; i < c.edges.size() && i < 24; ++i) edges += (i ? ", " : "") + std::to_string(c.edges[i]);
     if (c.edges.size() > 24) edges += ", ...";
     ImGui::TextWrapped("lists %zu edge%s: %s", c.edges.size(), c.edges.size() == 1 ? "" : "s", edges.c_str());
-    if (probe) ImGui::Separator();
+  } else if (hints) {
+    ImGui::TextDisabled("Under the cursor");
+    ImGui::TextWrapped("%s", scene.cells().empty() ? "this method has no cells: it tests the edges in turn"
+                                                   : "hover over a cell to see the edges it lists");
   }
-  if (probe) {
-    ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "Placed point: %s",
-                       std::string(toString(probe->trace.result)).c_str());
-    const auto lines = describeTrace(probe->trace, probe->point, scene.polygon(),
-                                     scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
-    const float h = std::min(maxHeight * 0.75f, ImGui::GetTextLineHeightWithSpacing() * static_cast<float>(lines.size() + 1));
-    ImGui::BeginChild("trace", ImVec2(0.0f, h), false);
-    for (const TraceLine& l : lines) {
-      Rgba c = pal.text;
-      if (l.kind == TraceLine::Positive) c = pal.positive;
-      else if (l.kind == TraceLine::Negative) c = pal.negative;
-      else if (l.kind == TraceLine::Zero) c = pal.zero;
-      else if (l.kind == TraceLine::Result) c = colourOf(pal, probe->trace.result);
-      else if (l.kind == TraceLine::Heading) c = pal.textMuted;
-      ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-      ImGui::TextWrapped("%s", l.text.c_str());
-      ImGui::PopStyleColor();
+  if (!probe) {
+    if (hints) {
+      ImGui::Spacing();
+      ImGui::TextDisabled("Placed point");
+      ImGui::TextWrapped("click in the scene to place a point and follow its query step by step");
     }
-    ImGui::EndChild();
-    if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());
+    return;
   }
-  ImGui::End();
+  ImGui::Spacing();
+  ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "Placed point: %s",
+                     std::string(toString(probe->trace.result)).c_str());
+  const auto lines = describeTrace(probe->trace, probe->point, scene.polygon(),
+                                   scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
+  (void)maxTraceHeight;
+  constexpr std::size_t kMaxLines = 200;
+  for (std::size_t i = 0; i < lines.size() && i < kMaxLines; ++i) {
+    const TraceLine& l = lines[i];
+    Rgba c = pal.text;
+    if (l.kind == TraceLine::Positive) c = pal.positive;
+    else if (l.kind == TraceLine::Negative) c = pal.negative;
+    else if (l.kind == TraceLine::Zero) c = pal.zero;
+    else if (l.kind == TraceLine::Result) c = colourOf(pal, probe->trace.result);
+    else if (l.kind == TraceLine::Heading) c = pal.textMuted;
+    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    ImGui::TextWrapped("%s", l.text.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (lines.size() > kMaxLines) {
+    ImGui::TextDisabled("... %zu more steps", lines.size() - kMaxLines);
+    const TraceLine& last = lines.back();
+    ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "%s", last.text.c_str());
+  }
+  if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
+  ImGui::SameLine();
+  if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());
 }
 
-// === Legend
+// === Legend: what each colour and line means, with the counts
 
-void legend(Model& model, ScreenRect area) {
+void legendContents(Model& model) {
   const Scene2D& scene = model.scene2d;
   const Palette& pal = paletteFor(model.settings.theme);
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f, static_cast<float>(area.hi.y) - 10.0f),
-                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
-  ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::Begin("Legend", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
   const Stats2D& s = scene.stats();
   ImGui::Text("%s", std::string(toString(scene.method())).c_str());
   ImGui::SameLine();
@@ -479,6 +477,17 @@ void legend(Model& model, ScreenRect area) {
     swatchLine(pal.box, true, 1.2f);
     ImGui::Text("bounding box");
   }
+}
+
+// the legend alone, over the scene's lower right corner (panels hidden)
+void legendOverlay(Model& model, ScreenRect area) {
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f, static_cast<float>(area.hi.y) - 10.0f),
+                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  ImGui::Begin("Legend", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  legendContents(model);
   ImGui::End();
 }
 
@@ -524,8 +533,14 @@ float leftPanelWidth(const Model& model, glm::dvec2 window) {
   return std::min(345.0f * model.settings.fontScale, static_cast<float>(0.45 * window.x));
 }
 
+float rightPanelWidth(const Model& model, glm::dvec2 window) {
+  if (!model.settings.showUi || window.x < 1000.0) return 0.0f;
+  return std::min(330.0f * model.settings.fontScale, static_cast<float>(0.3 * window.x));
+}
+
 ScreenRect sceneArea(const Model& model, glm::dvec2 window) {
-  return {{static_cast<double>(leftPanelWidth(model, window)), 0.0}, window};
+  return {{static_cast<double>(leftPanelWidth(model, window)), 0.0},
+          {window.x - static_cast<double>(rightPanelWidth(model, window)), window.y}};
 }
 
 void scanAssets(UiState& ui) {
@@ -584,10 +599,34 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
     ImGui::TextDisabled("F fit, H hide panels, 1-5 method, Space spray");
     ImGui::End();
 
-    const float iw = std::min(380.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
-    inspector(model, io.DisplaySize.x - iw - 8.0f, iw, io.DisplaySize.y * 0.62f);
   }
-  legend(model, area);
+  const float rw = rightPanelWidth(model, window);
+  if (rw > 0.0f) {
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - rw, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(rw, io.DisplaySize.y));
+    ImGui::Begin("What you see", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    legendContents(model);
+    ImGui::Separator();
+    inspectorContents(model, io.DisplaySize.y * 0.55f, true);
+    ImGui::End();
+  } else {
+    legendOverlay(model, area);
+    if (model.settings.showUi && (model.scene2d.hoveredCell() >= 0 || model.scene2d.probe())) {
+      const float iw = std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
+      ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
+      ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, io.DisplaySize.y * 0.6f));
+      ImGui::SetNextWindowBgAlpha(0.9f);
+      ImGui::Begin("Inspector", nullptr,
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
+                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_NoFocusOnAppearing);
+      inspectorContents(model, io.DisplaySize.y * 0.4f, false);
+      ImGui::End();
+    }
+  }
   toast(model, ui, area, now);
 }
 

@@ -50,6 +50,7 @@ struct UiState {
 
 // the panel widths in window pixels, at the current font scale
 float leftPanelWidth(const Model& model, glm::dvec2 window);
+float rightPanelWidth(const Model& model, glm::dvec2 window);
 // the part of the window the scene has to itself (right of the panel when it shows)
 ScreenRect sceneArea(const Model& model, glm::dvec2 window);
 
