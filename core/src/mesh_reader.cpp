@@ -151,21 +151,21 @@ bool integer(std::string_view token, long long& out) {
   return ec == std::errc() && ptr == token.data() + token.size() && b != token.data() + token.size();
 }
 
-// a count from an OFF header, checked against the limit
-std::size_t headerCount(std::string_view token, const char* what, std::size_t line) {
+// a count from an OFF header ("vertex" or "face" count), checked against the limit
+std::size_t headerCount(std::string_view token, std::string_view what, std::size_t line) {
   long long v = 0;
   if (!integer(token, v) || v < 0) {
     // a number too large for 64 bits is still a count, just an absurd one
     bool digits = !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (!digits)
-      throw ParseError(std::string("the OFF header's ") + what + " count is not a non-negative integer: " +
+      throw ParseError("the OFF header's " + std::string(what) + " count is not a non-negative integer: " +
                            quote(token),
                        line);
     v = std::numeric_limits<long long>::max();
   }
   if (static_cast<unsigned long long>(v) > kMaxMeshElements)
-    throw ParseError("the OFF header announces " + std::string(token) + ' ' + what + "; at most " +
-                         std::to_string(kMaxMeshElements) + " are supported",
+    throw ParseError("the OFF header announces " + std::string(token) + (what == "vertex" ? " vertices" : " faces") +
+                         "; at most " + std::to_string(kMaxMeshElements) + " are supported",
                      line);
   return static_cast<std::size_t>(v);
 }
