@@ -16,7 +16,9 @@
 
 #include "convexloc/geometry.hpp"
 #include "convexloc/locate2d.hpp"
+#include "convexloc/locate3d.hpp"
 #include "convexloc/polygon.hpp"
+#include "convexloc/polyhedron.hpp"
 
 namespace convexloc::cli {
 
@@ -59,15 +61,22 @@ bool isPolyhedronPath(std::string_view path);
 // `input`, when given, receives the vertices as read, before normalisation.
 ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input = nullptr);
 
-// the 2D method with that name, or a bad-usage failure listing the choices
-Method2D methodOrFail(const std::string& name);
+// The polyhedron in an OFF or OBJ file, validated; Failure naming the file otherwise (a mesh
+// too large to hold is bad input too). `verticesRead`, when given, receives how many
+// vertices the file listed.
+ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead = nullptr);
+
+// The method with that name for a polygon (2D) or a polyhedron (3D); empty names the default
+// (polar, cubemap). Otherwise a bad-usage failure listing the choices for that kind of shape.
+Method2D method2DOrFail(const std::string& name);
+Method3D method3DOrFail(const std::string& name);
 
 // === Options, one struct per subcommand
 
 struct ClassifyOptions {
   std::string shape;
   std::string points;
-  std::string method = "polar";
+  std::string method;            // empty: polar for a polygon, cubemap for a polyhedron
   std::uint32_t resolution = 0;  // 0: chosen from the shape
 };
 
@@ -83,6 +92,13 @@ struct GeneratePolygonOptions {
   std::uint64_t seed = 1;
 };
 
+struct GeneratePolyhedronOptions {
+  std::string kind;
+  std::size_t n = 100;
+  std::uint64_t seed = 1;
+  std::string format = "off";
+};
+
 struct GeneratePointsOptions {
   std::string shape;
   std::size_t count = 1000;
@@ -91,15 +107,17 @@ struct GeneratePointsOptions {
 };
 
 // === Commands, one per dimension where the dimension matters
+//
+// A SHAPE ending in .off or .obj is a polyhedron (3D), anything else a polygon (2D); both
+// halves of a command share one file and one contract.
 
-void classify2D(const ClassifyOptions& o);
-void info2D(const InfoOptions& o);
-void generatePolygon(const GeneratePolygonOptions& o);
-void generatePoints2D(const GeneratePointsOptions& o);
-
-// The 3D side (polyhedron.cpp): .off / .obj shapes. Same contracts as the 2D commands.
+void classify2D(const ClassifyOptions& o);  // classify.cpp
 void classify3D(const ClassifyOptions& o);
+void info2D(const InfoOptions& o);  // info.cpp
 void info3D(const InfoOptions& o);
+void generatePolygon(const GeneratePolygonOptions& o);  // generate.cpp
+void generatePolyhedron(const GeneratePolyhedronOptions& o);
+void generatePoints2D(const GeneratePointsOptions& o);
 void generatePoints3D(const GeneratePointsOptions& o);
 
 // === Output
@@ -127,6 +145,15 @@ class Output {
     number(p.x);
     put(" ");
     number(p.y);
+    put("\n");
+  }
+  // appends "x y z\n"
+  void point(Vec3 p) {
+    number(p.x);
+    put(" ");
+    number(p.y);
+    put(" ");
+    number(p.z);
     put("\n");
   }
   // writes everything buffered and flushes stdout; Failure when the write failed

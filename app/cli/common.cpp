@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "convexloc/error.hpp"
+#include "convexloc/mesh_reader.hpp"
 #include "convexloc/text_reader.hpp"
 
 namespace convexloc::cli {
@@ -73,12 +74,49 @@ ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input) {
   return std::move(*polygon);
 }
 
-Method2D methodOrFail(const std::string& name) {
+ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead) {
+  rejectDirectory(path);
+  MeshData mesh;
+  aboutFile(path, [&] { mesh = readMesh(path); });
+  if (verticesRead) *verticesRead = mesh.vertices.size();
+  try {
+    return ConvexPolyhedron(mesh);
+  } catch (const Error& e) {
+    // every complaint about a mesh read from a file is about the file, a size limit included
+    failInput(path, e.line(), e.what());
+  }
+}
+
+namespace {
+
+// "a, b, c": the names of every method of one dimension
+template <class Method, std::size_t N>
+std::string methodNames(const Method (&all)[N]) {
+  std::string names;
+  for (Method m : all) names += (names.empty() ? "" : ", ") + std::string(toString(m));
+  return names;
+}
+
+}  // namespace
+
+Method2D method2DOrFail(const std::string& name) {
+  if (name.empty()) return Method2D::Polar;
   if (auto m = parseMethod2D(name)) return *m;
-  std::string choices;
-  for (Method2D m : kAllMethods2D)
-    choices += (choices.empty() ? "" : ", ") + std::string(toString(m));
+  const std::string choices = methodNames(kAllMethods2D);
+  if (parseMethod3D(name))
+    failUsage("method '" + name + "' is for polyhedra (.off/.obj); for a polygon choose one of " +
+              choices);
   failUsage("unknown method '" + name + "' for a polygon; choose one of " + choices);
+}
+
+Method3D method3DOrFail(const std::string& name) {
+  if (name.empty()) return Method3D::Cubemap;
+  if (auto m = parseMethod3D(name)) return *m;
+  const std::string choices = methodNames(kAllMethods3D);
+  if (parseMethod2D(name))
+    failUsage("method '" + name + "' is for polygons; for a polyhedron (.off/.obj) choose one of " +
+              choices);
+  failUsage("unknown method '" + name + "' for a polyhedron; choose one of " + choices);
 }
 
 // === Output

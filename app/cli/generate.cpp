@@ -1,10 +1,14 @@
-// convexloc CLI — `generate polygon` and `generate points`: files in the formats classify reads.
+// convexloc CLI — `generate polygon`, `generate polyhedron` and `generate points`: files in the
+// formats classify reads.
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "commands.hpp"
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
+#include "convexloc/generate3d.hpp"
+#include "convexloc/mesh_reader.hpp"
 
 namespace convexloc::cli {
 namespace {
@@ -29,6 +33,36 @@ PolygonKind kindOrFail(const std::string& name) {
   failUsage("unknown polygon kind '" + name + "'; choose one of " + choices);
 }
 
+// the polyhedron kind with that name, or a bad-usage failure listing the choices
+PolyhedronKind polyhedronKindOrFail(const std::string& name) {
+  if (auto k = parsePolyhedronKind(name)) return *k;
+  std::string choices;
+  for (PolyhedronKind k : kAllPolyhedronKinds)
+    choices += (choices.empty() ? "" : ", ") + std::string(toString(k));
+  failUsage("unknown polyhedron kind '" + name + "'; choose one of " + choices);
+}
+
+// the header line of a point file: the command that wrote it
+std::string pointsHeader(const GeneratePointsOptions& o) {
+  return "# convexloc generate points --shape " + displayName(o.shape) + " --count " +
+         std::to_string(o.count) + " --seed " + std::to_string(o.seed) +
+         (o.nearBoundary ? " --near-boundary" : "") + "\n";
+}
+
+// Writes `o.count` points made by `make(n, seed)` in blocks of kPointBlock, so that memory
+// stays constant however many are asked for.
+template <class Make>
+void writePoints(const GeneratePointsOptions& o, Make&& make) {
+  Output out;
+  out.put(pointsHeader(o));
+  for (std::size_t done = 0, b = 0; done < o.count; ++b) {
+    const std::size_t n = std::min(kPointBlock, o.count - done);
+    for (const auto& p : make(n, blockSeed(o.seed, b))) out.point(p);
+    done += n;
+  }
+  out.finish();
+}
+
 }  // namespace
 
 void generatePolygon(const GeneratePolygonOptions& o) {
@@ -51,19 +85,39 @@ void generatePolygon(const GeneratePolygonOptions& o) {
   out.finish();
 }
 
+void generatePolyhedron(const GeneratePolyhedronOptions& o) {
+  const PolyhedronKind kind = polyhedronKindOrFail(o.kind);
+  if (o.format != "off" && o.format != "obj")
+    failUsage("unknown format '" + o.format + "'; choose off or obj");
+  MeshData mesh;
+  try {
+    mesh = convexloc::generatePolyhedron(kind, o.n, o.seed);
+  } catch (const UsageError& e) {
+    failUsage(e.what());
+  }
+  try {
+    if (o.format == "obj")
+      writeObj(stdout, mesh);
+    else
+      writeOff(stdout, mesh);
+  } catch (const Error& e) {
+    throw Failure(kExitBadInput, std::string("convexloc: cannot write the output: ") + e.what());
+  }
+  Output().finish();  // flushes stdout and reports a failed write
+}
+
 void generatePoints2D(const GeneratePointsOptions& o) {
   const ConvexPolygon polygon = loadPolygon(o.shape);
-  Output out;
-  out.put("# convexloc generate points --shape " + displayName(o.shape) + " --count " +
-          std::to_string(o.count) + " --seed " + std::to_string(o.seed) +
-          (o.nearBoundary ? " --near-boundary" : "") + "\n");
-  for (std::size_t done = 0, b = 0; done < o.count; ++b) {
-    const std::size_t n = std::min(kPointBlock, o.count - done);
-    for (Vec2 p : convexloc::generatePoints(polygon, n, blockSeed(o.seed, b), o.nearBoundary))
-      out.point(p);
-    done += n;
-  }
-  out.finish();
+  writePoints(o, [&](std::size_t n, std::uint64_t seed) {
+    return convexloc::generatePoints(polygon, n, seed, o.nearBoundary);
+  });
+}
+
+void generatePoints3D(const GeneratePointsOptions& o) {
+  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape);
+  writePoints(o, [&](std::size_t n, std::uint64_t seed) {
+    return convexloc::generatePoints3D(polyhedron, n, seed, o.nearBoundary);
+  });
 }
 
 }  // namespace convexloc::cli

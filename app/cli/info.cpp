@@ -1,13 +1,16 @@
-// convexloc CLI — `info`: a readable report of a polygon and of the subdivisions built on it.
+// convexloc CLI — `info`: a readable report of a polygon or a polyhedron and of the
+// subdivisions each method builds on it.
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
 #include "convexloc/locate2d.hpp"
+#include "convexloc/locate3d.hpp"
 
 namespace convexloc::cli {
 namespace {
@@ -34,6 +37,13 @@ std::string exact(double v) {
 std::string exact(Vec2 p) {
   std::string s = exact(p.x);
   s.append(", ").append(exact(p.y)).append(")");
+  return s.insert(0, 1, '(');
+}
+
+// "(x, y, z)" exactly
+std::string exact(Vec3 p) {
+  std::string s = exact(p.x);
+  s.append(", ").append(exact(p.y)).append(", ").append(exact(p.z)).append(")");
   return s.insert(0, 1, '(');
 }
 
@@ -108,15 +118,16 @@ void reportPolygon(Output& out, const ConvexPolygon& polygon, const std::vector<
   out.put("\n");
 }
 
-// a text bar chart of the cells per edge count
-void reportHistogram(Output& out, const Stats2D& s) {
+// a text bar chart of the cells per edge (or face) count; `what` names the unit
+template <class Stats>
+void reportHistogram(Output& out, const Stats& s, const char* what) {
   std::size_t last = 0, peak = 0;
   for (std::size_t k = 0; k < s.histogram.size(); ++k) {
     if (s.histogram[k] > 0) last = k;
     peak = std::max(peak, s.histogram[k]);
   }
   if (peak == 0) return;
-  out.put("\n  edges per cell    cells\n");
+  out.put(format("\n  %-16s  cells\n", (std::string(what) + " per cell").c_str()));
   for (std::size_t k = 0; k <= last; ++k) {
     const std::size_t count = s.histogram[k];
     const bool open = k + 1 == s.histogram.size();
@@ -156,7 +167,7 @@ void reportMethod(Output& out, const Locator2D& locator) {
   field(out, "memory", byteCount(s.bytes));
   field(out, "bytes per edge", format("%.1f", s.bytesPerEdge));
   field(out, "build time", duration(s.buildSeconds));
-  if (s.cells > 0) reportHistogram(out, s);
+  if (s.cells > 0) reportHistogram(out, s, "edges");
 }
 
 // every method, one row each
@@ -190,7 +201,7 @@ void reportTable(Output& out, const std::vector<Locator2D>& locators, std::uint3
 
 void info2D(const InfoOptions& o) {
   const bool one = !o.method.empty();
-  const Method2D method = one ? methodOrFail(o.method) : Method2D::Polar;
+  const Method2D method = method2DOrFail(o.method);
   std::vector<Vec2> input;
   const ConvexPolygon polygon = loadPolygon(o.shape, &input);
 
@@ -210,6 +221,162 @@ void info2D(const InfoOptions& o) {
   reportPolygon(out, polygon, input);
   if (one)
     reportMethod(out, locators.front());
+  else
+    reportTable(out, locators, o.resolution);
+  out.finish();
+}
+
+// === Polyhedra
+
+namespace {
+
+// how the method finds the answer, in one line
+const char* describe(Method3D m) {
+  switch (m) {
+    case Method3D::Halfspace: return "O(F): tests the point against every face plane";
+    case Method3D::Walk:
+      return "O(sqrt F) expected: walks across the faces toward the ray from the centre, then "
+             "tests one plane";
+    case Method3D::Cubemap:
+      return "O(1): a grid on each face of a cube around the centre, each cell listing the faces "
+             "it sees";
+  }
+  return "";
+}
+
+// the cost of one query, in O notation
+const char* cost(Method3D m) {
+  switch (m) {
+    case Method3D::Halfspace: return "O(F)";
+    case Method3D::Walk: return "O(sqrt F)";
+    case Method3D::Cubemap: return "O(1)";
+  }
+  return "";
+}
+
+// "x lo .. hi,  y lo .. hi,  z lo .. hi", exactly
+std::string extent(const Box3& b) {
+  return "x " + exact(b.lo.x) + " .. " + exact(b.hi.x) + ",  y " + exact(b.lo.y) + " .. " +
+         exact(b.hi.y) + ",  z " + exact(b.lo.z) + " .. " + exact(b.hi.z);
+}
+
+// the polyhedron's section: what was kept, merged, reversed, and its extent
+void reportPolyhedron(Output& out, const ConvexPolyhedron& p, std::size_t verticesRead) {
+  out.put("Polyhedron\n");
+  field(out, "vertices", format("%zu kept of %zu read", p.vertexCount(), verticesRead));
+  if (p.mergedVertices() > 0 || p.unusedVertices() > 0)
+    field(out, "dropped",
+          format("%zu equal to an earlier one (merged), %zu used by no face", p.mergedVertices(),
+                 p.unusedVertices()));
+  field(out, "faces", format("%zu read, %zu triangles", p.inputFaces(), p.faceCount()));
+  if (p.flippedSlivers() > 0)
+    field(out, "slivers",
+          format("%zu zero-area triangles flipped away (the surface is unchanged)",
+                 p.flippedSlivers()));
+  field(out, "orientation",
+        p.wasInverted() ? "clockwise seen from outside in the file (reversed)"
+                        : "counter-clockwise seen from outside, as given");
+  field(out, "bounding box", extent(p.bounds()));
+  field(out, "volume", format("%.10g", p.volume()));
+  field(out, "area", format("%.10g", p.area()));
+  out.put("\n");
+}
+
+// the centre line of walk and cubemap
+std::string centreText(const std::optional<Vec3>& centre) {
+  if (centre) return exact(*centre);
+  return "none: no double point lies strictly inside (every query tests all faces)";
+}
+
+// one method in detail; `asked` is the resolution the user asked for (0: none)
+void reportMethod(Output& out, const Locator3D& locator, std::uint32_t asked) {
+  const Method3D m = locator.method();
+  const Stats3D s = locator.stats();
+  out.put(format("Method %s\n", std::string(toString(m)).c_str()));
+  field(out, "how", describe(m));
+  if (const auto* walk = locator.get<WalkLocator>())
+    field(out, "centre", centreText(walk->centre()));
+  if (const auto* cube = locator.get<CubemapLocator>()) {
+    field(out, "centre", centreText(cube->centre()));
+    if (s.centred) {
+      const std::uint32_t g = s.resolution;
+      std::string grid = format("%u x %u per cube face (%zu base cells)", g, g,
+                                6 * static_cast<std::size_t>(g) * g);
+      if (asked > 0 && asked != g) grid += format(", asked for %u: coarsened to fit memory", asked);
+      field(out, "grid", grid);
+      field(out, "quadtree",
+            s.maxLevel > 0
+                ? format("%zu nodes, refined %d levels where crowded", s.nodes, s.maxLevel)
+                : format("%zu nodes, no cell refined", s.nodes));
+    }
+  }
+  field(out, "faces", format("%zu", s.faces));
+  if (s.cells == 0) {
+    field(out, "cells", "none: this method keeps no table of cells");
+  } else {
+    field(out, "cells", format("%zu", s.cells));
+    field(out, "entries", format("%zu (faces listed, summed over the cells)", s.entries));
+    field(out, "faces per cell", format("max %zu, mean %.2f", s.maxPerCell, s.meanPerCell));
+    field(out, "crowded cells",
+          format("%zu (more than %zu faces: searched by a walk)", s.crowdedCells, kCrowdedCell3D));
+  }
+  field(out, "memory", byteCount(s.bytes));
+  field(out, "bytes per face", format("%.1f", s.bytesPerFace));
+  field(out, "build time", duration(s.buildSeconds));
+  if (s.cells > 0) reportHistogram(out, s, "faces");
+}
+
+// every method, one row each
+void reportTable(Output& out, const std::vector<Locator3D>& locators, std::uint32_t resolution) {
+  out.put(format("Methods (%s)\n", resolution ? format("cubemap resolution %u", resolution).c_str()
+                                              : "resolution chosen from the polyhedron"));
+  out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s %12s %11s %10s\n", "method", "query", "cells",
+                 "entries", "max", "mean", "crowded", "bytes", "bytes/face", "build"));
+  for (const Locator3D& locator : locators) {
+    const Method3D m = locator.method();
+    const Stats3D s = locator.stats();
+    const std::string name(toString(m));
+    if (s.cells == 0) {
+      out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s", name.c_str(), cost(m), "-", "-", "-", "-",
+                     "-"));
+    } else {
+      out.put(format("  %-10s %-9s %8zu %9zu %5zu %6.2f %8zu", name.c_str(), cost(m), s.cells,
+                     s.entries, s.maxPerCell, s.meanPerCell, s.crowdedCells));
+    }
+    out.put(
+        format(" %12zu %11.1f %10s\n", s.bytes, s.bytesPerFace, duration(s.buildSeconds).c_str()));
+  }
+  out.put(
+      format("\n'max' and 'mean' count faces per cell; a crowded cell (more than %zu faces) is\n"
+             "searched by a walk. One method in detail, with a histogram of its cells:\n"
+             "  convexloc info SHAPE --method cubemap\n",
+             kCrowdedCell3D));
+}
+
+}  // namespace
+
+void info3D(const InfoOptions& o) {
+  const bool one = !o.method.empty();
+  const Method3D method = method3DOrFail(o.method);
+  std::size_t verticesRead = 0;
+  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead);
+
+  // build everything before writing, so that a rejected resolution leaves stdout empty
+  std::vector<Locator3D> locators;
+  locators.reserve(std::size(kAllMethods3D));
+  aboutFile(o.shape, [&] {
+    if (one) {
+      locators.emplace_back(polyhedron, method, o.resolution);
+    } else {
+      for (Method3D m : kAllMethods3D) locators.emplace_back(polyhedron, m, o.resolution);
+    }
+  });
+
+  Output out;
+  out.put("Shape " + displayName(o.shape) + "\n\n");
+  reportPolyhedron(out, polyhedron, verticesRead);
+  if (one)
+    reportMethod(out, locators.front(), o.resolution);
   else
     reportTable(out, locators, o.resolution);
   out.finish();

@@ -1,8 +1,9 @@
-// convexloc — exact point location in convex polygons, from the command line.
+// convexloc — exact point location in convex polygons and polyhedra, from the command line.
 //
 // This file only parses the command line (CLI11) and maps every outcome to an exit code:
 // 0 done, 1 bad input (the message names the file and line), 2 bad usage (with the usage).
-// The commands live in classify.cpp, info.cpp, generate.cpp and polyhedron.cpp.
+// The commands live in classify.cpp, info.cpp and generate.cpp; a SHAPE ending in .off or
+// .obj is a polyhedron and takes the 3D half of each.
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -25,12 +26,20 @@ namespace convexloc::cli {
 namespace {
 
 constexpr const char* kMethodHelp =
-    "halfplane O(N), wedge O(log N), slab O(log N), uniform O(1) or polar O(1)";
+    "polygon: halfplane O(N), wedge O(log N), slab O(log N), uniform O(1) or polar O(1) "
+    "(default polar); polyhedron: halfspace O(F), walk O(sqrt F) or cubemap O(1) (default "
+    "cubemap)";
+
+constexpr const char* kResolutionHelp =
+    "uniform: slab count; polar: slabs per octant; cubemap: grid cells per side of each cube "
+    "face (0: chosen from the shape)";
 
 constexpr const char* kFormat = R"(
-Files are text: one point 'x y' per line, numbers separated by spaces and/or a comma,
-'#' starts a comment, blank lines are skipped. A polygon file lists the vertices of a
-convex polygon in either order around it.)";
+Files are text: one point 'x y' (polygon) or 'x y z' (polyhedron) per line, numbers
+separated by spaces and/or a comma, '#' starts a comment, blank lines are skipped. A
+polygon file lists the vertices of a convex polygon in either order around it. A SHAPE
+ending in .off or .obj is a closed convex polyhedron in that format, faces in either
+orientation.)";
 
 constexpr const char* kExamples = R"(
 
@@ -39,6 +48,9 @@ Examples:
   convexloc info assets/hexagon.txt
   convexloc generate polygon --kind random --n 100 --seed 7 > polygon.txt
   convexloc generate points --shape polygon.txt --count 1000000 | convexloc classify polygon.txt -
+  convexloc classify assets/cube.off assets/cube-points-3d.txt --method cubemap
+  convexloc generate polyhedron --kind geodesic --n 100000 > sphere.off
+  convexloc info sphere.off
 
 Exit status: 0 done, 1 bad input, 2 bad usage.)";
 
@@ -83,7 +95,7 @@ int usageError(const CLI::App& app, const std::string& message) {
 
 // parses the command line and runs the command it names
 int run(int argc, char** argv) {
-  CLI::App app{"convexloc: exact point location in convex polygons", "convexloc"};
+  CLI::App app{"convexloc: exact point location in convex polygons and polyhedra", "convexloc"};
   const CLI::Validator anyCount = wholeNumber(UINT64_MAX);
   const CLI::Validator resolution = wholeNumber(UINT32_MAX);
   app.set_version_flag("--version", "convexloc " CONVEXLOC_VERSION);
@@ -94,33 +106,33 @@ int run(int argc, char** argv) {
       "classify", "Print inside, boundary or outside for each point, one line per point, in order");
   classify
       ->add_option("SHAPE", classifyOptions.shape,
-                   "Polygon file, one vertex 'x y' per line (.off/.obj: a polyhedron)")
+                   "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
       ->required();
   classify
       ->add_option("POINTS", classifyOptions.points,
-                   "Points file, one point 'x y' per line; '-' reads standard input")
+                   "Points file, one point 'x y' ('x y z' for a polyhedron) per line; '-' reads "
+                   "standard input")
       ->required();
-  classify->add_option("-m,--method", classifyOptions.method, kMethodHelp)->capture_default_str();
-  classify
-      ->add_option("-r,--resolution", classifyOptions.resolution,
-                   "uniform: slab count; polar: slabs per octant (0: chosen from the shape)")
+  classify->add_option("-m,--method", classifyOptions.method, kMethodHelp);
+  classify->add_option("-r,--resolution", classifyOptions.resolution, kResolutionHelp)
       ->check(resolution)
       ->capture_default_str();
 
   InfoOptions infoOptions;
-  CLI::App* info = app.add_subcommand(
-      "info", "Describe the polygon and the subdivision each method builds on it");
-  info->add_option("SHAPE", infoOptions.shape, "Polygon file ('-' reads standard input)")
+  CLI::App* info =
+      app.add_subcommand("info", "Describe the shape and the subdivision each method builds on it");
+  info->add_option("SHAPE", infoOptions.shape,
+                   "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
       ->required();
   info->add_option("-m,--method", infoOptions.method,
                    std::string("Report one method in detail: ") + kMethodHelp +
-                       " (default: a table of all five)");
-  info->add_option("-r,--resolution", infoOptions.resolution,
-                   "uniform: slab count; polar: slabs per octant (0: chosen from the shape)")
+                       ". Without it: a table of every method for the shape");
+  info->add_option("-r,--resolution", infoOptions.resolution, kResolutionHelp)
       ->check(resolution)
       ->capture_default_str();
 
-  CLI::App* generate = app.add_subcommand("generate", "Write example polygons and point sets");
+  CLI::App* generate =
+      app.add_subcommand("generate", "Write example polygons, polyhedra and point sets");
   generate->require_subcommand(1);
   GeneratePolygonOptions polygonOptions;
   CLI::App* genPolygon = generate->add_subcommand(
@@ -136,10 +148,36 @@ int run(int argc, char** argv) {
       ->check(anyCount)
       ->capture_default_str();
 
+  GeneratePolyhedronOptions polyhedronOptions;
+  CLI::App* genPolyhedron = generate->add_subcommand(
+      "polyhedron",
+      "Write a convex polyhedron as OFF (or OBJ), faces counter-clockwise seen from outside, "
+      "exact to the bit");
+  genPolyhedron
+      ->add_option("-k,--kind", polyhedronOptions.kind,
+                   "tetrahedron, cube, octahedron, dodecahedron, icosahedron, geodesic, "
+                   "sphere-hull, cube-hull, ellipsoid-hull, thin-slab, offset, tiny-faces or "
+                   "coplanar")
+      ->required();
+  genPolyhedron
+      ->add_option("-n,--n", polyhedronOptions.n,
+                   "About how many triangles (at least 4; ignored by the platonic solids)")
+      ->check(anyCount)
+      ->capture_default_str();
+  genPolyhedron->add_option("-s,--seed", polyhedronOptions.seed, "Random seed")
+      ->check(anyCount)
+      ->capture_default_str();
+  genPolyhedron->add_option("-f,--format", polyhedronOptions.format, "off or obj")
+      ->capture_default_str();
+
   GeneratePointsOptions pointsOptions;
   CLI::App* genPoints = generate->add_subcommand(
-      "points", "Write query points around a shape, one 'x y' per line, exact to the bit");
-  genPoints->add_option("--shape", pointsOptions.shape, "Polygon file the points are for")
+      "points",
+      "Write query points around a shape, one 'x y' ('x y z' for a polyhedron) per line, "
+      "exact to the bit");
+  genPoints
+      ->add_option("--shape", pointsOptions.shape,
+                   "Polygon file or polyhedron (.off/.obj) the points are for")
       ->required();
   genPoints->add_option("-c,--count", pointsOptions.count, "How many points")
       ->check(anyCount)
@@ -148,8 +186,8 @@ int run(int argc, char** argv) {
       ->check(anyCount)
       ->capture_default_str();
   genPoints->add_flag("--near-boundary", pointsOptions.nearBoundary,
-                      "Hard cases: vertices, points on edges, one ulp off them (default: uniform "
-                      "in the bounding box grown by 10%)");
+                      "Hard cases: vertices, points on edges (and faces), one ulp off them "
+                      "(default: uniform in the bounding box grown by 10%)");
 
   // after the subcommands, which would otherwise inherit it
   app.footer(std::string(kFormat) + kExamples);
@@ -178,6 +216,8 @@ int run(int argc, char** argv) {
         info2D(infoOptions);
     } else if (*genPolygon) {
       generatePolygon(polygonOptions);
+    } else if (*genPolyhedron) {
+      generatePolyhedron(polyhedronOptions);
     } else if (*genPoints) {
       if (isPolyhedronPath(pointsOptions.shape))
         generatePoints3D(pointsOptions);
