@@ -267,6 +267,7 @@ int main(int argc, char** argv) {
       }
       in.wheel = io.MouseWheel;
       in.captured = io.WantCaptureMouse;
+      in.shift = io.KeyShift;
       in.hovering = ImGui::IsMousePosValid() && glfwGetWindowAttrib(window, GLFW_HOVERED);
       interaction.update(in, model);
       cv::handleKeys(model, ui);
@@ -282,6 +283,7 @@ int main(int argc, char** argv) {
     glViewport(0, 0, fbW, fbH);
     const cv::Rgba bg = cv::paletteFor(model.settings.theme).background;
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    glDepthMask(GL_TRUE);  // a clear honours the depth mask
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     view.draw(model, renderer, {static_cast<float>(fbW), static_cast<float>(fbH)}, pixelRatio);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -63,11 +63,22 @@ void commonUniforms(ShaderProgram& p, const FrameParams& f) {
   p.set("uPixelRatio", f.pixelRatio);
 }
 
-void blending(bool depth) {
+void blending(const FrameParams& f) {
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  if (depth) glEnable(GL_DEPTH_TEST);
-  else glDisable(GL_DEPTH_TEST);
+  if (f.depth) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
+  glDepthMask(f.depthWrite ? GL_TRUE : GL_FALSE);
+  if (f.offset) {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+  } else {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
 }
 
 }  // namespace
@@ -213,20 +224,29 @@ void Renderer::uploadPoints(std::span<const Vec3> points, std::span<const Locati
   pointCount_ = n;
 }
 
-void Renderer::drawFills(Layer layer, const FrameParams& f) {
+void Renderer::drawFills(Layer layer, const FrameParams& f, Cull cull) {
   const GpuLayer& l = layers_[static_cast<int>(layer)];
   if (!l.fills || !fill_.ready()) return;
-  blending(f.depth);
+  blending(f);
+  if (cull == Cull::None) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glCullFace(cull == Cull::Front ? GL_FRONT : GL_BACK);
+  }
   commonUniforms(fill_, f);
   fill_.set("uEye", f.eyeLocal);
   glBindVertexArray(l.fillVao);
   glDrawArrays(GL_TRIANGLES, 0, l.fills);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 void Renderer::drawSegments(Layer layer, const FrameParams& f) {
   const GpuLayer& l = layers_[static_cast<int>(layer)];
   if (!l.segments || !segments_.ready()) return;
-  blending(f.depth);
+  blending(f);
   commonUniforms(segments_, f);
   segments_.set("uViewport", f.framebuffer);
   glBindVertexArray(l.segVao);
@@ -236,7 +256,10 @@ void Renderer::drawSegments(Layer layer, const FrameParams& f) {
 void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
   const GpuLayer& l = layers_[static_cast<int>(layer)];
   if (!l.markers || !markers_.ready()) return;
-  blending(false);
+  FrameParams flat = f;
+  flat.depth = false;
+  flat.offset = false;
+  blending(flat);
   glEnable(GL_PROGRAM_POINT_SIZE);
   commonUniforms(markers_, f);
   glBindVertexArray(l.markVao);
@@ -245,7 +268,7 @@ void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
 
 void Renderer::drawPoints(const FrameParams& f) {
   if (!pointCount_ || !points_.ready()) return;
-  blending(f.depth);
+  blending(f);
   glEnable(GL_PROGRAM_POINT_SIZE);
   commonUniforms(points_, f);
   points_.set("uPointSize", f.pointSize);

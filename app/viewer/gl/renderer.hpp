@@ -18,8 +18,11 @@
 namespace convexloc::viewer {
 
 // the draw lists the renderer keeps
-enum class Layer : int { Structure = 0, Overlay = 1 };
-inline constexpr int kLayerCount = 2;
+enum class Layer : int { Structure = 0, Overlay = 1, Mesh = 2, Section = 3 };
+inline constexpr int kLayerCount = 4;
+
+// which triangles a fill draw skips
+enum class Cull { None, Front, Back };
 
 // what a frame's draw calls share
 struct FrameParams {
@@ -32,6 +35,8 @@ struct FrameParams {
   Rgba classColours[3];
   Rgba rim;
   bool depth = false;            // 3D: depth-test
+  bool depthWrite = false;       // 3D: and write depth
+  bool offset = false;           // push fills back a little (so edges drawn on them win)
 };
 
 class Renderer {
@@ -56,7 +61,7 @@ public:
   void uploadPoints(std::span<const Vec3> points, std::span<const Location> classes, glm::dvec3 origin);
   std::size_t pointCount() const { return pointCount_; }
 
-  void drawFills(Layer layer, const FrameParams& f);
+  void drawFills(Layer layer, const FrameParams& f, Cull cull = Cull::None);
   void drawSegments(Layer layer, const FrameParams& f);
   void drawMarkers(Layer layer, const FrameParams& f);
   void drawPoints(const FrameParams& f);

@@ -4,82 +4,189 @@
 #include <cmath>
 
 #include "logic/structure2d.hpp"
+#include "logic/structure3d.hpp"
 
 namespace convexloc::viewer {
 namespace {
 
-bool sameOptions(const View2DOptions& a, const View2DOptions& b) {
-  return a.showStructure == b.showStructure && a.showTints == b.showTints &&
-         a.showBox == b.showBox && a.showOctants == b.showOctants &&
-         a.showLabels == b.showLabels && a.showHandles == b.showHandles;
+bool same(const View2DOptions& a, const View2DOptions& b) {
+  return a.showStructure == b.showStructure && a.showTints == b.showTints && a.showBox == b.showBox &&
+         a.showOctants == b.showOctants && a.showLabels == b.showLabels && a.showHandles == b.showHandles;
+}
+
+bool same(const View3DOptions& a, const View3DOptions& b) {
+  return a.showMesh == b.showMesh && a.transparent == b.transparent && a.wireframe == b.wireframe &&
+         a.showCube == b.showCube && a.showTints == b.showTints && a.showSlice == b.showSlice &&
+         a.showLabels == b.showLabels;
 }
 
 // the camera has wandered so far from the origin, in pixels, that floats would blur
 constexpr double kRebasePixels = 1e5;
 
+void classColours(const Palette& pal, FrameParams& f) {
+  f.classColours[0] = pal.inside;
+  f.classColours[1] = pal.boundary;
+  f.classColours[2] = pal.outside;
+  f.rim = pal.rim;
+}
+
 }  // namespace
 
-void SceneView::sync(const Model& model, Renderer& renderer) {
+void SceneView::sync(Model& model, Renderer& renderer) {
+  const bool dimChanged = first_ || model.dim != dim_;
+  const bool restyle = dimChanged || theme_ != model.settings.theme ||
+                       !same(options2_, model.settings.view2d) || !same(options3_, model.settings.view3d);
+  if (dimChanged) {
+    seen_ = {~0ull, ~0ull, ~0ull, ~0ull, ~0ull};
+    mesh_.clear();
+    section_.clear();
+    renderer.upload(Layer::Mesh, mesh_, origin_);
+    renderer.upload(Layer::Section, section_, origin_);
+  }
+  if (model.dim == Dim::Two) sync2d(model, renderer, restyle);
+  else sync3d(model, renderer, restyle);
+  dim_ = model.dim;
+  theme_ = model.settings.theme;
+  options2_ = model.settings.view2d;
+  options3_ = model.settings.view3d;
+  first_ = false;
+}
+
+void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
   const Scene2D& scene = model.scene2d;
   const Versions& v = scene.versions();
   const Palette& pal = paletteFor(model.settings.theme);
   const View2DOptions& opt = model.settings.view2d;
 
   bool rebase = false;
-  if (first_ || v.shape != shape_) {
+  if (v.shape != seen_.shape || scene_ != &scene) {
     const Box2 b = scene.polygon().bounds();
     origin_ = {0.5 * b.lo.x + 0.5 * b.hi.x, 0.5 * b.lo.y + 0.5 * b.hi.y, 0.0};
     rebase = true;
   }
   const glm::dvec2 c = model.camera2d.centre();
-  const double drift = glm::length(c - glm::dvec2(origin_)) * model.camera2d.scale();
-  if (drift > kRebasePixels) {
+  if (glm::length(c - glm::dvec2(origin_)) * model.camera2d.scale() > kRebasePixels) {
     origin_ = {c.x, c.y, 0.0};
     rebase = true;
   }
-
-  const bool restyle = first_ || theme_ != model.settings.theme || !sameOptions(options_, opt);
-  if (rebase || restyle || v.structure != structureV_ || v.shape != shape_) {
+  if (rebase || restyle || v.structure != seen_.structure || v.shape != seen_.shape) {
     buildStructure2D(scene, pal, opt, structure_);
     renderer.upload(Layer::Structure, structure_, origin_);
   }
-  if (rebase || restyle || v.overlay != overlayV_ || v.structure != structureV_) {
+  if (rebase || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
     buildOverlay2D(scene, pal, opt, overlay_);
     renderer.upload(Layer::Overlay, overlay_, origin_);
   }
-  if (rebase || v.points != points_) renderer.uploadPoints(scene.points(), scene.classes(), origin_);
-
-  shape_ = v.shape;
-  structureV_ = v.structure;
-  overlayV_ = v.overlay;
-  points_ = v.points;
-  theme_ = model.settings.theme;
-  options_ = opt;
-  first_ = false;
+  if (rebase || v.points != seen_.points) renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+  seen_ = v;
+  scene_ = &scene;
 }
 
-void SceneView::draw(const Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio) {
+void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
+  Scene3D& scene = model.scene3d();
+  const Versions& v = scene.versions();
   const Palette& pal = paletteFor(model.settings.theme);
-  const Camera2D& cam = model.camera2d;
+  const View3DOptions& opt = model.settings.view3d;
+
+  const bool reshape = v.shape != seen_.shape || scene_ != &scene;
+  if (reshape) origin_ = scene.bounds().middle();
+  if (reshape || restyle) {
+    buildMesh3D(scene, pal, opt, mesh_);
+    renderer.upload(Layer::Mesh, mesh_, origin_);
+  }
+  // the cube faces seen from inside change only when the eye crosses one's plane
+  const unsigned far = farCubeFaces(scene, model.camera3d.eye());
+  if (reshape || restyle || v.structure != seen_.structure || far != farFaces_) {
+    View3DOptions noSlice = opt;
+    noSlice.showSlice = false;  // the section has its own layer
+    buildStructure3D(scene, pal, noSlice, far, structure_);
+    farFaces_ = far;
+    renderer.upload(Layer::Structure, structure_, origin_);
+  }
+  if (reshape || restyle || v.section != seen_.section || v.structure != seen_.structure) {
+    section_.clear();
+    if (opt.showSlice) {
+      // the section alone, so that moving the plane rebuilds only it
+      DrawList all;
+      View3DOptions only;
+      only.wireframe = only.showCube = only.showLabels = false;
+      buildStructure3D(scene, pal, only, 0, all);
+      section_.fills = std::move(all.fills);
+      section_.segments = std::move(all.segments);
+    }
+    renderer.upload(Layer::Section, section_, origin_);
+  }
+  if (reshape || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
+    buildOverlay3D(scene, pal, opt, overlay_);
+    renderer.upload(Layer::Overlay, overlay_, origin_);
+  }
+  if (reshape || v.points != seen_.points) renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+  seen_ = v;
+  scene_ = &scene;
+}
+
+void SceneView::draw(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio) {
+  const Palette& pal = paletteFor(model.settings.theme);
   FrameParams f;
-  f.clipFromLocal = cam.clipFromLocal(glm::dvec2(origin_));
   f.framebuffer = fbSize;
   f.pixelRatio = pixelRatio;
+  f.visibleMask = model.settings.visibleMask;
+  classColours(pal, f);
+
+  if (model.dim == Dim::Two) {
+    const Camera2D& cam = model.camera2d;
+    f.clipFromLocal = cam.clipFromLocal(glm::dvec2(origin_));
+    const glm::dvec2 vp = cam.viewport();
+    pointSize_ = model.settings.pointSize > 0.0f
+                     ? model.settings.pointSize
+                     : autoPointSize(model.scene2d.points().size(), 0.6 * vp.x * vp.y);
+    f.pointSize = pointSize_;
+    renderer.drawFills(Layer::Structure, f);
+    renderer.drawSegments(Layer::Structure, f);
+    renderer.drawPoints(f);
+    renderer.drawMarkers(Layer::Structure, f);
+    renderer.drawFills(Layer::Overlay, f);
+    renderer.drawSegments(Layer::Overlay, f);
+    renderer.drawMarkers(Layer::Overlay, f);
+    return;
+  }
+
+  const Camera3D& cam = model.camera3d;
+  Scene3D& scene = model.scene3d();
+  f.clipFromLocal = cam.clipFromLocal(origin_);
+  f.eyeLocal = glm::vec3(cam.eye() - origin_);
   const glm::dvec2 vp = cam.viewport();
   pointSize_ = model.settings.pointSize > 0.0f
                    ? model.settings.pointSize
-                   : autoPointSize(model.scene2d.points().size(), 0.6 * vp.x * vp.y);
+                   : 0.8f * autoPointSize(scene.points().size(), 0.6 * vp.x * vp.y);
   f.pointSize = pointSize_;
-  f.visibleMask = model.settings.visibleMask;
-  f.classColours[0] = pal.inside;
-  f.classColours[1] = pal.boundary;
-  f.classColours[2] = pal.outside;
-  f.rim = pal.rim;
-  f.depth = false;
+  const bool transparent = model.settings.view3d.transparent;
 
+  // opaque faces first, pushed back a little so their edges draw over them
+  f.depth = true;
+  if (!transparent) {
+    f.depthWrite = true;
+    f.offset = true;
+    renderer.drawFills(Layer::Mesh, f);
+    f.offset = false;
+  }
+  // see-through things test depth but do not write it
+  f.depthWrite = false;
   renderer.drawFills(Layer::Structure, f);
+  renderer.drawFills(Layer::Section, f);
   renderer.drawSegments(Layer::Structure, f);
+  renderer.drawSegments(Layer::Section, f);
+  f.depthWrite = true;
   renderer.drawPoints(f);
+  if (transparent) {
+    // a convex shell: its far side, then its near side, is back to front
+    f.depthWrite = false;
+    renderer.drawFills(Layer::Mesh, f, Cull::Front);
+    renderer.drawFills(Layer::Mesh, f, Cull::Back);
+  }
+  // the overlay shows through everything
+  f.depth = false;
+  f.depthWrite = false;
   renderer.drawMarkers(Layer::Structure, f);
   renderer.drawFills(Layer::Overlay, f);
   renderer.drawSegments(Layer::Overlay, f);

@@ -23,6 +23,12 @@ struct Ray3 {
   glm::dvec3 at(double t) const { return origin + t * direction; }
 };
 
+// an axis-aligned plane: coordinate `axis` (0 x, 1 y, 2 z) equals `offset`
+struct SlicePlane {
+  int axis = 2;
+  double offset = 0.0;
+};
+
 // a window pixel with the clip-space w of the point it came from (w <= 0: behind the eye)
 struct Projected {
   glm::dvec2 screen{0.0};

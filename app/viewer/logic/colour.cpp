@@ -43,7 +43,7 @@ Palette makeDark() {
   p.negative = hex(0xff7a3d);
   p.handle = hex(0xf4f5f7);
   p.handleError = kVermillion;
-  p.meshFill = hex(0x8fb8de, 0.35f);
+  p.meshFill = hex(0x8fb8de, 0.22f);
   p.meshEdge = hex(0xe8eaed, 0.8f);
   p.cube = hex(0x9aa0a6, 0.7f);
   p.slicePlane = hex(0xcfd8e3, 0.12f);
@@ -77,7 +77,7 @@ Palette makeLight() {
   p.negative = kVermillion;
   p.handle = hex(0x1f2328);
   p.handleError = kVermillion;
-  p.meshFill = hex(0x5b8fc0, 0.30f);
+  p.meshFill = hex(0x5b8fc0, 0.20f);
   p.meshEdge = hex(0x1f2328, 0.75f);
   p.cube = hex(0x5f6770, 0.7f);
   p.slicePlane = hex(0x40607f, 0.10f);

@@ -77,15 +77,49 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
 
 void Interaction::update3d(const PointerInput& in, Model& model) {
   Camera3D& cam = model.camera3d;
-  if (gesture_ == Gesture::None && (in.captured || !in.hovering)) return;
+  Scene3D& scene = model.scene3d();
+  if (gesture_ == Gesture::None && (in.captured || !in.hovering)) {
+    scene.hover(std::nullopt);
+    return;
+  }
   if (gesture_ == Gesture::None) {
     if (in.wheel != 0.0) cam.zoom(std::pow(kWheelZoom, in.wheel));
-    if (in.pressed[0]) gesture_ = Gesture::Orbit;
-    else if (in.pressed[1] || in.pressed[2]) gesture_ = Gesture::Pan;
+    if (in.pressed[0]) {
+      gesture_ = Gesture::Pending;
+      pressAt_ = in.pos;
+    } else if (in.pressed[1] || in.pressed[2]) {
+      gesture_ = Gesture::Pan;
+    }
   }
-  if (gesture_ == Gesture::Orbit) cam.orbit(in.delta);
-  if (gesture_ == Gesture::Pan) cam.pan(in.delta);
-  if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
+  switch (gesture_) {
+    case Gesture::Pending:
+      if (glm::length(in.pos - pressAt_) > kClickSlop) {
+        gesture_ = Gesture::Orbit;
+        cam.orbit(in.pos - pressAt_);
+      } else if (in.released[0] || !in.down[0]) {
+        // a click: Shift pins the cell under the cursor; else a point on the slicing plane,
+        // or, off the plane, the cell under the cursor is pinned
+        const Ray3 ray = cam.rayThrough(in.pos);
+        const auto hit = in.shift ? std::nullopt : scene.hitSlice(ray);
+        if (hit) scene.place(toVec3(*hit));
+        else scene.pin(scene.pickCell(ray));
+        gesture_ = Gesture::None;
+      }
+      break;
+    case Gesture::Orbit:
+      cam.orbit(in.delta);
+      if (!in.down[0]) gesture_ = Gesture::None;
+      break;
+    case Gesture::Pan:
+      cam.pan(in.delta);
+      if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
+      break;
+    case Gesture::None:
+    case Gesture::DragVertex:
+      break;
+  }
+  if (gesture_ == Gesture::None || gesture_ == Gesture::Pending) scene.hover(cam.rayThrough(in.pos));
+  else scene.hover(std::nullopt);
 }
 
 }  // namespace convexloc::viewer

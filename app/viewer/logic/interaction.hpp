@@ -18,6 +18,7 @@ struct PointerInput {
   bool released[3] = {};        // went up this frame
   double wheel = 0.0;           // notches, positive away from the user
   bool captured = false;        // ImGui wants the mouse (io.WantCaptureMouse)
+  bool shift = false;           // a Shift key is down
   bool hovering = true;         // the cursor is over the window
 };
 

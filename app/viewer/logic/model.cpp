@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "convexloc/generate2d.hpp"
+#include "convexloc/generate3d.hpp"
 #include "logic/presets.hpp"
 
 namespace convexloc::viewer {
@@ -40,6 +41,25 @@ void Model::collectErrors() {
     seen2d_ = scene2d.errorSerial();
     if (!scene2d.error().empty()) fail(scene2d.error());
   }
+  if (scene3d_ && scene3d_->errorSerial() != seen3d_) {
+    seen3d_ = scene3d_->errorSerial();
+    if (!scene3d_->error().empty()) fail(scene3d_->error());
+  }
+}
+
+Scene3D& Model::scene3d() {
+  if (!scene3d_) {
+    scene3d_ = std::make_unique<Scene3D>();
+    seen3d_ = scene3d_->errorSerial();
+  }
+  return *scene3d_;
+}
+
+void Model::show(Dim d) {
+  if (d == dim) return;
+  if (d == Dim::Three) scene3d();
+  dim = d;
+  requestFit();
 }
 
 void Model::remember(const std::string& path) {
@@ -51,8 +71,14 @@ void Model::remember(const std::string& path) {
 bool Model::open(const std::string& path) {
   const std::string ext = extensionOf(path);
   if (ext == ".off" || ext == ".obj") {
-    fail(path + ": polyhedra (.off, .obj) need core's 3D locators, which this build lacks");
-    return false;
+    if (!scene3d().loadFile(path)) {
+      collectErrors();
+      return false;
+    }
+    dim = Dim::Three;
+    remember(path);
+    requestFit();
+    return true;
   }
   if (!scene2d.loadFile(path)) {
     collectErrors();
@@ -71,8 +97,14 @@ bool Model::applyPreset(std::string_view name) {
     return false;
   }
   if (p->solid) {
-    fail("the preset '" + std::string(name) + "' is a polyhedron; this build has no 3D core");
-    return false;
+    const PolyhedronKind kind = name == "tiny-faces" ? PolyhedronKind::TinyFaces : PolyhedronKind::Coplanar;
+    if (!scene3d().generate(kind, 200, 1)) {
+      collectErrors();
+      return false;
+    }
+    dim = Dim::Three;
+    requestFit();
+    return true;
   }
   const std::vector<Vec2> v = presetPolygon(name);
   if (!scene2d.setShape(v, std::string(p->title) + " (" + std::to_string(v.size()) + " input points)")) {
@@ -94,39 +126,76 @@ std::string Model::apply(const Options& o) {
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
   settings.showUi = !o.hideUi;
-  if (o.method) {
-    if (auto m = parseMethod2D(*o.method)) scene2d.setMethod(*m);
-    else note("unknown method '" + *o.method + "' (halfplane, wedge, slab, uniform, polar)");
-  }
+  // a 3D method, --3d or a polyhedron kind ask for the 3D scene
+  const bool method3d = o.method && parseMethod3D(*o.method).has_value();
+  if (o.method && !method3d && !parseMethod2D(*o.method))
+    note("unknown method '" + *o.method + "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
   const std::uint64_t seed = o.seed.value_or(1);
   if (!o.shape.empty()) {
     if (!open(o.shape)) note(error_);
   } else if (o.preset) {
     if (!applyPreset(*o.preset)) note(error_);
   } else if (o.generate) {
-    if (auto k = parsePolygonKind(*o.generate)) {
-      if (!scene2d.generate(*k, o.n.value_or(16), seed)) {
+    const auto k2 = parsePolygonKind(*o.generate);
+    const auto k3 = parsePolyhedronKind(*o.generate);
+    if (k3 && (!k2 || method3d || o.solid)) {
+      if (!scene3d().generate(*k3, o.n.value_or(320), seed)) {
+        collectErrors();
+        note(error_);
+      } else {
+        dim = Dim::Three;
+      }
+    } else if (k2) {
+      if (!scene2d.generate(*k2, o.n.value_or(16), seed)) {
         collectErrors();
         note(error_);
       }
     } else {
       note("unknown generator kind '" + *o.generate + "'");
     }
+  } else if (o.solid || method3d) {
+    scene3d();
+    dim = Dim::Three;
   }
-  // the method again: a preset may have chosen one, the command line wins
-  if (o.method) {
-    if (auto m = parseMethod2D(*o.method)) scene2d.setMethod(*m);
-  }
-  if (o.resolution && !scene2d.setResolution(*o.resolution)) {
-    collectErrors();
-    note(error_);
-  }
-  if (o.spray || o.seed || o.nearBoundary) {
-    SpraySettings s = scene2d.spraySettings();
-    if (o.spray) s.count = *o.spray;
-    if (o.seed) s.seed = *o.seed;
-    s.nearBoundary = o.nearBoundary;
-    scene2d.spray(s);
+  if (dim == Dim::Two) {
+    if (o.method && !method3d) scene2d.setMethod(*parseMethod2D(*o.method));
+    else if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon");
+    if (o.resolution && !scene2d.setResolution(*o.resolution)) {
+      collectErrors();
+      note(error_);
+    }
+    if (o.spray || o.seed || o.nearBoundary) {
+      SpraySettings s = scene2d.spraySettings();
+      if (o.spray) s.count = *o.spray;
+      if (o.seed) s.seed = *o.seed;
+      s.nearBoundary = o.nearBoundary;
+      scene2d.spray(s);
+    }
+    if (o.probe) scene2d.place(*o.probe);
+    if (o.hover) scene2d.hover(*o.hover);
+    if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
+  } else {
+    Scene3D& s3 = scene3d();
+    if (o.method && method3d) s3.setMethod(*parseMethod3D(*o.method));
+    else if (o.method) note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
+    if (o.resolution && !s3.setResolution(*o.resolution)) {
+      collectErrors();
+      note(error_);
+    }
+    if (o.spray || o.seed || o.nearBoundary) {
+      SpraySettings s = s3.spraySettings();
+      if (o.spray) s.count = *o.spray;
+      if (o.seed) s.seed = *o.seed;
+      s.nearBoundary = o.nearBoundary;
+      s3.spray(s);
+    }
+    if (o.slice) s3.setSlice(*o.slice);
+    if (o.probe3) s3.place(*o.probe3);
+    if (o.cell) {
+      if (*o.cell < s3.cells().size()) s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
+      else note("--cell " + std::to_string(*o.cell) + ": the scene has " + std::to_string(s3.cells().size()) + " cells");
+    }
+    if (o.probe || o.hover) note("--probe X,Y and --hover are for a 2D scene");
   }
   if (o.show) {
     if (*o.show == "inside") settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
@@ -134,15 +203,25 @@ std::string Model::apply(const Options& o) {
     else if (*o.show == "boundary") settings.visibleMask = classBit(Location::Boundary);
     else settings.visibleMask = kAllClasses;
   }
-  if (o.probe) scene2d.place(*o.probe);
-  if (o.hover) scene2d.hover(*o.hover);
   collectErrors();
   requestFit();
   return problem;
 }
 
 void Model::fit(ScreenRect area) {
-  if (dim == Dim::Two) camera2d.fit(scene2d.polygon().bounds(), area);
+  if (dim == Dim::Two) {
+    camera2d.fit(scene2d.polygon().bounds(), area);
+    return;
+  }
+  // the polyhedron and the cube the cells are drawn on
+  Scene3D& s = scene3d();
+  Bounds3 b = s.bounds();
+  if (const double h = s.cubeHalfSize(); h > 0.0 && s.centre()) {
+    const glm::dvec3 c = toGlm(*s.centre());
+    b.lo = glm::min(b.lo, c - h);
+    b.hi = glm::max(b.hi, c + h);
+  }
+  camera3d.fit(b, area);
 }
 
 }  // namespace convexloc::viewer

@@ -15,7 +15,9 @@
 #include "logic/options.hpp"
 #include "logic/picking.hpp"
 #include "logic/scene2d.hpp"
+#include "logic/scene3d.hpp"
 #include "logic/structure2d.hpp"
+#include "logic/structure3d.hpp"
 
 namespace convexloc::viewer {
 
@@ -29,6 +31,7 @@ struct Settings {
   float pointSize = 0.0f;            // pixels; 0 chooses from the count and the window
   unsigned visibleMask = kAllClasses;  // which classes of sprayed points are drawn
   View2DOptions view2d;
+  View3DOptions view3d;
 };
 
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
@@ -40,6 +43,11 @@ public:
 
   Dim dim = Dim::Two;
   Scene2D scene2d;
+  // the 3D scene, made on first use (building it takes a moment)
+  Scene3D& scene3d();
+  bool hasScene3d() const { return scene3d_ != nullptr; }
+  // shows the 2D or the 3D scene
+  void show(Dim d);
   Camera2D camera2d;
   Camera3D camera3d;
   Settings settings;
@@ -73,6 +81,8 @@ public:
 
 private:
   void remember(const std::string& path);
+  std::unique_ptr<Scene3D> scene3d_;
+  std::uint64_t seen3d_ = 0;
   bool fitPending_ = true;
   std::string error_;
   std::uint64_t errorSerial_ = 0;

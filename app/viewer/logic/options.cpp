@@ -33,6 +33,14 @@ bool parsePoint(std::string_view s, Vec2& out) {
   return parseDouble(s.substr(0, comma), out.x) && parseDouble(s.substr(comma + 1), out.y);
 }
 
+// "X,Y,Z"
+bool parsePoint3(std::string_view s, Vec3& out) {
+  const std::size_t a = s.find(','), b = a == std::string_view::npos ? a : s.find(',', a + 1);
+  if (b == std::string_view::npos) return false;
+  return parseDouble(s.substr(0, a), out.x) && parseDouble(s.substr(a + 1, b - a - 1), out.y) &&
+         parseDouble(s.substr(b + 1), out.z);
+}
+
 // a count written plainly or as 1e6
 bool parseCount(std::string_view s, std::size_t& out) {
   if (parseInt<std::size_t>(s, 0, std::size_t{1} << 26, out)) return true;
@@ -98,10 +106,31 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
       if (!value(v) || (v != "all" && v != "inside" && v != "outside" && v != "boundary"))
         return fail("--show needs all, inside, outside or boundary");
       o.show = std::string(v);
-    } else if (a == "--probe" || a == "--hover") {
+    } else if (a == "--probe") {
       Vec2 p;
-      if (!value(v) || !parsePoint(v, p)) return fail(std::string(a) + " needs X,Y");
-      (a == "--probe" ? o.probe : o.hover) = p;
+      Vec3 q;
+      if (!value(v)) return fail("--probe needs X,Y or X,Y,Z");
+      if (parsePoint3(v, q)) o.probe3 = q;
+      else if (parsePoint(v, p)) o.probe = p;
+      else return fail("--probe needs X,Y or X,Y,Z");
+    } else if (a == "--hover") {
+      Vec2 p;
+      if (!value(v) || !parsePoint(v, p)) return fail("--hover needs X,Y");
+      o.hover = p;
+    } else if (a == "--3d") {
+      o.solid = true;
+    } else if (a == "--slice") {
+      // AXIS=VALUE, e.g. z=0.25
+      if (!value(v) || v.size() < 3 || v[1] != '=' || (v[0] != 'x' && v[0] != 'y' && v[0] != 'z'))
+        return fail("--slice needs AXIS=VALUE, e.g. z=0.25");
+      SlicePlane s;
+      s.axis = v[0] - 'x';
+      if (!parseDouble(v.substr(2), s.offset)) return fail("--slice needs AXIS=VALUE, e.g. z=0.25");
+      o.slice = s;
+    } else if (a == "--cell") {
+      std::size_t k = 0;
+      if (!value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k)) return fail("--cell needs a cell index");
+      o.cell = k;
     } else if (a == "--theme") {
       if (!value(v) || (v != "dark" && v != "light")) return fail("--theme needs dark or light");
       o.theme = v == "dark" ? Theme::Dark : Theme::Light;
@@ -160,8 +189,11 @@ Scene:
   --spray N             spray N points (0 .. 10^7; 1e6 works) classified by the locator
   --near-boundary       spray core's hard cases on and next to the boundary instead
   --show WHICH          all | inside | outside | boundary points
-  --probe X,Y           place a point there and show its trace
-  --hover X,Y           hover there (shows the cell under it)
+  --probe X,Y[,Z]       place a point there and show its trace
+  --hover X,Y           2D: hover there (shows the cell under it)
+  --3d                  the 3D scene (a polyhedron with the cube map) without a file
+  --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
+  --cell K              3D: pin cube-map cell K (its pyramid and the faces it lists)
 View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
@@ -176,8 +208,9 @@ Without hands:
   --no-xvfb             without a display, fail instead of re-running under xvfb-run
 
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
-place a point, drag a vertex handle to edit the polygon. Keys: F fit, H hide panels,
-1..5 method, Space new spray, Esc clear the point, F12 screenshot.
+place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
+drag a vertex handle to edit the polygon. Keys: F fit, H hide panels, 1..5 method,
+Space new spray, Esc clear the point, F12 screenshot.
 )";
 }
 

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "convexloc/geometry.hpp"
+#include "logic/camera3d.hpp"
 #include "logic/colour.hpp"
 
 namespace convexloc::viewer {
@@ -26,6 +27,10 @@ struct Options {
   bool nearBoundary = false;              // spray core's hard cases near the boundary
   std::optional<std::string> show;        // all | inside | outside | boundary
   std::optional<Vec2> probe;              // place a point there (2D world coordinates)
+  std::optional<Vec3> probe3;             // place a point there (3D)
+  std::optional<SlicePlane> slice;        // 3D: the slicing plane
+  std::optional<std::size_t> cell;        // 3D: pin this cube-map cell
+  bool solid = false;                     // --3d: the 3D scene
   std::optional<Vec2> hover;              // hover there (2D world coordinates)
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;

@@ -56,6 +56,7 @@ struct Versions {
   std::uint64_t structure = 0;  // the locator and its cells (bumped with the shape too)
   std::uint64_t points = 0;     // the spray or its classes
   std::uint64_t overlay = 0;    // probe, hover, drag
+  std::uint64_t section = 0;    // 3D: the slicing plane's section
 };
 
 // how many edges the cells of a method list at the least (the base of the tint)

@@ -121,4 +121,54 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
   return out;
 }
 
+std::string exact(Vec3 p) {
+  std::string out = "(";
+  out += exact(p.x);
+  out += ", ";
+  out += exact(p.y);
+  out += ", ";
+  out += exact(p.z);
+  out += ')';
+  return out;
+}
+
+std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
+  static const char* kFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  std::vector<TraceLine> out;
+  auto add = [&](TraceLine::Kind k, std::string s) { out.push_back({k, std::move(s)}); };
+  add(TraceLine::Heading, std::string(toString(t.method)) + ": point " + exact(p));
+  if (t.nonFinite) add(TraceLine::Step, "a coordinate is not finite: outside");
+  if (t.atCentre) add(TraceLine::Step, "the point is the centre x_T itself");
+  if (t.centre && t.method != Method3D::Halfspace) add(TraceLine::Step, "centre x_T = " + exact(*t.centre));
+  if (t.cubeFace >= 0) {
+    add(TraceLine::Step, std::string("direction from x_T: cube face ") + kFaces[t.cubeFace] +
+                             " (the largest |coordinate| and its sign)");
+    add(TraceLine::Step, "on the face: s = " + approx(t.s, 6) + ", t = " + approx(t.t, 6));
+    std::string cell = "cell (" + std::to_string(t.cellI) + ", " + std::to_string(t.cellJ) + ")";
+    if (t.level > 0) cell += " at quadtree level " + std::to_string(t.level);
+    add(TraceLine::Step, cell);
+  }
+  if (t.crowded) add(TraceLine::Step, "the cell lists many faces: a walk among them");
+  if (t.fallback) add(TraceLine::Step, "no cell could be used: every face is tested");
+  if (!t.path.empty()) {
+    std::string path = "walk across faces:";
+    for (std::size_t i = 0; i < t.path.size() && i < 40; ++i) {
+      path += ' ';
+      path += std::to_string(t.path[i]);
+    }
+    if (t.path.size() > 40) path += " ...";
+    add(TraceLine::Step, path);
+  }
+  for (const FaceTest& f : t.faces) {
+    const char* side = f.sign > 0 ? "inner side" : (f.sign < 0 ? "outer side" : "on its plane");
+    add(f.sign > 0 ? TraceLine::Positive : (f.sign < 0 ? TraceLine::Negative : TraceLine::Zero),
+        "face " + std::to_string(f.face) + ": orient3d = " + (f.sign > 0 ? "+1" : (f.sign < 0 ? "-1" : "0")) +
+            "  (" + side + ")");
+  }
+  const std::size_t k = t.faces.size() + t.steps.size();
+  add(TraceLine::Result, "result: " + upper(toString(t.result)) + "  (" + std::to_string(k) +
+                             (k == 1 ? " predicate)" : " predicates)"));
+  return out;
+}
+
 }  // namespace convexloc::viewer

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "convexloc/locate2d.hpp"
+#include "convexloc/locate3d.hpp"
 #include "convexloc/polygon.hpp"
 
 namespace convexloc::viewer {
@@ -39,5 +40,13 @@ struct TraceLine {
 // per octant (0 for other methods).
 std::vector<TraceLine> describeTrace(const Trace2D& trace, Vec2 point, const ConvexPolygon& polygon,
                                      std::uint32_t q);
+
+// "(x, y, z)" with exact()
+std::string exact(Vec3 p);
+
+// The trace of one 3D query, told for a student: the cube face and cell of the direction
+// from the centre (cube map), the faces walked across (walk), each plane tested with its
+// sign, the result.
+std::vector<TraceLine> describeTrace3D(const Trace3D& trace, Vec3 point);
 
 }  // namespace convexloc::viewer

@@ -13,12 +13,10 @@
 #include "logic/presets.hpp"
 #include "logic/text.hpp"
 #include "ui/screenshot.hpp"
+#include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
 namespace {
-
-ImVec4 im(Rgba c) { return {c.r, c.g, c.b, c.a}; }
-ImU32 u32(Rgba c) { return packAbgr(c); }
 
 // "O(1)" and friends, per method
 const char* complexityOf(Method2D m) {
@@ -30,66 +28,6 @@ const char* complexityOf(Method2D m) {
     case Method2D::Polar: return "O(1), the paper's";
   }
   return "";
-}
-
-// a small coloured disc in the text flow, as in a legend
-void swatchDisc(Rgba c, float radius, Rgba rim) {
-  const ImVec2 p = ImGui::GetCursorScreenPos();
-  const float h = ImGui::GetTextLineHeight();
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImVec2 centre(p.x + radius + 1.0f, p.y + 0.5f * h);
-  dl->AddCircleFilled(centre, radius + 1.0f, u32(rim), 20);
-  dl->AddCircleFilled(centre, radius, u32(c), 20);
-  ImGui::Dummy(ImVec2(2.0f * radius + 4.0f, h));
-  ImGui::SameLine();
-}
-
-// a small coloured square in the text flow
-void swatchBox(Rgba fill, Rgba edge) {
-  const ImVec2 p = ImGui::GetCursorScreenPos();
-  const float h = ImGui::GetTextLineHeight();
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImVec2 a(p.x + 1.0f, p.y + 0.15f * h), b(p.x + 0.7f * h + 1.0f, p.y + 0.85f * h);
-  dl->AddRectFilled(a, b, u32(fill));
-  dl->AddRect(a, b, u32(edge));
-  ImGui::Dummy(ImVec2(0.7f * h + 4.0f, h));
-  ImGui::SameLine();
-}
-
-// a short line sample in the text flow; dashed when `dashed`
-void swatchLine(Rgba c, bool dashed, float width) {
-  const ImVec2 p = ImGui::GetCursorScreenPos();
-  const float h = ImGui::GetTextLineHeight();
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const float y = p.y + 0.5f * h, w = 0.7f * h;
-  if (dashed) {
-    dl->AddLine(ImVec2(p.x + 1.0f, y), ImVec2(p.x + 0.3f * w, y), u32(c), width);
-    dl->AddLine(ImVec2(p.x + 0.6f * w, y), ImVec2(p.x + w + 1.0f, y), u32(c), width);
-  } else {
-    dl->AddLine(ImVec2(p.x + 1.0f, y), ImVec2(p.x + w + 1.0f, y), u32(c), width);
-  }
-  ImGui::Dummy(ImVec2(w + 4.0f, h));
-  ImGui::SameLine();
-}
-
-// a "(?)" with a tooltip
-void help(const char* text) {
-  ImGui::SameLine();
-  ImGui::TextDisabled("(?)");
-  if (ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text);
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
-  }
-}
-
-std::string percent(std::size_t part, std::size_t whole) {
-  if (!whole) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
-  return buf;
 }
 
 // === Shape
@@ -108,31 +46,7 @@ void shapePanel(Model& model, UiState& ui) {
     ImGui::TextDisabled("(given clockwise)");
   }
 
-  // open a file
-  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3.0f * ImGui::GetStyle().FramePadding.x);
-  const bool enter = ImGui::InputTextWithHint("##path", "polygon .txt (or drop a file)", ui.path,
-                                              sizeof ui.path, ImGuiInputTextFlags_EnterReturnsTrue);
-  ImGui::SameLine();
-  if ((ImGui::Button("Open") || enter) && ui.path[0]) model.open(ui.path);
-  if (!model.recent.empty() || !ui.assets.empty()) {
-    ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::BeginCombo("##files", "recent files and assets")) {
-      for (const std::string& f : model.recent)
-        if (ImGui::Selectable(f.c_str())) {
-          std::snprintf(ui.path, sizeof ui.path, "%s", f.c_str());
-          model.open(f);
-        }
-      if (!model.recent.empty() && !ui.assets.empty()) ImGui::Separator();
-      for (const std::string& f : ui.assets) {
-        const std::string name = std::filesystem::path(f).filename().string();
-        if (ImGui::Selectable(name.c_str())) {
-          std::snprintf(ui.path, sizeof ui.path, "%s", f.c_str());
-          model.open(f);
-        }
-      }
-      ImGui::EndCombo();
-    }
-  }
+  fileOpen(model, ui, "polygon .txt, polyhedron .off/.obj");
 
   // generate one
   ImGui::Spacing();
@@ -160,23 +74,9 @@ void shapePanel(Model& model, UiState& ui) {
       model.requestFit();
   }
 
-  // the degenerate gallery
   ImGui::Spacing();
   ImGui::TextDisabled("Degenerate gallery");
-  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
-  int column = 0;
-  for (const Preset& p : presets()) {
-    if (p.solid) continue;
-    if (column++ % 2) ImGui::SameLine();
-    if (ImGui::Button(std::string(p.title).c_str(), ImVec2(half, 0.0f))) model.applyPreset(p.name);
-    if (ImGui::IsItemHovered()) {
-      ImGui::BeginTooltip();
-      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
-      ImGui::TextUnformatted(std::string(p.about).c_str());
-      ImGui::PopTextWrapPos();
-      ImGui::EndTooltip();
-    }
-  }
+  gallery(model, false);
   ImGui::TextDisabled("Drag a vertex handle to edit the polygon.");
 }
 
@@ -271,69 +171,6 @@ void methodPanel(Model& model, UiState& ui) {
   }
 }
 
-// === Points
-
-void pointsPanel(Model& model, UiState& ui) {
-  Scene2D& scene = model.scene2d;
-  ImGui::SetNextItemWidth(-1.0f);
-  ImGui::SliderInt("##count", &ui.sprayCount, 1000, 1000000, "%d points",
-                   ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  const float quarter = 0.25f * (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
-  const int quick[4] = {1000, 10000, 100000, 1000000};
-  const char* quickName[4] = {"1e3", "1e4", "1e5", "1e6"};
-  for (int i = 0; i < 4; ++i) {
-    if (i) ImGui::SameLine();
-    if (ImGui::Button(quickName[i], ImVec2(quarter, 0.0f))) {
-      ui.sprayCount = quick[i];
-      scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
-    }
-  }
-  if (ImGui::RadioButton("uniform in the box", !ui.sprayNear)) ui.sprayNear = false;
-  ImGui::SameLine();
-  if (ImGui::RadioButton("near the boundary", ui.sprayNear)) ui.sprayNear = true;
-  help("Uniform: in the bounding box grown by 10% on each side. Near the boundary: core's hard "
-       "cases: vertices, points exactly on edges, one ulp off, a hair inside or outside.");
-  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
-  ImGui::InputScalar("seed##spray", ImGuiDataType_U64, &ui.spraySeed);
-  ImGui::SameLine();
-  if (ImGui::Button("Spray")) scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
-  ImGui::SameLine();
-  if (ImGui::Button("Clear")) scene.clearSpray();
-
-  const Palette& pal = paletteFor(model.settings.theme);
-  const std::size_t total = scene.points().size();
-  const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
-  for (Location l : order) {
-    bool shown = (model.settings.visibleMask & classBit(l)) != 0;
-    ImGui::PushID(static_cast<int>(l));
-    if (ImGui::Checkbox("##show", &shown))
-      model.settings.visibleMask = shown ? model.settings.visibleMask | classBit(l)
-                                         : model.settings.visibleMask & ~classBit(l);
-    ImGui::SameLine();
-    swatchDisc(colourOf(pal, l), 0.28f * ImGui::GetTextLineHeight(), pal.rim);
-    const std::size_t k = scene.counts()[static_cast<std::size_t>(l)];
-    ImGui::Text("%-9s %s", std::string(toString(l)).c_str(), grouped(k).c_str());
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.78f);
-    ImGui::TextDisabled("%s", percent(k, total).c_str());
-    ImGui::PopID();
-  }
-  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
-  if (ImGui::Button("only inside", ImVec2(half, 0.0f)))
-    model.settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
-  ImGui::SameLine();
-  if (ImGui::Button("only outside", ImVec2(half, 0.0f)))
-    model.settings.visibleMask = classBit(Location::Outside) | classBit(Location::Boundary);
-  if (ImGui::Button("show all", ImVec2(-1.0f, 0.0f))) model.settings.visibleMask = kAllClasses;
-
-  bool autoSize = model.settings.pointSize <= 0.0f;
-  if (ImGui::Checkbox("auto size", &autoSize)) model.settings.pointSize = autoSize ? 0.0f : 3.0f;
-  if (!autoSize) {
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(-1.0f);
-    ImGui::SliderFloat("##size", &model.settings.pointSize, 1.0f, 12.0f, "%.1f px");
-  }
-}
-
 // === View
 
 void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
@@ -346,16 +183,21 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   ImGui::SliderFloat("##font", &ui.fontScaleEdit, 0.75f, 2.5f, "text %.2fx");
   if (ImGui::IsItemDeactivatedAfterEdit()) ui.pendingFontScale = ui.fontScaleEdit;
 
-  View2DOptions& o = model.settings.view2d;
-  ImGui::Checkbox("structure", &o.showStructure);
-  ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-  ImGui::Checkbox("tinted cells", &o.showTints);
-  ImGui::Checkbox("bounding box", &o.showBox);
-  ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-  ImGui::Checkbox("octant lines", &o.showOctants);
-  ImGui::Checkbox("labels", &o.showLabels);
-  ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-  ImGui::Checkbox("vertex handles", &o.showHandles);
+  if (model.dim == Dim::Two) {
+    View2DOptions& o = model.settings.view2d;
+    const float mid = ImGui::GetContentRegionAvail().x * 0.5f;
+    ImGui::Checkbox("structure", &o.showStructure);
+    ImGui::SameLine(mid);
+    ImGui::Checkbox("tinted cells", &o.showTints);
+    ImGui::Checkbox("bounding box", &o.showBox);
+    ImGui::SameLine(mid);
+    ImGui::Checkbox("octant lines", &o.showOctants);
+    ImGui::Checkbox("labels", &o.showLabels);
+    ImGui::SameLine(mid);
+    ImGui::Checkbox("vertex handles", &o.showHandles);
+  } else {
+    viewOptions3(model);
+  }
 
   const float third = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
   if (ImGui::Button("Fit (F)", ImVec2(third, 0.0f))) model.requestFit();
@@ -377,7 +219,7 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
 
 // === Inspector: the hovered cell and the placed point's trace
 
-void inspectorContents(Model& model, float maxTraceHeight, bool hints) {
+void inspectorContents(Model& model, bool hints) {
   Scene2D& scene = model.scene2d;
   const Palette& pal = paletteFor(model.settings.theme);
   const auto& probe = scene.probe();
@@ -411,25 +253,7 @@ void inspectorContents(Model& model, float maxTraceHeight, bool hints) {
                      std::string(toString(probe->trace.result)).c_str());
   const auto lines = describeTrace(probe->trace, probe->point, scene.polygon(),
                                    scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
-  (void)maxTraceHeight;
-  constexpr std::size_t kMaxLines = 200;
-  for (std::size_t i = 0; i < lines.size() && i < kMaxLines; ++i) {
-    const TraceLine& l = lines[i];
-    Rgba c = pal.text;
-    if (l.kind == TraceLine::Positive) c = pal.positive;
-    else if (l.kind == TraceLine::Negative) c = pal.negative;
-    else if (l.kind == TraceLine::Zero) c = pal.zero;
-    else if (l.kind == TraceLine::Result) c = colourOf(pal, probe->trace.result);
-    else if (l.kind == TraceLine::Heading) c = pal.textMuted;
-    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-    ImGui::TextWrapped("%s", l.text.c_str());
-    ImGui::PopStyleColor();
-  }
-  if (lines.size() > kMaxLines) {
-    ImGui::TextDisabled("... %zu more steps", lines.size() - kMaxLines);
-    const TraceLine& last = lines.back();
-    ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "%s", last.text.c_str());
-  }
+  traceLines(lines, pal, colourOf(pal, probe->trace.result));
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
   if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());
@@ -445,16 +269,7 @@ void legendContents(Model& model) {
   ImGui::SameLine();
   if (s.cells) ImGui::TextDisabled("%s edges, %s cells", grouped(s.edges).c_str(), grouped(s.cells).c_str());
   else ImGui::TextDisabled("%s edges", grouped(s.edges).c_str());
-  const std::size_t total = scene.points().size();
-  const float r = 0.26f * ImGui::GetTextLineHeight();
-  const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
-  for (Location l : order) {
-    const bool shown = (model.settings.visibleMask & classBit(l)) != 0;
-    swatchDisc(shown ? colourOf(pal, l) : withAlpha(colourOf(pal, l), 0.25f), r, pal.rim);
-    const std::size_t k = scene.counts()[static_cast<std::size_t>(l)];
-    if (total) ImGui::Text("%-8s %s", std::string(toString(l)).c_str(), grouped(k).c_str());
-    else ImGui::Text("%s", std::string(toString(l)).c_str());
-  }
+  classRows(model, scene.counts(), scene.points().size(), false);
   const Method2D m = scene.method();
   const std::size_t base = baseEdgesPerCell(m);
   if (s.cells && model.settings.view2d.showTints) {
@@ -487,7 +302,8 @@ void legendOverlay(Model& model, ScreenRect area) {
   ImGui::Begin("Legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  legendContents(model);
+  if (model.dim == Dim::Two) legendContents(model);
+  else legendContents3(model);
   ImGui::End();
 }
 
@@ -534,7 +350,8 @@ float leftPanelWidth(const Model& model, glm::dvec2 window) {
 }
 
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
-  if (!model.settings.showUi || window.x < 1000.0) return 0.0f;
+  // narrower windows keep the scene wide: legend and inspector float over it instead
+  if (!model.settings.showUi || window.x < 1280.0) return 0.0f;
   return std::min(330.0f * model.settings.fontScale, static_cast<float>(0.3 * window.x));
 }
 
@@ -558,18 +375,29 @@ void scanAssets(UiState& ui) {
 void handleKeys(Model& model, UiState& ui) {
   if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.screenshotRequested = true;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
-  Scene2D& scene = model.scene2d;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) model.requestFit();
   if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) model.settings.showUi = !model.settings.showUi;
   if (ImGui::IsKeyPressed(GLFW_KEY_T, false))
     model.settings.theme = model.settings.theme == Theme::Dark ? Theme::Light : Theme::Dark;
-  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) scene.clearProbe();
-  if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) {
-    ++ui.spraySeed;
-    scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
+  const bool space = ImGui::IsKeyPressed(GLFW_KEY_SPACE, false);
+  if (space) ++ui.spraySeed;
+  const SpraySettings spray{static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear};
+  if (model.dim == Dim::Two) {
+    Scene2D& scene = model.scene2d;
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) scene.clearProbe();
+    if (space) scene.spray(spray);
+    for (int k = 0; k < 5; ++k)
+      if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false)) scene.setMethod(kAllMethods2D[k]);
+  } else {
+    Scene3D& scene = model.scene3d();
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
+      scene.clearProbe();
+      scene.pin(-1);
+    }
+    if (space) scene.spray(spray);
+    for (int k = 0; k < 3; ++k)
+      if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false)) scene.setMethod(kAllMethods3D[k]);
   }
-  for (int k = 0; k < 5; ++k)
-    if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false)) scene.setMethod(kAllMethods2D[k]);
 }
 
 void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui, double now) {
@@ -588,15 +416,36 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
     ImGui::Text("convexloc-viewer");
     ImGui::SameLine();
-    ImGui::TextDisabled("point in convex polygon");
+    ImGui::TextDisabled("point in convex %s", model.dim == Dim::Two ? "polygon" : "polyhedron");
+    const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+    for (Dim d : {Dim::Two, Dim::Three}) {
+      const bool on = model.dim == d;
+      if (d == Dim::Three) ImGui::SameLine();
+      if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      if (ImGui::Button(d == Dim::Two ? "2D: polygon" : "3D: polyhedron", ImVec2(half, 0.0f))) model.show(d);
+      if (on) ImGui::PopStyleColor();
+    }
     ImGui::Separator();
-    if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) shapePanel(model, ui);
-    if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodPanel(model, ui);
-    if (ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen)) pointsPanel(model, ui);
+    if (model.dim == Dim::Two) {
+      if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) shapePanel(model, ui);
+      if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodPanel(model, ui);
+      if (ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen)) pointsPanel(model, ui, model.scene2d);
+    } else {
+      if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) shapePanel3(model, ui);
+      if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodPanel3(model, ui);
+      if (ImGui::CollapsingHeader("Slicing plane", ImGuiTreeNodeFlags_DefaultOpen)) slicePanel3(model);
+      if (ImGui::CollapsingHeader("Points")) pointsPanel(model, ui, model.scene3d());
+    }
     if (ImGui::CollapsingHeader("View")) viewPanel(model, renderer, ui);
     ImGui::Spacing();
-    ImGui::TextDisabled("drag: pan, wheel: zoom, click: place a point");
-    ImGui::TextDisabled("F fit, H hide panels, 1-5 method, Space spray");
+    if (model.dim == Dim::Two) {
+      ImGui::TextDisabled("drag: pan, wheel: zoom, click: place a point");
+      ImGui::TextDisabled("F fit, H hide panels, 1-5 method, Space spray");
+    } else {
+      ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom");
+      ImGui::TextDisabled("click the plane: place a point; Shift-click: pin a cell");
+      ImGui::TextDisabled("F fit, H hide panels, 1-3 method, Space spray");
+    }
     ImGui::End();
 
   }
@@ -608,13 +457,19 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
-    legendContents(model);
+    if (model.dim == Dim::Two) legendContents(model);
+    else legendContents3(model);
     ImGui::Separator();
-    inspectorContents(model, io.DisplaySize.y * 0.55f, true);
+    if (model.dim == Dim::Two) inspectorContents(model, true);
+    else inspectorContents3(model, true);
     ImGui::End();
   } else {
     legendOverlay(model, area);
-    if (model.settings.showUi && (model.scene2d.hoveredCell() >= 0 || model.scene2d.probe())) {
+    const bool something = model.dim == Dim::Two
+                               ? model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value()
+                               : model.scene3d().hoveredCell() >= 0 || model.scene3d().pinnedCell() >= 0 ||
+                                     model.scene3d().probe().has_value();
+    if (model.settings.showUi && something) {
       const float iw = std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
       ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
       ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, io.DisplaySize.y * 0.6f));
@@ -623,16 +478,18 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                        ImGuiWindowFlags_NoFocusOnAppearing);
-      inspectorContents(model, io.DisplaySize.y * 0.4f, false);
+      if (model.dim == Dim::Two) inspectorContents(model, false);
+      else inspectorContents3(model, false);
       ImGui::End();
     }
   }
   toast(model, ui, area, now);
 }
 
-void drawLabels(const Model& model, const SceneView& view) {
+void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Camera2D& cam = model.camera2d;
+  const Camera3D& cam3 = model.camera3d;
   const glm::dvec2 vp = cam.viewport();
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
@@ -640,7 +497,14 @@ void drawLabels(const Model& model, const SceneView& view) {
   for (const DrawList* list : {&view.structure(), &view.overlay()})
     for (const Label& l : list->labels) {
       if (--budget < 0) return;
-      const glm::dvec2 s = cam.toScreen({l.p.x, l.p.y}) + glm::dvec2(l.offset);
+      glm::dvec2 s;
+      if (model.dim == Dim::Two) {
+        s = cam.toScreen({l.p.x, l.p.y}) + glm::dvec2(l.offset);
+      } else {
+        const Projected pr = cam3.toScreen(l.p);
+        if (!pr.visible()) continue;
+        s = pr.screen + glm::dvec2(l.offset);
+      }
       if (s.x < -200.0 || s.y < -50.0 || s.x > vp.x + 200.0 || s.y > vp.y + 50.0) continue;
       const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
       const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x), std::round(static_cast<float>(s.y) - 0.5f * size.y));

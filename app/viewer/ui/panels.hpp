@@ -28,6 +28,10 @@ struct UiState {
   int generatorKind = 1;  // index into kAllPolygonKinds
   int generatorN = 16;
   std::uint64_t generatorSeed = 7;
+  int generator3Kind = 4;  // index into kAllPolyhedronKinds (icosahedron)
+  int generator3N = 320;
+  std::uint64_t generator3Seed = 1;
+  std::vector<CompareRow3D> compare3;
   int sprayCount = 3000;
   bool sprayNear = false;
   std::uint64_t spraySeed = 1;
@@ -64,6 +68,6 @@ void handleKeys(Model& model, UiState& ui);
 void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui, double now);
 
 // the draw lists' labels, written on ImGui's background draw list over the scene
-void drawLabels(const Model& model, const SceneView& view);
+void drawLabels(Model& model, const SceneView& view);
 
 }  // namespace convexloc::viewer

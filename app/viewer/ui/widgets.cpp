@@ -1,0 +1,170 @@
+// convexloc-viewer — shared ImGui pieces.
+#include "ui/widgets.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "logic/presets.hpp"
+
+namespace convexloc::viewer {
+
+
+void swatchDisc(Rgba c, float radius, Rgba rim) {
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float h = ImGui::GetTextLineHeight();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 centre(p.x + radius + 1.0f, p.y + 0.5f * h);
+  dl->AddCircleFilled(centre, radius + 1.0f, u32(rim), 20);
+  dl->AddCircleFilled(centre, radius, u32(c), 20);
+  ImGui::Dummy(ImVec2(2.0f * radius + 4.0f, h));
+  ImGui::SameLine();
+}
+
+// a small coloured square in the text flow
+void swatchBox(Rgba fill, Rgba edge) {
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float h = ImGui::GetTextLineHeight();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 a(p.x + 1.0f, p.y + 0.15f * h), b(p.x + 0.7f * h + 1.0f, p.y + 0.85f * h);
+  dl->AddRectFilled(a, b, u32(fill));
+  dl->AddRect(a, b, u32(edge));
+  ImGui::Dummy(ImVec2(0.7f * h + 4.0f, h));
+  ImGui::SameLine();
+}
+
+// a short line sample in the text flow; dashed when `dashed`
+void swatchLine(Rgba c, bool dashed, float width) {
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float h = ImGui::GetTextLineHeight();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const float y = p.y + 0.5f * h, w = 0.7f * h;
+  if (dashed) {
+    dl->AddLine(ImVec2(p.x + 1.0f, y), ImVec2(p.x + 0.3f * w, y), u32(c), width);
+    dl->AddLine(ImVec2(p.x + 0.6f * w, y), ImVec2(p.x + w + 1.0f, y), u32(c), width);
+  } else {
+    dl->AddLine(ImVec2(p.x + 1.0f, y), ImVec2(p.x + w + 1.0f, y), u32(c), width);
+  }
+  ImGui::Dummy(ImVec2(w + 4.0f, h));
+  ImGui::SameLine();
+}
+
+// a "(?)" with a tooltip
+void help(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+std::string percent(std::size_t part, std::size_t whole) {
+  if (!whole) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
+  return buf;
+}
+
+void statRow(const char* key, const std::string& value) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextDisabled("%s", key);
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(value.c_str());
+}
+
+void fileOpen(Model& model, UiState& ui, const char* hint) {
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3.0f * ImGui::GetStyle().FramePadding.x);
+  const bool enter = ImGui::InputTextWithHint("##path", hint, ui.path,
+                                              sizeof ui.path, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Open") || enter) && ui.path[0]) model.open(ui.path);
+  if (!model.recent.empty() || !ui.assets.empty()) {
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##files", "recent files and assets")) {
+      for (const std::string& f : model.recent)
+        if (ImGui::Selectable(f.c_str())) {
+          std::snprintf(ui.path, sizeof ui.path, "%s", f.c_str());
+          model.open(f);
+        }
+      if (!model.recent.empty() && !ui.assets.empty()) ImGui::Separator();
+      for (const std::string& f : ui.assets) {
+        const std::string name = std::filesystem::path(f).filename().string();
+        if (ImGui::Selectable(name.c_str())) {
+          std::snprintf(ui.path, sizeof ui.path, "%s", f.c_str());
+          model.open(f);
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+
+}
+
+void gallery(Model& model, bool solid) {
+  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+  int column = 0;
+  for (const Preset& p : presets()) {
+    if (p.solid != solid) continue;
+    if (column++ % 2) ImGui::SameLine();
+    if (ImGui::Button(std::string(p.title).c_str(), ImVec2(half, 0.0f))) model.applyPreset(p.name);
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+      ImGui::TextUnformatted(std::string(p.about).c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
+  }
+}
+
+void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour) {
+  constexpr std::size_t kMaxLines = 200;
+  for (std::size_t i = 0; i < lines.size() && i < kMaxLines; ++i) {
+    const TraceLine& l = lines[i];
+    Rgba c = pal.text;
+    if (l.kind == TraceLine::Positive) c = pal.positive;
+    else if (l.kind == TraceLine::Negative) c = pal.negative;
+    else if (l.kind == TraceLine::Zero) c = pal.zero;
+    else if (l.kind == TraceLine::Result) c = resultColour;
+    else if (l.kind == TraceLine::Heading) c = pal.textMuted;
+    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    ImGui::TextWrapped("%s", l.text.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (lines.size() > kMaxLines) {
+    ImGui::TextDisabled("... %zu more steps", lines.size() - kMaxLines);
+    ImGui::TextColored(im(resultColour), "%s", lines.back().text.c_str());
+  }
+}
+
+void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total, bool checkboxes) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
+  const float r = 0.27f * ImGui::GetTextLineHeight();
+  for (Location l : order) {
+    const bool shown = (model.settings.visibleMask & classBit(l)) != 0;
+    ImGui::PushID(static_cast<int>(l));
+    if (checkboxes) {
+      bool s = shown;
+      if (ImGui::Checkbox("##show", &s))
+        model.settings.visibleMask = s ? model.settings.visibleMask | classBit(l) : model.settings.visibleMask & ~classBit(l);
+      ImGui::SameLine();
+    }
+    swatchDisc(shown ? colourOf(pal, l) : withAlpha(colourOf(pal, l), 0.25f), r, pal.rim);
+    const std::size_t k = counts[static_cast<std::size_t>(l)];
+    if (total) {
+      ImGui::Text("%-9s %s", std::string(toString(l)).c_str(), grouped(k).c_str());
+      ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("100.0%").x);
+      ImGui::TextDisabled("%s", percent(k, total).c_str());
+    } else {
+      ImGui::Text("%s", std::string(toString(l)).c_str());
+    }
+    ImGui::PopID();
+  }
+}
+
+}  // namespace convexloc::viewer

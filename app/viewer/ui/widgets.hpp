@@ -1,0 +1,96 @@
+// convexloc-viewer — small ImGui pieces the 2D and 3D panels share: legend swatches, help
+// marks, the file box, the gallery, the points panel, the trace lines.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "logic/colour.hpp"
+#include "logic/model.hpp"
+#include "logic/text.hpp"
+#include "ui/panels.hpp"
+
+namespace convexloc::viewer {
+
+inline ImVec4 im(Rgba c) { return {c.r, c.g, c.b, c.a}; }
+inline ImU32 u32(Rgba c) { return packAbgr(c); }
+
+// a small disc, square or line sample in the text flow, as in a legend
+void swatchDisc(Rgba c, float radius, Rgba rim);
+void swatchBox(Rgba fill, Rgba edge);
+void swatchLine(Rgba c, bool dashed, float width);
+// a "(?)" with a tooltip
+void help(const char* text);
+// "41.2%"
+std::string percent(std::size_t part, std::size_t whole);
+// a two-column row of a statistics table
+void statRow(const char* key, const std::string& value);
+// the path box, Open, recent files and assets
+void fileOpen(Model& model, UiState& ui, const char* hint);
+// the degenerate gallery's buttons for polygons or for polyhedra
+void gallery(Model& model, bool solid);
+// a trace, one coloured line per step
+void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour);
+// the class legend rows (disc, name, count) and the counts' visibility check boxes
+void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total, bool checkboxes);
+
+// === Points: spray settings and buttons, counts, filters, point size (2D and 3D alike)
+template <class Scene>
+void pointsPanel(Model& model, UiState& ui, Scene& scene) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::SliderInt("##count", &ui.sprayCount, 1000, 1000000, "%d points",
+                   ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  const float quarter = 0.25f * (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
+  const int quick[4] = {1000, 10000, 100000, 1000000};
+  const char* quickName[4] = {"1e3", "1e4", "1e5", "1e6"};
+  for (int i = 0; i < 4; ++i) {
+    if (i) ImGui::SameLine();
+    if (ImGui::Button(quickName[i], ImVec2(quarter, 0.0f))) {
+      ui.sprayCount = quick[i];
+      scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
+    }
+  }
+  if (ImGui::RadioButton("uniform in the box", !ui.sprayNear)) ui.sprayNear = false;
+  ImGui::SameLine();
+  if (ImGui::RadioButton("near the boundary", ui.sprayNear)) ui.sprayNear = true;
+  help("Uniform: in the bounding box grown by 10% on each side. Near the boundary: core's hard "
+       "cases: vertices, points exactly on edges or faces, one ulp off, a hair inside or outside.");
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
+  ImGui::InputScalar("seed##spray", ImGuiDataType_U64, &ui.spraySeed);
+  ImGui::SameLine();
+  if (ImGui::Button("Spray")) scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
+  ImGui::SameLine();
+  if (ImGui::Button("Clear")) scene.clearSpray();
+
+  classRows(model, scene.counts(), scene.points().size(), true);
+  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+  if (ImGui::Button("only inside", ImVec2(half, 0.0f)))
+    model.settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
+  ImGui::SameLine();
+  if (ImGui::Button("only outside", ImVec2(half, 0.0f)))
+    model.settings.visibleMask = classBit(Location::Outside) | classBit(Location::Boundary);
+  if (ImGui::Button("show all", ImVec2(-1.0f, 0.0f))) model.settings.visibleMask = kAllClasses;
+
+  bool autoSize = model.settings.pointSize <= 0.0f;
+  if (ImGui::Checkbox("auto size", &autoSize)) model.settings.pointSize = autoSize ? 0.0f : 3.0f;
+  if (!autoSize) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::SliderFloat("##size", &model.settings.pointSize, 1.0f, 12.0f, "%.1f px");
+  }
+  if (!scene.points().empty())
+    ImGui::TextDisabled("classified at %s ns/point", approx(scene.locateNsPerPoint(), 3).c_str());
+}
+
+// === 3D panels (panels3d.cpp)
+void shapePanel3(Model& model, UiState& ui);
+void methodPanel3(Model& model, UiState& ui);
+void slicePanel3(Model& model);
+void viewOptions3(Model& model);
+void legendContents3(Model& model);
+void inspectorContents3(Model& model, bool hints);
+
+}  // namespace convexloc::viewer
