@@ -147,13 +147,15 @@ bool RowReader::next(double* out) {
     } else if (fill()) {
       continue;
     } else if (begin_ < end_) {
-      line = {base + begin_, end_ - begin_};  // the last line has no newline
+      // the last line has no newline; fill() may have grown (moved) the buffer: not `base`
+      line = {buf_.data() + begin_, end_ - begin_};
       begin_ = end_;
     } else {
       return false;
     }
     ++line_;
-    if (line.size() > kMaxLineBytes)
+    // the limit is on the text: a CRLF line's '\r' is not counted (the buffer has room for it)
+    if (line.size() - (!line.empty() && line.back() == '\r') > kMaxLineBytes)
       throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
     if (parseRow(line, line_, dims_, out)) return true;
   }
