@@ -5,6 +5,7 @@
 // moves only when ImGui does not want the mouse), render ImGui's lists, clear, draw the
 // scene, draw ImGui over it, swap. Everything it shows lives in logic/ (GL-free) and is
 // drawn by gl/; the panels are in ui/.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -130,44 +131,34 @@ int main(int argc, char** argv) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  // a window with `samples` MSAA samples and its GL functions loaded, or null
-  auto openWindow = [&](int msaa) -> GLFWwindow* {
-    glfwWindowHint(GLFW_SAMPLES, msaa);
-    GLFWwindow* w = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
-    if (!w) return nullptr;
-    glfwMakeContextCurrent(w);
-    if (!gladLoadGL(glfwGetProcAddress)) {
-      glfwDestroyWindow(w);
-      return nullptr;
-    }
-    return w;
-  };
-  int samples = options.samples >= 0 ? options.samples : 4;
-  GLFWwindow* window = openWindow(samples);
-  if (!window && samples > 0) window = openWindow(samples = 0);  // no multisampled visual
+  // The window needs no multisampling: the scene is drawn into an offscreen target that
+  // has it (see SceneView), and ImGui anti-aliases its own shapes.
+  glfwWindowHint(GLFW_SAMPLES, 0);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
   if (!window) {
     std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
     glfwTerminate();
     return 1;
   }
+  glfwMakeContextCurrent(window);
+  if (!gladLoadGL(glfwGetProcAddress)) {
+    std::cerr << "convexloc-viewer: cannot load the OpenGL functions\n";
+    glfwTerminate();
+    return 1;
+  }
   // Multisampling costs a software renderer (Mesa's llvmpipe) about three times the frame
-  // time, and the shaders anti-alias lines and points themselves: without it there.
+  // time, and the shaders anti-alias lines and points themselves: none there by default.
   const std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const bool software = rendererName.find("llvmpipe") != std::string::npos ||
                         rendererName.find("softpipe") != std::string::npos ||
                         rendererName.find("SWR") != std::string::npos;
-  if (options.samples < 0 && software && samples > 0) {
-    glfwDestroyWindow(window);
-    window = openWindow(samples = 0);
-    if (!window) {
-      std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
-      glfwTerminate();
-      return 1;
-    }
-  }
+  int samples = options.samples >= 0 ? options.samples : (software ? 0 : 4);
+  GLint maxSamples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  samples = std::min(samples, static_cast<int>(maxSamples));
   glfwSwapInterval(headless ? 0 : 1);
   glfwSetDropCallback(window, onDrop);
-  if (samples > 0) glEnable(GL_MULTISAMPLE);
+  glEnable(GL_MULTISAMPLE);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -192,6 +183,10 @@ int main(int argc, char** argv) {
   ui.assetDir = CONVEXLOC_ASSET_DIR;
   cv::scanAssets(ui);
   ui.fontScaleEdit = model.settings.fontScale;
+  if (options.compare) {
+    if (model.dim == cv::Dim::Two) ui.compare = model.scene2d.compare();
+    else ui.compare3 = model.scene3d().compare();
+  }
   ui.glInfo = rendererName + ", GL " + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
               (samples > 0 ? ", MSAA " + std::to_string(samples) + "x" : ", no MSAA");
   float xscale = 1.0f, yscale = 1.0f;
@@ -220,9 +215,11 @@ int main(int argc, char** argv) {
   double timedMs = 0.0;
   int timedFrames = 0;
   int exitCode = 0;
+  int idleFrames = 0;  // frames since the last input; past a few, wait for events (no busy loop)
   while (!glfwWindowShouldClose(window)) {
     const auto frameStart = Clock::now();
-    glfwPollEvents();
+    if (!headless && idleFrames > 3) glfwWaitEventsTimeout(0.25);
+    else glfwPollEvents();
 
     // font and theme changes rebuild ImGui's atlas and style outside the frame
     if (ui.pendingFontScale > 0.0f) {
@@ -248,6 +245,7 @@ int main(int argc, char** argv) {
     model.camera2d.setViewport(windowSize);
     model.camera3d.setViewport(windowSize);
 
+    const bool noDrops = gDropped.empty();
     for (const std::string& path : gDropped) {
       if (model.open(path)) std::snprintf(ui.path, sizeof ui.path, "%s", path.c_str());
     }
@@ -272,7 +270,17 @@ int main(int argc, char** argv) {
       interaction.update(in, model);
       cv::handleKeys(model, ui);
     }
+    // --animate: the camera moves a little every frame, as under a hand (for timing)
+    if (options.animate && frame > 0) {
+      if (model.dim == cv::Dim::Two) model.camera2d.pan({1.0, 0.5});
+      else model.camera3d.orbit({2.0, 0.0});
+    }
     model.collectErrors();
+    bool input = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
+                 !noDrops || ui.pendingFontScale > 0.0f;
+    for (bool b : io.MouseDown) input |= b;
+    for (bool k : io.KeysDown) input |= k;
+    idleFrames = input ? 0 : idleFrames + 1;
 
     const double now = std::chrono::duration<double>(Clock::now() - start).count();
     cv::drawUi(model, renderer, view, ui, now);
@@ -285,7 +293,12 @@ int main(int argc, char** argv) {
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
     glDepthMask(GL_TRUE);  // a clear honours the depth mask
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    view.draw(model, renderer, {static_cast<float>(fbW), static_cast<float>(fbH)}, pixelRatio);
+    const glm::vec2 fb{static_cast<float>(fbW), static_cast<float>(fbH)};
+    if (!renderer.ensureTarget(fbW, fbH, samples) && samples > 0 &&
+        renderer.ensureTarget(fbW, fbH, samples = 0))
+      ui.glInfo += " (multisampled target refused: none)";
+    view.drawBase(model, renderer, fb, pixelRatio);
+    view.drawOverlay(model, renderer, fb, pixelRatio);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     ++frame;
@@ -322,9 +335,11 @@ int main(int argc, char** argv) {
   }
 
   if (headless) {
-    std::printf("convexloc-viewer: %d frames at %dx%d, %zu points, mean %.2f ms/frame after the first (%s)\n",
-                frame, options.width, options.height, renderer.pointCount(),
-                timedFrames ? timedMs / timedFrames : 0.0, ui.glInfo.c_str());
+    std::printf("convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
+                "ms/frame after the first (%s)\n",
+                frame, options.width, options.height, renderer.pointCount(), view.pointsDrawn(),
+                options.animate ? "camera moving" : "camera still", timedFrames ? timedMs / timedFrames : 0.0,
+                ui.glInfo.c_str());
   }
 
   ImGui_ImplOpenGL3_Shutdown();

@@ -261,3 +261,19 @@ TEST(Model, ApplyOptions) {
   bad.method = "telepathy";
   EXPECT_NE(m.apply(bad).find("telepathy"), std::string::npos);
 }
+
+TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
+  cv::Scene2D s;
+  EXPECT_EQ(s.resolution(), 8u);  // the default scene's polar slabs per octant
+  ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 40, 1));
+  EXPECT_EQ(s.resolution(), 0u);  // core's choice for a new shape
+  EXPECT_EQ(s.effectiveResolution(), 11u);
+  ASSERT_TRUE(s.setResolution(5));
+  ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 60, 1));
+  EXPECT_EQ(s.resolution(), 5u);
+  // an edit keeps it too
+  s.beginDrag(0);
+  s.dragTo({1.2, 0.0});
+  s.endDrag();
+  EXPECT_EQ(s.resolution(), 5u);
+}

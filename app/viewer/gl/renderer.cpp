@@ -2,6 +2,7 @@
 #include "gl/renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -94,6 +95,92 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(1, &pointVao_);
   GLuint vbos[2] = {pointVbo_, classVbo_};
   glDeleteBuffers(2, vbos);
+  destroyTarget();
+  if (blitVao_) glDeleteVertexArrays(1, &blitVao_);
+}
+
+void Renderer::destroyTarget() {
+  if (msFbo_) glDeleteFramebuffers(1, &msFbo_);
+  if (resolveFbo_) glDeleteFramebuffers(1, &resolveFbo_);
+  GLuint rbs[3] = {msColour_, msDepth_, depth_};
+  glDeleteRenderbuffers(3, rbs);
+  if (texture_) glDeleteTextures(1, &texture_);
+  msFbo_ = msColour_ = msDepth_ = resolveFbo_ = texture_ = depth_ = 0;
+  targetW_ = targetH_ = 0;
+}
+
+bool Renderer::ensureTarget(int width, int height, int samples) {
+  if (width <= 0 || height <= 0) return false;
+  if (resolveFbo_ && width == targetW_ && height == targetH_ && samples == targetSamples_) return true;
+  destroyTarget();
+  // the single-sampled target: a texture to composite from, and depth
+  glGenTextures(1, &texture_);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glGenRenderbuffers(1, &depth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  glGenFramebuffers(1, &resolveFbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  // the multisampled target, resolved into the texture
+  if (ok && samples > 0) {
+    glGenRenderbuffers(1, &msColour_);
+    glBindRenderbuffer(GL_RENDERBUFFER, msColour_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+    glGenRenderbuffers(1, &msDepth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, msDepth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+    glGenFramebuffers(1, &msFbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, msFbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColour_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth_);
+    ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  if (!ok) {
+    destroyTarget();
+    return false;
+  }
+  if (!blitVao_) glGenVertexArrays(1, &blitVao_);
+  targetW_ = width;
+  targetH_ = height;
+  targetSamples_ = samples;
+  return true;
+}
+
+void Renderer::bindTarget() {
+  glBindFramebuffer(GL_FRAMEBUFFER, msFbo_ ? msFbo_ : resolveFbo_);
+  glViewport(0, 0, targetW_, targetH_);
+}
+
+void Renderer::finishTarget() {
+  if (msFbo_) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
+    glBlitFramebuffer(0, 0, targetW_, targetH_, 0, 0, targetW_, targetH_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::compositeTarget() {
+  if (!texture_ || !blit_.ready()) return;
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  blit_.use();
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  blit_.set("uScene", 0);
+  glBindVertexArray(blitVao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 bool Renderer::init(const std::string& dir) {
@@ -148,6 +235,7 @@ bool Renderer::compileAll() {
   ok = segments_.load(dir_, "segments", log_) && ok;
   ok = markers_.load(dir_, "markers", log_) && ok;
   ok = points_.load(dir_, "points", log_) && ok;
+  ok = blit_.load(dir_, "blit", log_) && ok;
   return ok;
 }
 
@@ -188,40 +276,45 @@ void Renderer::upload(Layer layer, const DrawList& list, glm::dvec3 origin) {
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void Renderer::uploadClasses(std::span<const Location> classes) {
+template <class P, class Put>
+void Renderer::uploadOrdered(std::span<const P> points, std::span<const Location> classes, Put put) {
   static_assert(sizeof(Location) == 1, "classes upload as bytes");
-  glBindBuffer(GL_ARRAY_BUFFER, classVbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(classes.size()),
-               classes.empty() ? nullptr : classes.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-void Renderer::uploadPoints(std::span<const Vec2> points, std::span<const Location> classes,
-                            glm::dvec3 origin) {
   const std::size_t n = std::min(points.size(), classes.size());
+  // boundary points last, each part in the spray's (random) order
   std::vector<float> xyz(3 * n);
+  std::vector<Location> cls(n);
+  std::size_t front = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (classes[i] != Location::Boundary) front++;
+  std::size_t a = 0, b = front;
   for (std::size_t i = 0; i < n; ++i) {
-    xyz[3 * i] = static_cast<float>(points[i].x - origin.x);
-    xyz[3 * i + 1] = static_cast<float>(points[i].y - origin.y);
-    xyz[3 * i + 2] = 0.0f;
+    const std::size_t k = classes[i] != Location::Boundary ? a++ : b++;
+    put(&xyz[3 * k], points[i]);
+    cls[k] = classes[i];
   }
   glBindBuffer(GL_ARRAY_BUFFER, pointVbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)),
                xyz.empty() ? nullptr : xyz.data(), GL_STATIC_DRAW);
-  uploadClasses(classes.first(n));
+  glBindBuffer(GL_ARRAY_BUFFER, classVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cls.size()), cls.empty() ? nullptr : cls.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   pointCount_ = n;
+  boundaryStart_ = front;
+}
+
+void Renderer::uploadPoints(std::span<const Vec2> points, std::span<const Location> classes,
+                            glm::dvec3 origin) {
+  uploadOrdered(points, classes, [&](float* out, Vec2 p) {
+    out[0] = static_cast<float>(p.x - origin.x);
+    out[1] = static_cast<float>(p.y - origin.y);
+    out[2] = 0.0f;
+  });
 }
 
 void Renderer::uploadPoints(std::span<const Vec3> points, std::span<const Location> classes,
                             glm::dvec3 origin) {
-  const std::size_t n = std::min(points.size(), classes.size());
-  std::vector<float> xyz(3 * n);
-  for (std::size_t i = 0; i < n; ++i) put3(&xyz[3 * i], {points[i].x, points[i].y, points[i].z}, origin);
-  glBindBuffer(GL_ARRAY_BUFFER, pointVbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)),
-               xyz.empty() ? nullptr : xyz.data(), GL_STATIC_DRAW);
-  uploadClasses(classes.first(n));
-  pointCount_ = n;
+  uploadOrdered(points, classes, [&](float* out, Vec3 p) { put3(out, {p.x, p.y, p.z}, origin); });
 }
 
 void Renderer::drawFills(Layer layer, const FrameParams& f, Cull cull) {
@@ -266,7 +359,7 @@ void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
   glDrawArrays(GL_POINTS, 0, l.markers);
 }
 
-void Renderer::drawPoints(const FrameParams& f) {
+void Renderer::drawPoints(const FrameParams& f, PointRange range) {
   if (!pointCount_ || !points_.ready()) return;
   blending(f);
   glEnable(GL_PROGRAM_POINT_SIZE);
@@ -278,7 +371,14 @@ void Renderer::drawPoints(const FrameParams& f) {
   points_.setArray("uColours", colours, 3);
   points_.set("uRim", vec(f.rim));
   glBindVertexArray(pointVao_);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(pointCount_));
+  // a subsample keeps the same share of each part
+  const double share = f.maxPoints >= pointCount_ ? 1.0 : static_cast<double>(f.maxPoints) / static_cast<double>(pointCount_);
+  auto part = [&](std::size_t first, std::size_t count) {
+    const auto k = static_cast<GLsizei>(std::ceil(share * static_cast<double>(count)));
+    if (k > 0) glDrawArrays(GL_POINTS, static_cast<GLint>(first), k);
+  };
+  if (range != PointRange::Boundary) part(0, range == PointRange::All ? pointCount_ : boundaryStart_);
+  if (range == PointRange::Boundary) part(boundaryStart_, pointCount_ - boundaryStart_);
 }
 
 }  // namespace convexloc::viewer

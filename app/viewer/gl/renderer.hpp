@@ -24,6 +24,10 @@ inline constexpr int kLayerCount = 4;
 // which triangles a fill draw skips
 enum class Cull { None, Front, Back };
 
+// which points a point draw covers: boundary points are kept at the end of the buffer so
+// that they can be drawn last, over the polygon's edges
+enum class PointRange { All, AllButBoundary, Boundary };
+
 // what a frame's draw calls share
 struct FrameParams {
   glm::mat4 clipFromLocal{1.0f};
@@ -37,6 +41,8 @@ struct FrameParams {
   bool depth = false;            // 3D: depth-test
   bool depthWrite = false;       // 3D: and write depth
   bool offset = false;           // push fills back a little (so edges drawn on them win)
+  std::size_t maxPoints = ~std::size_t{0};  // draw at most this many points (a uniform subsample:
+                                            // the sprays come in random order)
 };
 
 class Renderer {
@@ -64,7 +70,19 @@ public:
   void drawFills(Layer layer, const FrameParams& f, Cull cull = Cull::None);
   void drawSegments(Layer layer, const FrameParams& f);
   void drawMarkers(Layer layer, const FrameParams& f);
-  void drawPoints(const FrameParams& f);
+  void drawPoints(const FrameParams& f, PointRange range = PointRange::All);
+
+  // === The scene cache: the scene is drawn into an offscreen target (multisampled when
+  // asked) only when it changes; every frame composites it, then the overlay and ImGui.
+  // Makes (or remakes, on a new size) the target; false when the GL cannot.
+  bool ensureTarget(int width, int height, int samples);
+  // draws into the target from now on
+  void bindTarget();
+  // resolves the target and draws into the window again
+  void finishTarget();
+  // draws the target's picture over the whole window
+  void compositeTarget();
+  bool hasTarget() const { return resolveFbo_ != 0; }
 
 private:
   struct GpuLayer {
@@ -74,14 +92,21 @@ private:
     GLsizei fills = 0, segments = 0, markers = 0;
   };
   bool compileAll();
-  void uploadClasses(std::span<const Location> classes);
 
   std::string dir_, log_;
-  ShaderProgram fill_, segments_, markers_, points_;
+  ShaderProgram fill_, segments_, markers_, points_, blit_;
   GpuLayer layers_[kLayerCount];
   GLuint pointVao_ = 0, pointVbo_ = 0, classVbo_ = 0;
   std::size_t pointCount_ = 0;
+  std::size_t boundaryStart_ = 0;  // points [boundaryStart_, pointCount_) are boundary points
   bool created_ = false;
+  template <class P, class Put>
+  void uploadOrdered(std::span<const P> points, std::span<const Location> classes, Put put);
+  void destroyTarget();
+  GLuint msFbo_ = 0, msColour_ = 0, msDepth_ = 0;        // multisampled, when samples > 0
+  GLuint resolveFbo_ = 0, texture_ = 0, depth_ = 0;      // single-sampled, sampled by the blit
+  GLuint blitVao_ = 0;
+  int targetW_ = 0, targetH_ = 0, targetSamples_ = 0;
 };
 
 }  // namespace convexloc::viewer

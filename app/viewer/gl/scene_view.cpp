@@ -1,6 +1,8 @@
 // convexloc-viewer — the scene on the GPU.
 #include "gl/scene_view.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "logic/structure2d.hpp"
@@ -42,7 +44,9 @@ void SceneView::sync(Model& model, Renderer& renderer) {
     section_.clear();
     renderer.upload(Layer::Mesh, mesh_, origin_);
     renderer.upload(Layer::Section, section_, origin_);
+    ++uploads_;
   }
+  if (restyle) ++uploads_;
   if (model.dim == Dim::Two) sync2d(model, renderer, restyle);
   else sync3d(model, renderer, restyle);
   dim_ = model.dim;
@@ -72,12 +76,16 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
   if (rebase || restyle || v.structure != seen_.structure || v.shape != seen_.shape) {
     buildStructure2D(scene, pal, opt, structure_);
     renderer.upload(Layer::Structure, structure_, origin_);
+    ++uploads_;
   }
   if (rebase || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
     buildOverlay2D(scene, pal, opt, overlay_);
     renderer.upload(Layer::Overlay, overlay_, origin_);
   }
-  if (rebase || v.points != seen_.points) renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+  if (rebase || v.points != seen_.points) {
+    renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+    ++uploads_;
+  }
   seen_ = v;
   scene_ = &scene;
 }
@@ -93,6 +101,7 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
   if (reshape || restyle) {
     buildMesh3D(scene, pal, opt, mesh_);
     renderer.upload(Layer::Mesh, mesh_, origin_);
+    ++uploads_;
   }
   // the cube faces seen from inside change only when the eye crosses one's plane
   const unsigned far = farCubeFaces(scene, model.camera3d.eye());
@@ -101,6 +110,7 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     noSlice.showSlice = false;  // the section has its own layer
     buildStructure3D(scene, pal, noSlice, far, structure_);
     farFaces_ = far;
+    ++uploads_;
     renderer.upload(Layer::Structure, structure_, origin_);
   }
   if (reshape || restyle || v.section != seen_.section || v.structure != seen_.structure) {
@@ -115,24 +125,27 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
       section_.segments = std::move(all.segments);
     }
     renderer.upload(Layer::Section, section_, origin_);
+    ++uploads_;
   }
   if (reshape || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
     buildOverlay3D(scene, pal, opt, overlay_);
     renderer.upload(Layer::Overlay, overlay_, origin_);
   }
-  if (reshape || v.points != seen_.points) renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+  if (reshape || v.points != seen_.points) {
+    renderer.uploadPoints(scene.points(), scene.classes(), origin_);
+    ++uploads_;
+  }
   seen_ = v;
   scene_ = &scene;
 }
 
-void SceneView::draw(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio) {
+FrameParams SceneView::frameParams(Model& model, glm::vec2 fbSize, float pixelRatio) {
   const Palette& pal = paletteFor(model.settings.theme);
   FrameParams f;
   f.framebuffer = fbSize;
   f.pixelRatio = pixelRatio;
   f.visibleMask = model.settings.visibleMask;
   classColours(pal, f);
-
   if (model.dim == Dim::Two) {
     const Camera2D& cam = model.camera2d;
     f.clipFromLocal = cam.clipFromLocal(glm::dvec2(origin_));
@@ -140,28 +153,70 @@ void SceneView::draw(Model& model, Renderer& renderer, glm::vec2 fbSize, float p
     pointSize_ = model.settings.pointSize > 0.0f
                      ? model.settings.pointSize
                      : autoPointSize(model.scene2d.points().size(), 0.6 * vp.x * vp.y);
-    f.pointSize = pointSize_;
-    renderer.drawFills(Layer::Structure, f);
-    renderer.drawSegments(Layer::Structure, f);
-    renderer.drawPoints(f);
-    renderer.drawMarkers(Layer::Structure, f);
-    renderer.drawFills(Layer::Overlay, f);
-    renderer.drawSegments(Layer::Overlay, f);
-    renderer.drawMarkers(Layer::Overlay, f);
+  } else {
+    const Camera3D& cam = model.camera3d;
+    f.clipFromLocal = cam.clipFromLocal(origin_);
+    f.eyeLocal = glm::vec3(cam.eye() - origin_);
+    const glm::dvec2 vp = cam.viewport();
+    pointSize_ = model.settings.pointSize > 0.0f
+                     ? model.settings.pointSize
+                     : 0.8f * autoPointSize(model.scene3d().points().size(), 0.6 * vp.x * vp.y);
+  }
+  f.pointSize = pointSize_;
+  return f;
+}
+
+void SceneView::drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio,
+                         double frameBudgetMs) {
+  FrameParams f = frameParams(model, fbSize, pixelRatio);
+  const Rgba bg = paletteFor(model.settings.theme).background;
+  const BaseKey key{f.clipFromLocal, fbSize, uploads_, f.visibleMask, f.pointSize};
+  const std::size_t n = renderer.pointCount();
+  if (!renderer.hasTarget()) {
+    // no cache: the whole base, every frame
+    drawBaseLayers(model, renderer, f);
+    pointsDrawn_ = n;
     return;
   }
+  if (!(cached_ && key == lastKey_ && !partial_)) {
+    // moving: the camera changed since the last picture
+    const bool moving = cached_ && key.clip != lastKey_.clip;
+    f.maxPoints = moving && n > budget_ ? budget_ : n;
+    renderer.bindTarget();
+    glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    glDepthMask(GL_TRUE);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const auto t0 = std::chrono::steady_clock::now();
+    drawBaseLayers(model, renderer, f);
+    if (n > 100000) {
+      // a heavy spray: learn how many points fit the frame budget
+      glFinish();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double perPoint = ms / static_cast<double>(std::max<std::size_t>(f.maxPoints, 1));
+      budget_ = static_cast<std::size_t>(std::clamp(frameBudgetMs / std::max(perPoint, 1e-9), 20000.0, 1e9));
+    }
+    renderer.finishTarget();
+    pointsDrawn_ = std::min(n, f.maxPoints);
+    partial_ = pointsDrawn_ < n;
+    lastKey_ = key;
+    cached_ = true;
+  }
+  glViewport(0, 0, static_cast<GLsizei>(fbSize.x), static_cast<GLsizei>(fbSize.y));
+  renderer.compositeTarget();
+}
 
-  const Camera3D& cam = model.camera3d;
-  Scene3D& scene = model.scene3d();
-  f.clipFromLocal = cam.clipFromLocal(origin_);
-  f.eyeLocal = glm::vec3(cam.eye() - origin_);
-  const glm::dvec2 vp = cam.viewport();
-  pointSize_ = model.settings.pointSize > 0.0f
-                   ? model.settings.pointSize
-                   : 0.8f * autoPointSize(scene.points().size(), 0.6 * vp.x * vp.y);
-  f.pointSize = pointSize_;
+void SceneView::drawBaseLayers(Model& model, Renderer& renderer, const FrameParams& base) {
+  FrameParams f = base;
+  if (model.dim == Dim::Two) {
+    // points over the cells' tints, under the lines and edges; boundary points over those
+    renderer.drawFills(Layer::Structure, f);
+    renderer.drawPoints(f, PointRange::AllButBoundary);
+    renderer.drawSegments(Layer::Structure, f);
+    renderer.drawPoints(f, PointRange::Boundary);
+    renderer.drawMarkers(Layer::Structure, f);
+    return;
+  }
   const bool transparent = model.settings.view3d.transparent;
-
   // opaque faces first, pushed back a little so their edges draw over them
   f.depth = true;
   if (!transparent) {
@@ -184,10 +239,16 @@ void SceneView::draw(Model& model, Renderer& renderer, glm::vec2 fbSize, float p
     renderer.drawFills(Layer::Mesh, f, Cull::Front);
     renderer.drawFills(Layer::Mesh, f, Cull::Back);
   }
-  // the overlay shows through everything
   f.depth = false;
   f.depthWrite = false;
   renderer.drawMarkers(Layer::Structure, f);
+}
+
+void SceneView::drawOverlay(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio) {
+  // the overlay shows through everything
+  FrameParams f = frameParams(model, fbSize, pixelRatio);
+  f.depth = false;
+  f.depthWrite = false;
   renderer.drawFills(Layer::Overlay, f);
   renderer.drawSegments(Layer::Overlay, f);
   renderer.drawMarkers(Layer::Overlay, f);

@@ -17,8 +17,15 @@ class SceneView {
 public:
   // brings the renderer's layers and points up to date with the model
   void sync(Model& model, Renderer& renderer);
-  // draws the scene into the framebuffer (fbSize pixels, pixelRatio per window pixel)
-  void draw(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio);
+  // Draws the scene's base (everything but the overlay) into the renderer's cache when it
+  // changed, then the cache into the window; without a cache, straight into the window.
+  // While the camera moves over a heavy spray, a subsample of the points is drawn, sized
+  // so that a frame takes about `frameBudgetMs`; all of them once it stops.
+  void drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio, double frameBudgetMs = 40.0);
+  // draws the overlay (hover, probe, drag) over it
+  void drawOverlay(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio);
+  // how many points the last base drew, of how many
+  std::size_t pointsDrawn() const { return pointsDrawn_; }
 
   // the draw lists with labels, for the text ImGui writes over the scene
   const DrawList& structure() const { return structure_; }
@@ -27,6 +34,17 @@ public:
   float pointSize() const { return pointSize_; }
 
 private:
+  // what the cached base was drawn from
+  struct BaseKey {
+    glm::mat4 clip{0.0f};
+    glm::vec2 fb{0.0f};
+    std::uint64_t uploads = 0;
+    unsigned mask = 0;
+    float pointSize = 0.0f;
+    bool operator==(const BaseKey&) const = default;
+  };
+  FrameParams frameParams(Model& model, glm::vec2 fbSize, float pixelRatio);
+  void drawBaseLayers(Model& model, Renderer& renderer, const FrameParams& f);
   void sync2d(const Model& model, Renderer& renderer, bool restyle);
   void sync3d(Model& model, Renderer& renderer, bool restyle);
 
@@ -40,6 +58,12 @@ private:
   View2DOptions options2_{};
   View3DOptions options3_{};
   unsigned farFaces_ = 0;
+  std::uint64_t uploads_ = 0;     // grows with every upload the base depends on
+  BaseKey lastKey_;
+  bool cached_ = false;           // the cache holds lastKey_'s picture
+  bool partial_ = false;          // ... drawn with a subsample of the points
+  std::size_t budget_ = 250000;   // points a moving frame may draw
+  std::size_t pointsDrawn_ = 0;
   bool first_ = true;
   float pointSize_ = 4.0f;
 };

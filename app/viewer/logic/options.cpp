@@ -74,6 +74,8 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
     else if (a == "--near-boundary") o.nearBoundary = true;
     else if (a == "--hide-ui") o.hideUi = true;
     else if (a == "--no-xvfb") o.noXvfb = true;
+    else if (a == "--animate") o.animate = true;
+    else if (a == "--compare") o.compare = true;
     else if (a == "--method") {
       if (!value(v)) return fail("--method needs a method name");
       o.method = std::string(v);
@@ -189,6 +191,7 @@ Scene:
   --spray N             spray N points (0 .. 10^7; 1e6 works) classified by the locator
   --near-boundary       spray core's hard cases on and next to the boundary instead
   --show WHICH          all | inside | outside | boundary points
+  --compare             time every method on the spray at start (see the Method panel)
   --probe X,Y[,Z]       place a point there and show its trace
   --hover X,Y           2D: hover there (shows the cell under it)
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
@@ -205,6 +208,7 @@ View:
 Without hands:
   --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
   --frames N            render N frames, print the mean frame time and exit
+  --animate             move the camera every frame (to time frames under a hand)
   --no-xvfb             without a display, fail instead of re-running under xvfb-run
 
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to

@@ -42,6 +42,8 @@ struct Options {
   std::string shaderDir;                  // overrides the built-in shader directory
   int samples = -1;                       // MSAA samples; 0 none; -1: 4, none in software
   bool noXvfb = false;                    // do not re-run under xvfb-run without a display
+  bool animate = false;                   // move the camera every frame (timing)
+  bool compare = false;                   // time every method at start (the Method panel)
   bool help = false, version = false;
 };
 

@@ -21,10 +21,14 @@ constexpr Preset kPresets[] = {
     {"thin-slab", "Thin slab",
      "Two vertices 10^-12 apart in y: a slab that thin, and uniform slabs listing extra edges.",
      false, Method2D::Uniform},
-    {"tiny-faces", "Tiny faces", "A polyhedron with faces far smaller than the others.", true,
-     std::nullopt},
+    {"tiny-faces", "Tiny faces",
+     "A cube with one corner rounded by a cap of tiny triangles (areas 10^10 apart): the "
+     "cube map refines its cells there as a quadtree.",
+     true, std::nullopt},
     {"coplanar-faces", "Coplanar faces",
-     "Triangles lying in one plane: they must merge into one face.", true, std::nullopt},
+     "A cube whose sides are split into grids of coplanar squares: valid, and every cell "
+     "lists the pieces it meets.",
+     true, std::nullopt},
 };
 
 }  // namespace

@@ -45,10 +45,11 @@ std::size_t baseEdgesPerCell(Method2D m) {
 }
 
 Scene2D::Scene2D() {
+  generate(PolygonKind::Random, kDefaultVertices, kDefaultSeed);
   // eight polar slabs per octant: most cells then list one edge, and the cells where a
   // vertex falls stand out, as in the paper's figure
   resolution_[static_cast<std::size_t>(Method2D::Polar)] = kDefaultPolarSlabs;
-  generate(PolygonKind::Random, kDefaultVertices, kDefaultSeed);
+  rebuildLocator();
   spray({kDefaultSpray, 1, false});
 }
 
@@ -61,9 +62,15 @@ void Scene2D::setError(std::string message) {
 
 bool Scene2D::adopt(ConvexPolygon polygon, std::string label, bool respray) {
   std::optional<ConvexPolygon> previous = std::move(polygon_);
+  const auto resolutions = resolution_;
   polygon_.emplace(std::move(polygon));
+  // a new shape (not an edit) gets core's choice where the user chose nothing
+  if (respray)
+    for (std::size_t m = 0; m < resolution_.size(); ++m)
+      if (!chosen_[m]) resolution_[m] = 0;
   if (!rebuildLocator()) {
     polygon_ = std::move(previous);
+    resolution_ = resolutions;
     return false;
   }
   label_ = std::move(label);
@@ -147,6 +154,7 @@ void Scene2D::setMethod(Method2D m) {
 
 bool Scene2D::setResolution(std::uint32_t r) {
   std::uint32_t& slot = resolution_[static_cast<std::size_t>(method_)];
+  chosen_[static_cast<std::size_t>(method_)] = true;
   if (slot == r) return true;
   const std::uint32_t previous = slot;
   slot = r;

@@ -86,6 +86,8 @@ public:
   Method2D method() const { return method_; }
   // Slabs (uniform) or slabs per octant (polar), 0 = chosen by core; other methods have
   // none. On a value core refuses, keeps the locator, returns false and sets error().
+  // A resolution set here stays for new shapes; the default scene's goes back to core's
+  // choice when another shape comes.
   bool setResolution(std::uint32_t r);
   std::uint32_t resolution() const { return resolution_[static_cast<std::size_t>(method_)]; }
   // the resolution the locator actually uses (core's choice when 0 was asked)
@@ -150,6 +152,7 @@ private:
   std::string label_;
   Method2D method_ = Method2D::Polar;
   std::array<std::uint32_t, 5> resolution_{};
+  std::array<bool, 5> chosen_{};  // the resolution was set through setResolution
   std::optional<Locator2D> locator_;
   std::vector<Cell2D> cells_;
   Stats2D stats_;

@@ -41,10 +41,11 @@ constexpr std::uint32_t kSectionSamples = 160;
 }  // namespace
 
 Scene3D::Scene3D() {
-  // an icosahedron on an 8 x 8 grid per cube face: most cells list one face, and the cells
-  // an edge or a vertex projects into stand out
-  resolution_ = kDefaultGrid;
   generate(PolyhedronKind::Icosahedron, 20, 1);
+  // an 8 x 8 grid per cube face: most cells list one face, and the cells an edge or a
+  // vertex projects into stand out
+  resolution_ = kDefaultGrid;
+  rebuildLocator();
   spray({kDefaultSpray, 1, false});
 }
 
@@ -57,9 +58,12 @@ void Scene3D::setError(std::string message) {
 
 bool Scene3D::adopt(ConvexPolyhedron poly, std::string label) {
   std::optional<ConvexPolyhedron> previous = std::move(poly_);
+  const std::uint32_t resolution = resolution_;
   poly_.emplace(std::move(poly));
+  if (!chosen_) resolution_ = 0;  // core's choice unless the user chose
   if (!rebuildLocator()) {
     poly_ = std::move(previous);
+    resolution_ = resolution;
     return false;
   }
   label_ = std::move(label);
@@ -150,6 +154,7 @@ void Scene3D::setMethod(Method3D m) {
 }
 
 bool Scene3D::setResolution(std::uint32_t g) {
+  chosen_ = true;
   if (g == resolution_) return true;
   const std::uint32_t previous = resolution_;
   resolution_ = g;

@@ -135,6 +135,7 @@ private:
   std::string label_;
   Method3D method_ = Method3D::Cubemap;
   std::uint32_t resolution_ = 0;
+  bool chosen_ = false;  // the grid size was set through setResolution
   std::optional<Locator3D> locator_;
   std::vector<Cell3D> cells_;
   Stats3D stats_;

@@ -207,7 +207,7 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   }
   if (opt.showHandles && n <= kMaxHandles)
     for (std::size_t i = 0; i < n; ++i)
-      out.marker(at2(toGlm(poly.vertex(i))), pal.handle, 7.0f, MarkerShape::Disc);
+      out.marker(at2(toGlm(poly.vertex(i))), pal.handle, 9.0f, MarkerShape::Ring);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,

@@ -60,6 +60,14 @@ std::string numbered(std::string_view prefix, std::uint64_t n) {
   return out;
 }
 
+std::string nsText(double ns) {
+  char buf[32];
+  if (ns >= 100.0) std::snprintf(buf, sizeof buf, "%.0f", ns);
+  else if (ns >= 10.0) std::snprintf(buf, sizeof buf, "%.1f", ns);
+  else std::snprintf(buf, sizeof buf, "%.2f", ns);
+  return buf;
+}
+
 std::string signText(int sign) { return sign > 0 ? " +" : (sign < 0 ? " -" : " 0"); }
 
 std::string grouped(std::size_t n) {

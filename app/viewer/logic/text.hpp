@@ -22,6 +22,8 @@ std::string exact(Vec2 p);
 std::string approx(double v, int digits = 4);
 // `prefix` followed by `n` ("e7", "octant 3")
 std::string numbered(std::string_view prefix, std::uint64_t n);
+// a time in nanoseconds, to 3 digits without an exponent ("6810", "154", "12.3", "4.07")
+std::string nsText(double ns);
 // " +", " 0" or " -" (the sign of a predicate, for labels)
 std::string signText(int sign);
 // "1 234 567": thousands apart, for counts

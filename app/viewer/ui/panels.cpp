@@ -120,7 +120,7 @@ void methodPanel(Model& model, UiState& ui) {
     }
     row("memory", bytesText(s.bytes) + " (" + approx(s.bytesPerEdge, 3) + " B/edge)");
     row("build", approx(s.buildSeconds * 1e3, 3) + " ms");
-    if (!scene.points().empty()) row("locate", approx(scene.locateNsPerPoint(), 3) + " ns/point");
+    if (!scene.points().empty()) row("locate", nsText(scene.locateNsPerPoint()) + " ns/point");
     ImGui::EndTable();
   }
   if (!s.histogram.empty() && s.cells) {
@@ -157,8 +157,8 @@ void methodPanel(Model& model, UiState& ui) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(std::string(toString(r.method)).c_str());
       ImGui::TableNextColumn();
-      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", approx(r.nsPerPoint, 3).c_str());
-      else ImGui::Text("%s", approx(r.nsPerPoint, 3).c_str());
+      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
+      else ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(), bytesText(r.bytes).c_str());
       ImGui::TableNextColumn();

@@ -157,8 +157,8 @@ void methodPanel3(Model& model, UiState& ui) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(std::string(toString(r.method)).c_str());
       ImGui::TableNextColumn();
-      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", approx(r.nsPerPoint, 3).c_str());
-      else ImGui::Text("%s", approx(r.nsPerPoint, 3).c_str());
+      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
+      else ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(), bytesText(r.bytes).c_str());
       ImGui::TableNextColumn();

@@ -82,7 +82,7 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
     ImGui::SliderFloat("##size", &model.settings.pointSize, 1.0f, 12.0f, "%.1f px");
   }
   if (!scene.points().empty())
-    ImGui::TextDisabled("classified at %s ns/point", approx(scene.locateNsPerPoint(), 3).c_str());
+    ImGui::TextDisabled("classified at %s ns/point", nsText(scene.locateNsPerPoint()).c_str());
 }
 
 // === 3D panels (panels3d.cpp)
