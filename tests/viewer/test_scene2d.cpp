@@ -267,7 +267,7 @@ TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
   EXPECT_EQ(s.resolution(), 8u);  // the default scene's polar slabs per octant
   ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 40, 1));
   EXPECT_EQ(s.resolution(), 0u);  // core's choice for a new shape
-  EXPECT_EQ(s.effectiveResolution(), 11u);
+  EXPECT_EQ(s.effectiveResolution(), 10u);  // (40 + 3) / 4
   ASSERT_TRUE(s.setResolution(5));
   ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 60, 1));
   EXPECT_EQ(s.resolution(), 5u);
