@@ -46,7 +46,7 @@ struct TraceSink {
 };
 
 // orient2d of p against edge e of the ring v
-inline int edgeSign(const std::vector<Vec2>& v, std::uint32_t e, Vec2 p) {
+inline int edgeSign(std::span<const Vec2> v, std::uint32_t e, Vec2 p) {
   std::uint32_t next = e + 1 == v.size() ? 0 : e + 1;
   return orient2d(v[e], v[next], p);
 }
@@ -62,7 +62,7 @@ struct Verdict {
 
 // tests p against the listed edges, stopping at the first outer side
 template <class Sink>
-inline Location testEdges(const std::vector<Vec2>& v, const std::uint32_t* first,
+inline Location testEdges(std::span<const Vec2> v, const std::uint32_t* first,
                           const std::uint32_t* last, Vec2 p, Sink& sink) {
   bool zero = false;
   for (const std::uint32_t* it = first; it != last; ++it) {
@@ -74,6 +74,10 @@ inline Location testEdges(const std::vector<Vec2>& v, const std::uint32_t* first
   return zero ? Location::Boundary : Location::Inside;
 }
 
+// p has an infinite or NaN coordinate: no polygon contains it, and no predicate may see it
+// (the exact fallback cannot represent it)
+inline bool nonFinite(Vec2 p) { return !(std::isfinite(p.x) && std::isfinite(p.y)); }
+
 // p outside the closed box
 inline bool outsideBox(const Box2& b, Vec2 p) {
   return !(p.x >= b.lo.x && p.x <= b.hi.x && p.y >= b.lo.y && p.y <= b.hi.y);
@@ -82,7 +86,8 @@ inline bool outsideBox(const Box2& b, Vec2 p) {
 // Bisection over the fan from vertex 0 (the wedge method), shared by `wedge` and by the
 // polar locator's fallback. v is counter-clockwise and strictly convex.
 template <class Sink>
-Location fanLocate(const std::vector<Vec2>& v, Vec2 p, Sink& sink) {
+Location fanLocate(std::span<const Vec2> v, Vec2 p, Sink& sink) {
+  if (nonFinite(p)) return Location::Outside;
   const std::uint32_t n = static_cast<std::uint32_t>(v.size());
   const Vec2 o = v[0];
   int first = orient2d(o, v[1], p);
@@ -185,6 +190,7 @@ HalfplaneLocator::HalfplaneLocator(const ConvexPolygon& polygon) {
 }
 
 Location HalfplaneLocator::locate(Vec2 p) const noexcept {
+  if (nonFinite(p)) return Location::Outside;
   bool zero = false;
   const std::size_t n = v_.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -202,6 +208,7 @@ void HalfplaneLocator::locate(std::span<const Vec2> points, std::span<Location> 
 Trace2D HalfplaneLocator::trace(Vec2 p) const {
   Trace2D t;
   t.method = Method2D::Halfplane;
+  if (nonFinite(p)) return t;  // Outside, before any predicate
   bool zero = false;
   t.result = Location::Inside;
   for (std::uint32_t i = 0; i < v_.size(); ++i) {
@@ -507,9 +514,24 @@ std::vector<Cell2D> UniformLocator::cells() const {
 
 namespace {
 
-// margin, in pseudo-angle units (8 per turn), added on both sides of an edge's span when
-// registering it; far above the few ulps by which a query's computed cell can stray
+// The index function (cellOf) is, in exact arithmetic, floor(q * P) for the pseudo-angle P
+// in [0, 8) of the direction from the centre: octant from signs and |dx| vs |dy|, then the
+// ratio min/max of |dx|, |dy| inside it. In doubles the ratio carries a relative error of at
+// most 2 ulps (one rounding in each subtraction, one in the division), so the cell a query
+// computes lies within 2^-50 of its exact P, and on an octant border it may land on either
+// side. The build evaluates the same quantities for each vertex and registers every edge on
+// the cells of its span widened by this margin, far above those errors and far below a
+// cell: every point maps to a cell listing the edge its ray from the centre exits through.
 constexpr double kPolarMargin = 0x1p-40;
+
+// per octant index (sign bit of dx, sign bit of dy, |dy| > |dx|): the octant counter-clockwise
+// from +x, and whether the ratio min/max falls as the angle grows in it
+struct OctantLayout {
+  std::uint32_t octant;
+  bool falling;
+};
+constexpr OctantLayout kOctantLayout[8] = {{0, false}, {1, true}, {7, true}, {6, false},
+                                           {3, true},  {2, false}, {4, false}, {5, true}};
 
 // Quadrant and canonical coordinates (u > 0, v >= 0) of a direction; false for (0, 0).
 // Each quadrant is the direction rotated by a multiple of 90 degrees, which is exact.
@@ -608,13 +630,26 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
   if (slabsPerOctant > (1u << 23)) throw UsageError("polar: at most 2^23 slabs per octant");
   q_ = slabsPerOctant ? slabsPerOctant : std::max<std::uint32_t>(1, (n + 3) / 4);
   qd_ = static_cast<double>(q_);
+  n_ = n;
   const std::uint32_t cells = 8 * q_;
+  for (std::size_t i = 0; i < 8; ++i) {
+    const OctantLayout o = kOctantLayout[i];
+    cellBase_[i] = static_cast<std::int64_t>(o.octant) * q_ + (o.falling ? q_ - 1 : 0);
+    cellStep_[i] = o.falling ? -1 : 1;
+  }
   auto centre = findCentre(v_);
+  // the ring closes on itself: edges e and e + 1 read v_[e .. e + 2] without wrapping
+  auto pad = [&] {
+    v_.push_back(v_[0]);
+    v_.push_back(v_[1]);
+    v_.shrink_to_fit();
+  };
   if (!centre) {
     // no double point lies strictly inside (a sliver thinner than the double grid):
     // keep an empty table and answer by bisection over the fan from vertex 0
     c_ = v_[0];
     offsets_.assign(cells + 1, 0);
+    pad();
     buildSeconds_ = secondsSince(t0);
     return;
   }
@@ -651,22 +686,19 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
         break;
       }
   }
+  pad();
   buildSeconds_ = secondsSince(t0);
 }
 
 std::int64_t PolarLocator::cellOf(Vec2 p) const noexcept {
-  int quad = 0;
-  double u = 0, v = 0;
-  if (!canonical(p.x - c_.x, p.y - c_.y, quad, u, v)) return -1;
-  if (!(u < std::numeric_limits<double>::infinity() && v < std::numeric_limits<double>::infinity()))
-    return -1;
-  const std::uint32_t last = q_ - 1;
-  if (v <= u) {
-    std::uint32_t s = std::min(static_cast<std::uint32_t>((v / u) * qd_), last);
-    return static_cast<std::int64_t>(2 * quad) * q_ + s;
-  }
-  std::uint32_t s = std::min(static_cast<std::uint32_t>((u / v) * qd_), last);
-  return static_cast<std::int64_t>(2 * quad + 1) * q_ + (last - s);
+  const double dx = p.x - c_.x, dy = p.y - c_.y;
+  const double ax = std::fabs(dx), ay = std::fabs(dy);
+  const double hi = std::max(ax, ay), lo = std::min(ax, ay);  // maxsd / minsd, no branch
+  // the centre itself, a non-finite point, or one too far for the arithmetic
+  if (!(ax + ay < std::numeric_limits<double>::infinity()) || hi == 0) return -1;
+  const std::uint32_t k = std::min(static_cast<std::uint32_t>(lo / hi * qd_), q_ - 1);
+  const unsigned octant = (std::signbit(dx) ? 4u : 0u) | (std::signbit(dy) ? 2u : 0u) | (ay > ax ? 1u : 0u);
+  return cellBase_[octant] + cellStep_[octant] * static_cast<std::int64_t>(k);
 }
 
 template <class Sink>
@@ -684,37 +716,103 @@ Location PolarLocator::searchRange(Vec2 p, std::uint32_t first, std::uint32_t co
     else hi = mid;
   }
   // the ray from the centre through p leaves through edge e[lo]: one test decides
-  int s = edgeSign(v_, e[lo], p);
+  int s = edgeSign(ring(), e[lo], p);
   sink.edge(e[lo], s);
   return s > 0 ? Location::Inside : (s == 0 ? Location::Boundary : Location::Outside);
 }
 
 template <class Sink>
 Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
-  if (entries_.empty()) return fanLocate(v_, p, sink);  // no centre strictly inside
+  if (entries_.empty()) return fanLocate(ring(), p, sink);  // no centre strictly inside
   std::int64_t c = cellOf(p);
   if (c < 0) {
     if (p == c_) {
       sink.atCentre();
       return Location::Inside;
     }
-    return fanLocate(v_, p, sink);  // offsets too large for the index arithmetic
+    return fanLocate(ring(), p, sink);  // offsets too large for the index arithmetic
   }
   const std::uint32_t cell = static_cast<std::uint32_t>(c);
   sink.cell(c, static_cast<int>(cell / q_));
   const std::uint32_t b = offsets_[cell], k = offsets_[cell + 1] - b;
-  if (k <= kCrowdedCell) return testEdges(v_, entries_.data() + b, entries_.data() + b + k, p, sink);
+  if (k <= kCrowdedCell) return testEdges(ring(), entries_.data() + b, entries_.data() + b + k, p, sink);
   sink.crowded();
   return searchRange(p, b, k, sink);
 }
 
+namespace {
+
+// Inside / Outside from the filtered signs of p against edges (r0, r1) and (r1, r2), without a
+// branch on the answer; false when the filter cannot decide one of them (then the caller
+// takes the exact path). Testing a second edge that the cell does not list is harmless:
+// p is inside the polygon only if it is on the inner side of every edge.
+inline bool twoEdges(const Vec2* r, Vec2 p, Location& out) noexcept {
+  using detail::kCcwBound;
+  using detail::kTinyPermanent;
+  using detail::kUnderflowSlack;
+  const double l0 = (r[0].x - p.x) * (r[1].y - p.y), m0 = (r[0].y - p.y) * (r[1].x - p.x);
+  const double l1 = (r[1].x - p.x) * (r[2].y - p.y), m1 = (r[1].y - p.y) * (r[2].x - p.x);
+  const double d0 = l0 - m0, d1 = l1 - m1;
+  const double s0 = std::fabs(l0) + std::fabs(m0), s1 = std::fabs(l1) + std::fabs(m1);
+  const bool sure = std::fabs(d0) > kCcwBound * s0 + kUnderflowSlack && s0 >= kTinyPermanent &&
+                    std::fabs(d1) > kCcwBound * s1 + kUnderflowSlack && s1 >= kTinyPermanent;
+  out = (d0 < 0) | (d1 < 0) ? Location::Outside : Location::Inside;
+  return sure;
+}
+
+}  // namespace
+
 Location PolarLocator::locate(Vec2 p) const noexcept {
+  const std::int64_t c = cellOf(p);
+  if (c >= 0) {
+    const std::uint32_t b = offsets_[static_cast<std::size_t>(c)];
+    const std::uint32_t k = offsets_[static_cast<std::size_t>(c) + 1] - b;
+    Location out;
+    if (k - 1 < 2 && twoEdges(v_.data() + entries_[b], p, out)) return out;
+  }
   NoSink sink;
   return run(p, sink);
 }
 
 void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  // Blocks of points go through the table in stages (cell, then its run, then its edges),
+  // prefetching each stage's memory for the whole block before the next stage reads it, so
+  // the cache misses of a large table overlap instead of following one another.
+  constexpr std::size_t kBlock = 32;
+  const std::size_t n = std::min(points.size(), out.size());
+  std::int64_t cell[kBlock];
+  std::uint32_t first[kBlock], count[kBlock];
+  for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - i0);
+    const Vec2* p = points.data() + i0;
+    for (std::size_t j = 0; j < m; ++j) {
+      cell[j] = cellOf(p[j]);
+      if (cell[j] >= 0) __builtin_prefetch(offsets_.data() + cell[j]);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      first[j] = 0;
+      count[j] = 0;
+      if (cell[j] < 0) continue;
+      first[j] = offsets_[static_cast<std::size_t>(cell[j])];
+      count[j] = offsets_[static_cast<std::size_t>(cell[j]) + 1] - first[j];
+      __builtin_prefetch(entries_.data() + first[j]);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      if (count[j] - 1 >= 2) continue;
+      first[j] = entries_[first[j]];  // now the first edge
+      __builtin_prefetch(v_.data() + first[j]);
+      __builtin_prefetch(v_.data() + first[j] + 2);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      Location r;
+      if (count[j] - 1 < 2 && twoEdges(v_.data() + first[j], p[j], r)) {
+        out[i0 + j] = r;
+      } else {
+        NoSink sink;
+        out[i0 + j] = run(p[j], sink);
+      }
+    }
+  }
 }
 
 Trace2D PolarLocator::trace(Vec2 p) const {
@@ -727,7 +825,7 @@ Trace2D PolarLocator::trace(Vec2 p) const {
 }
 
 Stats2D PolarLocator::stats() const {
-  return csrStats(v_.size(), offsets_,
+  return csrStats(n_, offsets_,
                   sizeof(*this) + bytesOf(v_) + bytesOf(offsets_) + bytesOf(entries_), buildSeconds_);
 }
 

@@ -1,6 +1,7 @@
 // convexloc — point location in a convex polygon: the paper's five methods.
 //
-// Every locator answers exactly (see Location) and shares one interface:
+// Every locator answers exactly (see Location); a point with an infinite or NaN coordinate is
+// Outside. They share one interface:
 //   locate(p)            one point
 //   locate(points, out)  a batch; allocates nothing per point
 //   trace(p)             the steps taken: cell, predicates and their signs, result
@@ -202,11 +203,16 @@ private:
   Location run(Vec2 p, Sink& sink) const noexcept;
   template <class Sink>
   Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count, Sink& sink) const noexcept;
+  // the n_ vertices (v_ repeats the first two at its end)
+  std::span<const Vec2> ring() const noexcept { return {v_.data(), n_}; }
   std::vector<Vec2> v_;
   std::vector<std::uint32_t> offsets_;  // CSR over 8 * q_ cells
   std::vector<std::uint32_t> entries_;  // each cell's edges in counter-clockwise order
+  std::int64_t cellBase_[8] = {};       // per octant index: its first cell, or its last
+  std::int64_t cellStep_[8] = {};       // +1 or -1: how the cell follows the ratio
   Box2 box_{};
   Vec2 c_{};
+  std::uint32_t n_ = 0;
   std::uint32_t q_ = 1;
   double qd_ = 1.0;
   double buildSeconds_ = 0.0;
