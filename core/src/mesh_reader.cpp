@@ -58,7 +58,8 @@ public:
       }
       if (fill()) continue;
       if (begin_ == end_) return false;
-      line = {base + begin_, end_ - begin_};  // the last line has no newline
+      // the last line has no newline; fill() may have grown (moved) the buffer: not `base`
+      line = {buf_.data() + begin_, end_ - begin_};
       begin_ = end_;
       return finish(line);
     }
@@ -69,9 +70,10 @@ public:
 private:
   bool finish(std::string_view& line) {
     ++line_;
+    // the limit is on the text: a CRLF line's '\r' is not counted (as in text_reader.cpp)
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.size() > kMaxLineBytes)
       throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     return true;
   }
   bool fill() {

@@ -54,6 +54,17 @@ inline std::string show(Vec2 p) {
   return out;
 }
 
+inline std::string show(Vec3 p) {
+  std::string out = "(";
+  out += show(p.x);
+  out += ", ";
+  out += show(p.y);
+  out += ", ";
+  out += show(p.z);
+  out += ")";
+  return out;
+}
+
 // === Bytes as a FILE
 
 // The fuzzer's bytes as a read-only FILE (fmemopen on a copy; an empty input is a tmpfile).
@@ -145,6 +156,18 @@ public:
     return {};
   }
 
+  Vec3 point3() noexcept {
+    if (e_ == Encoding::Circle) {  // on a sphere: two angles
+      double r = std::ldexp(1.0, static_cast<int>(src_.byte() % 64) * 32 - 1022);
+      double t = src_.u16() * (2 * std::numbers::pi / 65536.0);
+      double u = src_.u16() * (std::numbers::pi / 65535.0);
+      return {r * std::cos(t) * std::sin(u), r * std::sin(t) * std::sin(u), r * std::cos(u)};
+    }
+    Vec2 xy = point();
+    Vec2 z = point();
+    return {xy.x, xy.y, z.x};
+  }
+
 private:
   double mixed() noexcept {
     int k = src_.smallInt();
@@ -174,6 +197,8 @@ inline int exactOrient(Vec2 a, Vec2 b, Vec2 c) {
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
+  for (Vec2 p : {a, b, c})
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("exactOrient needs finite points, got " + show(p));
   // kept between calls: GMP reuses their storage instead of allocating each time
   thread_local mpq_class ax, ay, dx1, dy1, dx2, dy2;
   ax = a.x;
@@ -200,6 +225,78 @@ inline Location exactLocate(std::span<const Vec2> v, Vec2 p) {
     if (s == 0) on = true;
   }
   return on ? Location::Boundary : Location::Inside;
+}
+
+// Exact sign of det[a - d; b - d; c - d] (core's orient3d convention: > 0 when d is on the
+// inner side of a triangle a, b, c that is counter-clockwise seen from outside). The same
+// two stages as exactOrient: an x87 filter with Shewchuk's bound for 3x3 determinants, then
+// rationals.
+inline int exactOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  {
+    using L = long double;
+    L adx = L(a.x) - d.x, ady = L(a.y) - d.y, adz = L(a.z) - d.z;
+    L bdx = L(b.x) - d.x, bdy = L(b.y) - d.y, bdz = L(b.z) - d.z;
+    L cdx = L(c.x) - d.x, cdy = L(c.y) - d.y, cdz = L(c.z) - d.z;
+    L bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    L cdxady = cdx * ady, adxcdy = adx * cdy;
+    L adxbdy = adx * bdy, bdxady = bdx * ady;
+    L det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    L permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                  (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                  (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+    constexpr L kEpsL = 0x1p-64L;
+    L bound = (7 * kEpsL + 56 * kEpsL * kEpsL) * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  for (Vec3 p : {a, b, c, d})
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail("exactOrient3d needs finite points, got " + show(p));
+  thread_local mpq_class q[9], t1, t2, det;
+  const double in[9] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z};
+  const double sub[3] = {d.x, d.y, d.z};
+  for (int i = 0; i < 9; ++i) {
+    q[i] = in[i];
+    q[i] -= mpq_class(sub[i % 3]);
+  }
+  // rows a - d, b - d, c - d; expand along the z column
+  t1 = q[3] * q[7];
+  t2 = q[6] * q[4];
+  det = q[2] * (t1 - t2);
+  t1 = q[6] * q[1];
+  t2 = q[0] * q[7];
+  det += q[5] * (t1 - t2);
+  t1 = q[0] * q[4];
+  t2 = q[3] * q[1];
+  det += q[8] * (t1 - t2);
+  return sgn(det);
+}
+
+// where p lies with respect to a closed convex surface of triangles, each counter-clockwise
+// seen from outside
+template <class Triangles>
+Location exactLocate3d(std::span<const Vec3> v, const Triangles& triangles, Vec3 p) {
+  bool on = false;
+  for (const auto& t : triangles) {
+    int s = exactOrient3d(v[t[0]], v[t[1]], v[t[2]], p);
+    if (s < 0) return Location::Outside;
+    if (s == 0) on = true;
+  }
+  return on ? Location::Boundary : Location::Inside;
+}
+
+// the points one ulp away from p along each axis, both ways, and along the two diagonals
+inline void addNeighbours3d(std::vector<Vec3>& out, Vec3 p) {
+  const double inf = HUGE_VAL;
+  auto push = [&](Vec3 q) {
+    if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) out.push_back(q);
+  };
+  for (double to : {-inf, inf}) {
+    push({std::nextafter(p.x, to), p.y, p.z});
+    push({p.x, std::nextafter(p.y, to), p.z});
+    push({p.x, p.y, std::nextafter(p.z, to)});
+    push({std::nextafter(p.x, to), std::nextafter(p.y, to), std::nextafter(p.z, to)});
+  }
 }
 
 // the points one ulp away from p in each of the eight directions
