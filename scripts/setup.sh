@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Installs what convexloc needs from Debian's packages (only what is missing), then
-# configures and builds it (Release) in build/. Usage: scripts/setup.sh [--werror]
+# configures and builds one build folder.
+# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz]
+#   (default)   build/       Release, g++: the tools, the viewer, the tests
+#   --sanitize  build-asan/  g++ -O1 with AddressSanitizer + UBSan: everything but the bench
+#   --fuzz      build-fuzz/  clang-14 -O1 with libFuzzer + ASan + UBSan: the core and the
+#                            fuzz targets of tests/fuzz only
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libqhull-dev libcli11-dev libgtest-dev
           libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
-          xvfb xauth libgl1-mesa-dri)
+          xvfb xauth libgl1-mesa-dri clang-14 libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -22,8 +27,36 @@ else
 fi
 
 werror=OFF
-if [[ "${1:-}" == "--werror" || -n "${CI:-}" ]]; then werror=ON; fi
-echo "convexloc: configuring build/ (Release, warnings as errors: $werror)"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCONVEXLOC_WERROR=$werror >/dev/null
-echo "convexloc: building"
-cmake --build build --parallel "$(nproc)"
+variant=plain
+for arg in "$@"; do
+  case $arg in
+    --werror) werror=ON ;;
+    --sanitize) variant=sanitize ;;
+    --fuzz) variant=fuzz ;;
+    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz]" >&2; exit 2 ;;
+  esac
+done
+if [[ -n "${CI:-}" ]]; then werror=ON; fi
+
+# -O1 keeps sanitized code fast enough to test and its reports readable; -g1 gives lines
+sanitized_flags=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" "-DCMAKE_C_FLAGS_DEBUG=-O1 -g1")
+case $variant in
+  plain)
+    dir=build
+    what="Release"
+    options=(-DCMAKE_BUILD_TYPE=Release) ;;
+  sanitize)
+    dir=build-asan
+    what="AddressSanitizer + UndefinedBehaviorSanitizer"
+    options=("${sanitized_flags[@]}" -DCONVEXLOC_SANITIZE=ON -DCONVEXLOC_BUILD_BENCH=OFF) ;;
+  fuzz)
+    dir=build-fuzz
+    what="clang-14, libFuzzer + AddressSanitizer + UndefinedBehaviorSanitizer"
+    options=("${sanitized_flags[@]}" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14
+             -DCONVEXLOC_FUZZ=ON -DCONVEXLOC_BUILD_TESTS=OFF -DCONVEXLOC_BUILD_CLI=OFF
+             -DCONVEXLOC_BUILD_VIEWER=OFF -DCONVEXLOC_BUILD_BENCH=OFF) ;;
+esac
+echo "convexloc: configuring $dir/ ($what, warnings as errors: $werror)"
+cmake -S . -B "$dir" -G Ninja "${options[@]}" -DCONVEXLOC_WERROR=$werror >/dev/null
+echo "convexloc: building $dir/"
+cmake --build "$dir" --parallel "$(nproc)"
