@@ -380,19 +380,27 @@ struct Cone {
   double d[3][3];
 };
 
-// the cone of face t seen from c, scaled by `scale`; false when something is not finite
-bool coneOf(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, double scale, Cone& k) {
+// exact scaling by a power of two: x * 2^shift
+struct PowerOfTwo {
+  int shift = 0;
+  double factor = 1.0;  // 2^shift, when that is a normal double
+  explicit PowerOfTwo(int s) : shift(s), factor(s > -1000 && s < 1000 ? std::ldexp(1.0, s) : 0.0) {}
+  double operator()(double x) const { return factor != 0.0 ? x * factor : std::ldexp(x, shift); }
+};
+
+// the cone of face t seen from c, scaled exactly; false when something is not finite
+bool coneOf(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, const PowerOfTwo& scale, Cone& k) {
   for (int i = 0; i < 3; ++i) {
     const Vec3 p = v[t[i]];
-    k.d[i][0] = (p.x - c.x) * scale;
-    k.d[i][1] = (p.y - c.y) * scale;
-    k.d[i][2] = (p.z - c.z) * scale;
+    k.d[i][0] = scale(p.x - c.x);
+    k.d[i][1] = scale(p.y - c.y);
+    k.d[i][2] = scale(p.z - c.z);
   }
   bool ok = true;
   for (int i = 0; i < 3; ++i) {
     const Vec3 p = v[t[i]], q = v[t[(i + 1) % 3]];
     const double* d = k.d[i];
-    const double e[3] = {(q.x - p.x) * scale, (q.y - p.y) * scale, (q.z - p.z) * scale};
+    const double e[3] = {scale(q.x - p.x), scale(q.y - p.y), scale(q.z - p.z)};
     double perm = 0;
     for (int a = 0; a < 3; ++a) {
       const int u = (a + 1) % 3, w = (a + 2) % 3;
@@ -534,7 +542,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
     return;
   }
   half_ = extent;
-  const double scale = std::ldexp(1.0, -std::ilogb(extent));  // extent * scale in [1, 2)
+  const PowerOfTwo scale(-std::ilogb(extent));  // extent scaled into [1, 2)
 
   // the memory budget for the cells: 120 bytes per face in all, plus 32 KiB
   const std::size_t fixed = sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_);

@@ -487,6 +487,7 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
       }
   }
   std::vector<Vec3> rel(v.size());  // each vertex as seen from the centre
+  mpq_class g[3];                   // the exact centre when there is no double one
   if (centre_) {
     const Vec3 c = *centre_;
     for (std::size_t i = 0; i < v.size(); ++i) rel[i] = {v[i].x - c.x, v[i].y - c.y, v[i].z - c.z};
@@ -494,7 +495,6 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     // no double point works: decide with the exact centroid g of the tetrahedron found above,
     // strictly inside the solid if it is convex. A face with g on its outer side or in its
     // plane has one of the four vertices strictly outside: the surface is not convex.
-    mpq_class g[3];
     for (std::uint32_t k : tetra) {
       g[0] += mpq_class(v[k].x) / 4;
       g[1] += mpq_class(v[k].y) / 4;
@@ -514,6 +514,28 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
                       z = mpq_class(v[i].z) - g[2];
       rel[i] = {x.get_d(), y.get_d(), z.get_d()};
     }
+  }
+  {
+    // scale by a power of two so that no product below overflows or underflows (solid
+    // angles do not change); a difference that overflowed is taken at half scale
+    bool overflow = false;
+    for (const Vec3& r : rel) overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
+    if (overflow) {
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (centre_) {
+          const Vec3 c = *centre_;
+          rel[i] = {v[i].x * 0.5 - c.x * 0.5, v[i].y * 0.5 - c.y * 0.5, v[i].z * 0.5 - c.z * 0.5};
+        } else {
+          const mpq_class x = (mpq_class(v[i].x) - g[0]) / 2, y = (mpq_class(v[i].y) - g[1]) / 2,
+                          z = (mpq_class(v[i].z) - g[2]) / 2;
+          rel[i] = {x.get_d(), y.get_d(), z.get_d()};
+        }
+      }
+    }
+    double extent = 0;
+    for (const Vec3& r : rel) extent = std::max({extent, std::fabs(r.x), std::fabs(r.y), std::fabs(r.z)});
+    const int shift = -std::ilogb(extent);  // 2^shift itself may not be a double
+    for (Vec3& r : rel) r = {std::ldexp(r.x, shift), std::ldexp(r.y, shift), std::ldexp(r.z, shift)};
   }
   {
     // every face has the centre strictly inside (the double centre, or g above), so each

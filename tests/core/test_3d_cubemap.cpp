@@ -1,0 +1,240 @@
+// The cubemap's structure: cells that are conservative (checked directly, for directions
+// strictly inside too, which exactness alone cannot see), memory within 128 bytes per face on
+// hostile shapes, statistics and cells that agree, and traces that tell what happened.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "adversarial3d.hpp"
+#include "convexloc/generate3d.hpp"
+#include "convexloc/locate3d.hpp"
+#include "reference3d.hpp"
+#include "shapes3d.hpp"
+
+using namespace convexloc;
+
+namespace {
+
+// the regular n-gon bipyramid: every face runs from a pole to the equator, so each crosses
+// a long row of cells
+MeshData spindle(std::uint32_t n) {
+  MeshData m;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / n;
+    m.addVertex({std::cos(a), std::sin(a), 0});
+  }
+  const std::uint32_t top = m.addVertex({0, 0, 1}), bottom = m.addVertex({0, 0, -1});
+  for (std::uint32_t i = 0; i < n; ++i) {
+    m.addFace({i, (i + 1) % n, top});
+    m.addFace({(i + 1) % n, i, bottom});
+  }
+  return m;
+}
+
+// the memory bound the issue sets: 128 bytes per face plus a constant
+void expectWithinBudget(const ConvexPolyhedron& p, const char* what) {
+  const CubemapLocator cm(p);
+  const Stats3D s = cm.stats();
+  EXPECT_LE(s.bytes, 128 * s.faces + 65536) << what;
+  EXPECT_LE(s.bytesPerFace, 128.0) << what;
+  std::printf("[ info     ] %s: %zu faces, G = %u, %zu cells (levels 0..%d), %.1f bytes per face, built in %.3f s\n",
+              what, s.faces, s.resolution, s.cells, s.maxLevel, s.bytesPerFace, s.buildSeconds);
+}
+
+// Checks that the cell a point maps to lists a face whose closed cone from the centre holds
+// the point's direction (exact tests, independent of core's predicates).
+class ConeCheck {
+public:
+  ConeCheck(const ConvexPolyhedron& p, const CubemapLocator& cm) : p_(p), c_(*cm.centre()) {
+    for (const Cell3D& cell : cm.cells())
+      cells_[{cell.cubeFace, cell.level, cell.i, cell.j}] = cell.faces;
+  }
+  // false when the cell of x misses every face x's direction leaves through
+  bool listed(const CubemapLocator& cm, Vec3 x) const {
+    const Trace3D t = cm.trace(x);
+    if (t.atCentre || t.fallback) return true;
+    const auto it = cells_.find({t.cubeFace, t.level, t.cellI, t.cellJ});
+    if (it == cells_.end()) return false;
+    for (std::uint32_t f : it->second)
+      if (inCone(f, x)) return true;
+    return false;
+  }
+
+private:
+  // x - c lies in the closed cone of face f from c
+  bool inCone(std::uint32_t f, Vec3 x) const {
+    const auto& t = p_.triangles()[f];
+    auto v = p_.vertices();
+    const int orientation = reftest::orient(v[t[0]], v[t[1]], v[t[2]], c_);  // > 0 for c inside
+    for (int k = 0; k < 3; ++k)
+      if (orientation * reftest::orient(c_, v[t[k]], v[t[(k + 1) % 3]], x) > 0) return false;
+    return true;
+  }
+  const ConvexPolyhedron& p_;
+  Vec3 c_;
+  std::map<std::tuple<int, int, std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> cells_;
+};
+
+}  // namespace
+
+TEST(Cubemap3D, MemoryStaysWithin128BytesPerFace) {
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::TinyFaces, 100000, 1)), "tiny-faces");
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 100000, 1)), "geodesic");
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::ThinSlab, 20000, 1)), "thin-slab");
+  expectWithinBudget(ConvexPolyhedron(spindle(20000)), "spindle");
+  // a resolution far too fine for the shape is coarsened to fit
+  const ConvexPolyhedron tetra(generatePolyhedron(PolyhedronKind::Tetrahedron, 4, 1));
+  const CubemapLocator fine(tetra, 8192);
+  EXPECT_LT(fine.resolution(), 8192u);
+  EXPECT_LE(fine.stats().bytes, 128 * 4 + 65536);
+}
+
+TEST(Cubemap3D, SpindleStaysExact) {
+  const ConvexPolyhedron p(spindle(1000));
+  const reftest::Reference ref(p);
+  const CubemapLocator cm(p);
+  Rng rng(5);
+  std::vector<Vec3> pts = generatePoints3D(p, 2000, 6, true);
+  auto more = adversarial3d::cubemapPoints(p, cm, rng);
+  pts.insert(pts.end(), more.begin(), more.end());
+  for (Vec3 q : pts) ASSERT_EQ(cm.locate(q), ref.locate(q)) << q.x << ' ' << q.y << ' ' << q.z;
+}
+
+TEST(Cubemap3D, EveryDirectionFindsItsExitFaceInItsCell) {
+  for (auto [kind, n, g] : {std::tuple{PolyhedronKind::Geodesic, std::size_t{1280}, 0u},
+                            std::tuple{PolyhedronKind::Geodesic, std::size_t{1280}, 1u},
+                            std::tuple{PolyhedronKind::TinyFaces, std::size_t{2000}, 0u},
+                            std::tuple{PolyhedronKind::Icosahedron, std::size_t{20}, 7u},
+                            std::tuple{PolyhedronKind::ThinSlab, std::size_t{400}, 0u},
+                            std::tuple{PolyhedronKind::Offset, std::size_t{500}, 0u}}) {
+    SCOPED_TRACE(std::string(toString(kind)) + " G " + std::to_string(g));
+    const ConvexPolyhedron p(generatePolyhedron(kind, n, 2));
+    const CubemapLocator cm(p, g);
+    const ConeCheck check(p, cm);
+    const Vec3 c = *cm.centre();
+    Rng rng(8);
+    std::size_t missed = 0;
+    // random directions, at random distances (inside and outside)
+    for (int i = 0; i < 20000; ++i) {
+      const double z = rng.uniform(-1, 1), a = rng.uniform(0, 6.283185307179586);
+      const double r = std::sqrt(1 - z * z), scale = std::ldexp(rng.uniform(), static_cast<int>(rng.below(8)) - 6);
+      const Vec3 x{c.x + scale * r * std::cos(a), c.y + scale * r * std::sin(a), c.z + scale * z};
+      missed += !check.listed(cm, x);
+    }
+    // the adversarial set: cell borders, cube edges and diagonals, with their ulp neighbours
+    for (Vec3 x : adversarial3d::cubemapPoints(p, cm, rng)) missed += !check.listed(cm, x);
+    EXPECT_EQ(missed, 0u);
+  }
+}
+
+TEST(Cubemap3D, StatsAndCellsAgree) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::TinyFaces, 3000, 4));
+  const CubemapLocator cm(p);
+  const Stats3D s = cm.stats();
+  const std::vector<Cell3D> cells = cm.cells();
+  EXPECT_EQ(s.faces, p.faceCount());
+  EXPECT_EQ(s.vertices, p.vertexCount());
+  EXPECT_TRUE(s.centred);
+  EXPECT_EQ(s.resolution, cm.resolution());
+  EXPECT_EQ(cells.size(), s.cells);
+  EXPECT_GT(s.maxLevel, 0);  // the tiny cap forces refinement
+  std::size_t entries = 0, most = 0, crowded = 0, histogram = 0;
+  for (std::size_t k : s.histogram) histogram += k;
+  EXPECT_EQ(histogram, s.cells);
+  const Vec3 c = *cm.centre();
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const Cell3D& cell = cells[i];
+    EXPECT_EQ(cell.index, i);
+    entries += cell.faces.size();
+    most = std::max(most, cell.faces.size());
+    crowded += cell.faces.size() > kCrowdedCell3D;
+    ASSERT_GE(cell.cubeFace, 0);
+    ASSERT_LT(cell.cubeFace, 6);
+    EXPECT_LT(cell.s0, cell.s1);
+    EXPECT_LT(cell.t0, cell.t1);
+    EXPECT_EQ(cell.apex, c);
+    for (const Vec3& k : cell.corners) {
+      const double d = std::max({std::fabs(k.x - c.x), std::fabs(k.y - c.y), std::fabs(k.z - c.z)});
+      EXPECT_NEAR(d, cm.cubeHalfSize(), 1e-9 * cm.cubeHalfSize());
+    }
+  }
+  EXPECT_EQ(entries, s.entries);
+  EXPECT_EQ(most, s.maxPerCell);
+  EXPECT_EQ(crowded, s.crowdedCells);
+  EXPECT_NEAR(s.meanPerCell, static_cast<double>(entries) / cells.size(), 1e-9);
+  EXPECT_GT(s.bytes, 0u);
+  EXPECT_GE(s.buildSeconds, 0.0);
+  // the base grid covers each cube face once: level-0 areas plus refined areas add to 4 * 6
+  double area = 0;
+  for (const Cell3D& cell : cells) area += (cell.s1 - cell.s0) * (cell.t1 - cell.t0);
+  EXPECT_NEAR(area, 24.0, 1e-9);
+}
+
+TEST(Cubemap3D, DefaultAndChosenResolution) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1));
+  EXPECT_EQ(CubemapLocator(p).resolution(), 25u);  // round(sqrt(5120 / 8))
+  EXPECT_EQ(CubemapLocator(p, 5).resolution(), 5u);
+  EXPECT_EQ(Locator3D(p, Method3D::Cubemap, 5).stats().resolution, 5u);
+}
+
+TEST(Trace3D, CubemapTellsFaceCellAndTests) {
+  const ConvexPolyhedron p(shapes3d::cube());
+  const CubemapLocator cm(p);
+  const Vec3 c = *cm.centre();
+  const Trace3D out = cm.trace({c.x + 5, c.y + 1, c.z - 2});
+  EXPECT_EQ(out.method, Method3D::Cubemap);
+  EXPECT_EQ(out.result, Location::Outside);
+  EXPECT_EQ(out.cubeFace, 0);  // +x
+  EXPECT_DOUBLE_EQ(out.s, 1.0 / 5);
+  EXPECT_DOUBLE_EQ(out.t, -2.0 / 5);
+  EXPECT_GE(out.level, 0);
+  ASSERT_FALSE(out.faces.empty());
+  EXPECT_EQ(out.faces.back().sign, -1);
+  const Trace3D neg = cm.trace({c.x, c.y, c.z - 0.5});
+  EXPECT_EQ(neg.cubeFace, 5);  // -z
+  EXPECT_EQ(neg.result, Location::Inside);
+  for (const FaceTest& f : neg.faces) EXPECT_EQ(f.sign, 1);
+  const Trace3D at = cm.trace(c);
+  EXPECT_TRUE(at.atCentre);
+  EXPECT_EQ(at.result, Location::Inside);
+  EXPECT_EQ(cm.trace({1, 0.25, 0.5}).result, Location::Boundary);
+}
+
+TEST(Trace3D, WalkRecordsItsPath) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1));
+  const WalkLocator walk(p);
+  Rng rng(2);
+  double steps = 0;
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 q{rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)};
+    const Trace3D t = walk.trace(q);
+    ASSERT_FALSE(t.path.empty());
+    ASSERT_FALSE(t.fallback);
+    ASSERT_EQ(t.faces.size(), 1u);
+    EXPECT_EQ(t.faces[0].face, t.path.back());
+    for (std::size_t k = 0; k + 1 < t.steps.size(); ++k)
+      if (t.steps[k].sign > 0) {
+        EXPECT_NE(t.steps[k].face, t.steps[k + 1].face);
+      }
+    steps += static_cast<double>(t.path.size());
+  }
+  // jump and walk: far fewer faces than sqrt(F) on average
+  EXPECT_LT(steps / n, std::sqrt(5120.0));
+  std::printf("[ info     ] walk: %.1f faces visited per query on %zu faces\n", steps / n, p.faceCount());
+}
+
+TEST(Trace3D, HalfspaceTestsUntilTheFirstOuterSide) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1));
+  const HalfspaceLocator h(p);
+  const Trace3D in = h.trace({0, 0, 0});
+  EXPECT_EQ(in.faces.size(), 20u);
+  EXPECT_EQ(in.result, Location::Inside);
+  const Trace3D out = h.trace({0, 0, 5});
+  EXPECT_EQ(out.faces.back().sign, -1);
+  EXPECT_EQ(out.result, Location::Outside);
+  EXPECT_EQ(h.stats().cells, 0u);
+  EXPECT_TRUE(h.cells().empty());
+}
