@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -199,7 +200,16 @@ int main(int argc, char** argv) {
   cv::applyStyle(styled, styledScale);
 
   cv::Renderer renderer;
-  const std::string shaderDir = options.shaderDir.empty() ? CONVEXLOC_SHADER_DIR : options.shaderDir;
+  // the shaders: --shaders, else the source tree's, else an installed copy beside the binary
+  std::string shaderDir = options.shaderDir;
+  if (shaderDir.empty()) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    shaderDir = CONVEXLOC_SHADER_DIR;
+    const fs::path installed = fs::path(selfPath(argv[0])).parent_path() / ".." / "share" / "convexloc" / "shaders";
+    if (!fs::exists(fs::path(shaderDir) / "points.vert", ec) && fs::exists(installed / "points.vert", ec))
+      shaderDir = installed.lexically_normal().string();
+  }
   if (!renderer.init(shaderDir)) {
     std::cerr << "convexloc-viewer: shader problems in " << shaderDir << ":\n" << renderer.shaderLog();
     model.fail("shaders failed to compile (see View > shaders): " + shaderDir);

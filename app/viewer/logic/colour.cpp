@@ -108,6 +108,10 @@ Rgba colourOf(const Palette& p, Location l) {
   return p.outside;
 }
 
+Rgba textColourOf(const Palette& p, Location l) {
+  return l == Location::Boundary ? p.zero : colourOf(p, l);
+}
+
 Rgba cellTint(const Palette& p, std::size_t edges, std::size_t base, bool crowded) {
   if (crowded) return withAlpha(p.crowded, 0.40f);
   if (edges <= base) return withAlpha(p.extraEdges, 0.0f);

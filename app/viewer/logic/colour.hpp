@@ -55,6 +55,8 @@ const Palette& paletteFor(Theme t);
 
 // the colour of a class
 Rgba colourOf(const Palette& p, Location l);
+// the colour of a class for text: the boundary's yellow darkened on a light background
+Rgba textColourOf(const Palette& p, Location l);
 
 // How a cell listing `edges` edges is tinted, where `base` is the fewest edges a cell of
 // the method lists (1 for polar and wedge cells, 2 for slabs): transparent at or below the

@@ -222,9 +222,17 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
     const Cell2D& c = cells[static_cast<std::size_t>(scene.hoveredCell())];
     fillOutline(c.outline, pal.hoverFill, out);
     strokeOutline(c.outline, pal.hoverOutline, 1.5f, out);
+    // an edge the placed point's trace names gets that label instead
+    auto traced = [&](std::uint32_t e) {
+      if (!scene.probe()) return false;
+      for (const EdgeTest& t : scene.probe()->trace.edges)
+        if (t.edge == e) return true;
+      return false;
+    };
     for (std::uint32_t e : c.edges) {
       strokeEdge(poly, e, pal.hoverEdge, 5.0f, out);
-      if (opt.showLabels && c.edges.size() <= 12) labelEdge(poly, e, numbered("e", e), pal.hoverEdge, 16.0f, out);
+      if (opt.showLabels && c.edges.size() <= 12 && !traced(e))
+        labelEdge(poly, e, numbered("e", e), pal.hoverEdge, 16.0f, out);
     }
   }
 
@@ -267,7 +275,7 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
     }
     out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
     out.marker(at2(x), colourOf(pal, t.result), 13.0f, MarkerShape::Disc);
-    if (opt.showLabels) out.label(at2(x), std::string(toString(t.result)), colourOf(pal, t.result), {12.0f, 12.0f});
+    if (opt.showLabels) out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
   }
 
   // a dragged vertex: accepted edits are the shape itself; a rejected one shows where

@@ -208,7 +208,7 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
     }
     out.marker(x, pal.rim, 17.0f, MarkerShape::Disc);
     out.marker(x, rc, 13.0f, MarkerShape::Disc);
-    if (opt.showLabels) out.label(x, std::string(toString(t.result)), rc, {12.0f, 12.0f});
+    if (opt.showLabels) out.label(x, std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
   }
 }
 

@@ -249,11 +249,11 @@ void inspectorContents(Model& model, bool hints) {
     return;
   }
   ImGui::Spacing();
-  ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "Placed point: %s",
+  ImGui::TextColored(im(textColourOf(pal, probe->trace.result)), "Placed point: %s",
                      std::string(toString(probe->trace.result)).c_str());
   const auto lines = describeTrace(probe->trace, probe->point, scene.polygon(),
                                    scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
-  traceLines(lines, pal, colourOf(pal, probe->trace.result));
+  traceLines(lines, pal, textColourOf(pal, probe->trace.result));
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
   if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());
@@ -346,13 +346,13 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
   if (!model.settings.showUi) return 0.0f;
-  return std::min(345.0f * model.settings.fontScale, static_cast<float>(0.45 * window.x));
+  return std::min(345.0f * model.settings.fontScale, std::max(300.0f, static_cast<float>(0.32 * window.x)));
 }
 
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
   // narrower windows keep the scene wide: legend and inspector float over it instead
   if (!model.settings.showUi || window.x < 1280.0) return 0.0f;
-  return std::min(330.0f * model.settings.fontScale, static_cast<float>(0.3 * window.x));
+  return std::min(330.0f * model.settings.fontScale, static_cast<float>(0.26 * window.x));
 }
 
 ScreenRect sceneArea(const Model& model, glm::dvec2 window) {

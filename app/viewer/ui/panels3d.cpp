@@ -105,7 +105,7 @@ void methodPanel3(Model& model, UiState& ui) {
     if (ImGui::Checkbox("auto##g", &automatic)) scene.setResolution(automatic ? 0 : static_cast<std::uint32_t>(g));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderInt("##g", &g, 1, 256, "G = %d per cube face side",
+    if (ImGui::SliderInt("##g", &g, 1, 256, "G = %d",
                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
       scene.setResolution(static_cast<std::uint32_t>(std::max(g, 1)));
   }
@@ -263,9 +263,9 @@ void inspectorContents3(Model& model, bool hints) {
     return;
   }
   ImGui::Spacing();
-  ImGui::TextColored(im(colourOf(pal, probe->trace.result)), "Placed point: %s",
+  ImGui::TextColored(im(textColourOf(pal, probe->trace.result)), "Placed point: %s",
                      std::string(toString(probe->trace.result)).c_str());
-  traceLines(describeTrace3D(probe->trace, probe->point), pal, colourOf(pal, probe->trace.result));
+  traceLines(describeTrace3D(probe->trace, probe->point), pal, textColourOf(pal, probe->trace.result));
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
   if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());

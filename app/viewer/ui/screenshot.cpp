@@ -1,4 +1,4 @@
-// convexloc-viewer — screenshots through glReadPixels and stb_image_write (libstb).
+// convexloc-viewer — screenshots through glReadPixels and png_write.
 #include "ui/screenshot.hpp"
 
 #include <cerrno>
@@ -6,9 +6,9 @@
 #include <ctime>
 #include <vector>
 
-#include <stb_image_write.h>
 
 #include "gl/gl.hpp"
+#include "ui/png_write.hpp"
 
 namespace convexloc::viewer {
 
@@ -19,10 +19,8 @@ std::string saveScreenshot(const std::string& path, int width, int height) {
   glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
   if (GLenum e = glGetError(); e != GL_NO_ERROR) return "glReadPixels failed (GL error " + std::to_string(e) + ")";
   // GL's rows start at the bottom; PNG's at the top
-  stbi_flip_vertically_on_write(1);
-  const int ok = stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3);
-  stbi_flip_vertically_on_write(0);
-  if (!ok) return path + ": cannot be written (" + std::strerror(errno) + ")";
+  if (!writePngRgb(path.c_str(), width, height, rgb.data(), true))
+    return path + ": cannot be written (" + std::strerror(errno) + ")";
   return {};
 }
 
