@@ -680,6 +680,20 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
   // each cell's edges are a cyclic run; rotate those that wrap past edge 0 into order
   for (std::uint32_t c = 0; c < cells; ++c) {
     auto b = entries_.begin() + offsets_[c], end = entries_.begin() + offsets_[c + 1];
+    if (static_cast<std::uint32_t>(end - b) == n) {
+      // A run of every edge has no index gap (a needle 10^180 times longer than wide: seen
+      // from the centre, the far vertices bunch into this cell and two edges span half a
+      // turn each). It starts at the edge whose range began furthest before this cell, the
+      // first of them if several began there, so that its inner vertices lie in the cell.
+      auto back = [&](std::uint32_t e) { return ((c - first[e]) % cells + cells) % cells; };
+      std::uint32_t start = 0;
+      for (std::uint32_t e = 1; e < n; ++e)
+        if (back(e) > back(start)) start = e;
+      for (std::uint32_t k = 0; k < n && back(start == 0 ? n - 1 : start - 1) == back(start); ++k)
+        start = start == 0 ? n - 1 : start - 1;
+      std::rotate(b, b + start, end);
+      continue;
+    }
     for (auto it = b + 1; it < end; ++it)
       if (*it != *(it - 1) + 1) {
         std::rotate(b, it, end);

@@ -207,6 +207,33 @@ TEST(HostileCore, ExtremePolygonsAreExactWithEveryMethod) {
   });
 }
 
+// Regression (found by the differential fuzz target): a needle whose far vertices are
+// 10^180 times farther than its near ones. Seen from polar's centre, far out in the needle,
+// the near vertices all fall into one cell together with the two long edges, so that cell
+// lists every edge; its run was searched from edge 0 instead of from the far vertex, and a
+// point just outside the near end was called inside.
+TEST(HostileCore, ANeedleWhoseOneCellHoldsEveryEdge) {
+  std::vector<Vec2> needle = {{-3.9925662228460821, 0.24375183320042917},
+                              {-3.5904823607587741, -1.7630758398549111},
+                              {-2.2483588858566113, -3.3083050524988802},
+                              {-0.31758291132683836, -3.9873727057340864},
+                              {1.6963408096626067, -3.6224891797593006},
+                              {2.9671816882932579e+183, 3.0414991604661539e+183},
+                              {6.8656096013085994e+173, 7.1231403742292267e+173},
+                              {1.5884778712944536e+164, 1.6681102126379433e+164},
+                              {-3.3493391686951761, 2.1867617915640256}};
+  ConvexPolygon poly(needle);
+  const Vec2 justOutside{0x1.a210d17f2cc2fp+1, -0x1.279369d0c48d9p+1};
+  ASSERT_EQ(fuzz::exactLocate(poly.vertices(), justOutside), Location::Outside);
+  for (std::uint32_t slabs : {0u, 1u, 2u, 3u, 8u})
+    EXPECT_EQ(convexloc::PolarLocator(poly, slabs).locate(justOutside), Location::Outside)
+        << slabs << " slabs per octant";
+  convexloc::Rng rng(180);
+  checkEveryMethod(needle, 2000, [&](std::size_t) {
+    return Vec2{rng.uniform(-5, 5), rng.uniform(-5, 5)};
+  });
+}
+
 // === 10^7 vertices
 
 TEST(HostileCore, TenMillionVerticesWithEveryMethod) {
