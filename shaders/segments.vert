@@ -49,5 +49,7 @@ void main() {
   vAcross = side * reach;
   vAlong = atEnd ? len + reach : -reach;
   vHalfWidth = halfWidth;
-  vDash = aStyle.y * uPixelRatio;
+  // a segment reaching far off screen (deep zoom) is drawn solid: its dash phase would need
+  // more precision than a float has at that length
+  vDash = len > 16384.0 ? 0.0 : aStyle.y * uPixelRatio;
 }

@@ -277,3 +277,19 @@ TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
   s.endDrag();
   EXPECT_EQ(s.resolution(), 5u);
 }
+
+TEST(Model, AskedViewReplacesTheFitOnce) {
+  cv::Model m;
+  cv::Options o;
+  o.view = convexloc::Vec3{1e9, -1e9, 1e-6};
+  m.apply(o);
+  m.camera2d.setViewport({1000.0, 800.0});
+  const cv::ScreenRect area{{200.0, 0.0}, {1000.0, 800.0}};
+  m.fit(area);
+  const glm::dvec2 mid = m.camera2d.toWorld(area.middle());
+  EXPECT_NEAR(mid.x, 1e9, 1e-9 * 1e9);
+  EXPECT_NEAR(mid.y, -1e9, 1e-9 * 1e9);
+  EXPECT_NEAR(m.camera2d.scale(), 800.0 / 1e-6, 1e-3 * 800.0 / 1e-6);
+  m.fit(area);  // the next fit is the shape's again
+  EXPECT_LT(m.camera2d.scale(), 1e6);
+}

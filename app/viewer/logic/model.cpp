@@ -173,6 +173,7 @@ std::string Model::apply(const Options& o) {
     }
     if (o.probe) scene2d.place(*o.probe);
     if (o.hover) scene2d.hover(*o.hover);
+    if (o.view) pendingView = *o.view;
     if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
   } else {
     Scene3D& s3 = scene3d();
@@ -211,6 +212,13 @@ std::string Model::apply(const Options& o) {
 void Model::fit(ScreenRect area) {
   if (dim == Dim::Two) {
     camera2d.fit(scene2d.polygon().bounds(), area);
+    if (pendingView) {
+      // the asked centre at the area's middle, the asked width across it
+      const double scale = area.size().x / pendingView->z;
+      camera2d.set({pendingView->x, pendingView->y}, scale);
+      camera2d.pan(area.middle() - 0.5 * camera2d.viewport());
+      pendingView.reset();
+    }
     return;
   }
   // the polyhedron and the cube the cells are drawn on

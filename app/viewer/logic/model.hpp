@@ -69,8 +69,10 @@ public:
     fitPending_ = false;
     return f;
   }
-  // fits the current scene's camera into `area`
+  // fits the current scene's camera into `area`, or applies the asked 2D view
   void fit(ScreenRect area);
+  // a 2D view to apply at the next fit instead: centre and width in world units
+  std::optional<Vec3> pendingView;
 
   // the last error shown to the user, from the model or a scene; the serial grows with each
   const std::string& error() const { return error_; }

@@ -119,6 +119,10 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
       Vec2 p;
       if (!value(v) || !parsePoint(v, p)) return fail("--hover needs X,Y");
       o.hover = p;
+    } else if (a == "--view") {
+      Vec3 q;
+      if (!value(v) || !parsePoint3(v, q) || !(q.z > 0.0)) return fail("--view needs X,Y,WIDTH with WIDTH > 0");
+      o.view = q;
     } else if (a == "--3d") {
       o.solid = true;
     } else if (a == "--slice") {
@@ -194,6 +198,7 @@ Scene:
   --compare             time every method on the spray at start (see the Method panel)
   --probe X,Y[,Z]       place a point there and show its trace
   --hover X,Y           2D: hover there (shows the cell under it)
+  --view X,Y,W          2D: look at (X, Y), the scene W wide (zoom in on tiny things)
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
   --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
   --cell K              3D: pin cube-map cell K (its pyramid and the faces it lists)

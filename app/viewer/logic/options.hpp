@@ -32,6 +32,7 @@ struct Options {
   std::optional<std::size_t> cell;        // 3D: pin this cube-map cell
   bool solid = false;                     // --3d: the 3D scene
   std::optional<Vec2> hover;              // hover there (2D world coordinates)
+  std::optional<Vec3> view;               // 2D: look at (x, y) showing a width w of the world
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
   bool hideUi = false;
