@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <optional>
 #include <span>
 #include <string>
@@ -115,10 +116,18 @@ void differential3D(ByteSource& src, Encoding encoding) {
 
 }  // namespace
 
+// CONVEXLOC_FUZZ_DIMENSION=2 or 3 keeps a campaign to one dimension (default: both)
+int onlyDimension() {
+  const char* env = std::getenv("CONVEXLOC_FUZZ_DIMENSION");
+  return env ? std::atoi(env) : 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const int only = onlyDimension();
   ByteSource src(data, size);
   const std::uint8_t head = src.byte();
   const Encoding encoding = static_cast<Encoding>((head & 0x7f) % kEncodings);
+  if ((only == 2 && (head & 0x80)) || (only == 3 && !(head & 0x80))) return 0;
   if (head & 0x80)
     differential3D(src, encoding);
   else
