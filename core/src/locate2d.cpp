@@ -29,6 +29,7 @@ struct NoSink {
   void crowded() {}
   void outsideBox() {}
   void atCentre() {}
+  void apex(Vec2) {}
 };
 
 // records every step into a Trace2D
@@ -43,6 +44,7 @@ struct TraceSink {
   void crowded() { t.crowded = true; }
   void outsideBox() { t.outsideBox = true; }
   void atCentre() { t.atCentre = true; }
+  void apex(Vec2 a) { t.apex = a; }
 };
 
 // orient2d of p against edge e of the ring v
@@ -90,6 +92,7 @@ Location fanLocate(std::span<const Vec2> v, Vec2 p, Sink& sink) {
   if (nonFinite(p)) return Location::Outside;
   const std::uint32_t n = static_cast<std::uint32_t>(v.size());
   const Vec2 o = v[0];
+  sink.apex(o);  // the rays below start here, also when polar falls back to the fan
   int first = orient2d(o, v[1], p);
   sink.ray(1, first);
   if (first < 0) return Location::Outside;  // clockwise of the first edge's line

@@ -58,7 +58,7 @@ struct Trace2D {
   int octant = -1;               // polar: 0..7 counter-clockwise from +x, else -1
   bool crowded = false;          // the cell held many edges and was searched by bisection
   bool atCentre = false;         // polar: the point is the centre itself
-  Vec2 apex{};                   // wedge: vertex 0; polar: the centre
+  Vec2 apex{};                   // wedge: vertex 0; polar: the centre (vertex 0 on the fan)
   std::vector<RayTest> rays;     // bisection steps (wedge, crowded polar cells)
   std::vector<EdgeTest> edges;   // edges tested, in order
 };
