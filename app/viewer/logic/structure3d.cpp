@@ -111,11 +111,14 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
         if (c.faces.size() > kBaseFacesPerCell || crowded)
           fillCell(c, cellTint(pal, c.faces.size(), kBaseFacesPerCell, crowded), out);
       }
+    // the near faces' grid only faintly, so that it does not veil the polyhedron
+    const Rgba faint = withAlpha(pal.cube, 0.16f);
     if (cells.size() <= kMaxGridCells)
-      for (const Cell3D& c : cells)
-        if (farFaces >> c.cubeFace & 1u)
-          for (int k = 0; k < 4; ++k)
-            out.segment(toGlm(c.corners[k]), toGlm(c.corners[(k + 1) % 4]), pal.cube, 1.0f);
+      for (const Cell3D& c : cells) {
+        const Rgba colour = (farFaces >> c.cubeFace & 1u) ? pal.cube : faint;
+        for (int k = 0; k < 4; ++k)
+          out.segment(toGlm(c.corners[k]), toGlm(c.corners[(k + 1) % 4]), colour, 1.0f);
+      }
     const glm::dvec3 ctr = toGlm(*scene.centre());
     const double h = scene.cubeHalfSize();
     for (int e = 0; e < 12; ++e) {

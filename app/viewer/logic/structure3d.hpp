@@ -28,7 +28,7 @@ inline constexpr std::size_t kMaxGridCells = 60000;
 void buildMesh3D(const Scene3D& scene, const Palette& palette, const View3DOptions& options, DrawList& out);
 // Edges, the cube and its cells, the centre, the slicing plane and its section. Cells are
 // drawn on the cube faces in `farFaces` (bit f for cube face f): those the eye sees from
-// inside, behind the polyhedron; the other faces show only the cube's outline.
+// inside, behind the polyhedron; the other faces show their grid only faintly, untinted.
 void buildStructure3D(const Scene3D& scene, const Palette& palette, const View3DOptions& options,
                       unsigned farFaces, DrawList& out);
 
