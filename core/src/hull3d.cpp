@@ -60,6 +60,7 @@ public:
   }
 
 private:
+  // the first line Qhull wrote to its error stream
   std::string firstErrorLine() {
     if (!err_) return "unknown error";
     std::rewind(err_);

@@ -18,6 +18,7 @@ using Triangle = ConvexPolyhedron::Triangle;
 
 constexpr std::uint32_t kNone = 0xffffffffu;
 
+// seconds elapsed since t0
 double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -149,6 +150,7 @@ Stats3D baseStats(std::size_t faces, std::size_t vertices, std::size_t bytes, do
   return s;
 }
 
+// the batch loop every locator shares: one locate per point, nothing allocated
 template <class Locator>
 void locateAll(const Locator& loc, std::span<const Vec3> points, std::span<Location> out) {
   const std::size_t n = std::min(points.size(), out.size());

@@ -14,6 +14,7 @@
 namespace convexloc {
 namespace {
 
+// a blank that separates tokens (not a line end)
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 
 // a short, printable quote of a token, for messages
@@ -182,6 +183,7 @@ bool nextContent(LineSource& src, std::string_view& line) {
   return false;
 }
 
+// the OFF grammar of the header comment, line by line
 MeshData parseOffFrom(LineSource& src) {
   MeshData mesh;
   std::string_view line, tok;
@@ -286,6 +288,7 @@ MeshData parseOffFrom(LineSource& src) {
   return mesh;
 }
 
+// the OBJ subset of the header comment: v and f statements, the rest ignored
 MeshData parseObjFrom(LineSource& src) {
   MeshData mesh;
   std::string_view line, tok;

@@ -65,6 +65,18 @@ double solidAngle(Vec3 a, Vec3 b, Vec3 c) {
   return 2.0 * std::atan2(det, den);
 }
 
+// six times the signed volume of the tetrahedron (o, a, b, c), in long double
+long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]) {
+  const Vec3 abc[3] = {a, b, c};
+  for (int k = 0; k < 3; ++k) {
+    p[k][0] = static_cast<long double>(abc[k].x) - o.x;
+    p[k][1] = static_cast<long double>(abc[k].y) - o.y;
+    p[k][2] = static_cast<long double>(abc[k].z) - o.z;
+  }
+  return p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+         p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+}
+
 // union-find root with path halving
 std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
   while (parent[x] != x) {
@@ -85,7 +97,7 @@ int rationalOrient(Vec3 p, Vec3 q, Vec3 r, const mpq_class (&g)[3]) {
   return mpq_sgn(det.get_mpq_t());
 }
 
-// the double next to v towards `dir` steps times (dir is -1, 0 or +1)
+// the double next to v in direction dir (-1, 0 or +1)
 double nudge(double v, int dir) {
   if (dir == 0) return v;
   return std::nextafter(v, dir > 0 ? HUGE_VAL : -HUGE_VAL);
@@ -441,14 +453,7 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     long double vol = 0, cx = 0, cy = 0, cz = 0, ax = 0, ay = 0, az = 0;
     for (const Triangle& t : tri) {
       long double p[3][3];
-      for (int k = 0; k < 3; ++k) {
-        p[k][0] = static_cast<long double>(v[t[k]].x) - o.x;
-        p[k][1] = static_cast<long double>(v[t[k]].y) - o.y;
-        p[k][2] = static_cast<long double>(v[t[k]].z) - o.z;
-      }
-      long double d = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                      p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                      p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+      const long double d = sixVolume(o, v[t[0]], v[t[1]], v[t[2]], p);
       vol += d;
       cx += d * (p[0][0] + p[1][0] + p[2][0]);
       cy += d * (p[0][1] + p[1][1] + p[2][1]);
@@ -567,14 +572,7 @@ double ConvexPolyhedron::volume() const noexcept {
   long double six = 0;
   for (const Triangle& t : triangles_) {
     long double p[3][3];
-    for (int k = 0; k < 3; ++k) {
-      p[k][0] = static_cast<long double>(vertices_[t[k]].x) - o.x;
-      p[k][1] = static_cast<long double>(vertices_[t[k]].y) - o.y;
-      p[k][2] = static_cast<long double>(vertices_[t[k]].z) - o.z;
-    }
-    six += p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-           p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-           p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+    six += sixVolume(o, vertices_[t[0]], vertices_[t[1]], vertices_[t[2]], p);
   }
   return static_cast<double>(six / 6);
 }

@@ -32,22 +32,16 @@ struct Problem {
   std::string message;
   std::size_t line = 0;
 };
-Problem offProblem(const std::string& text) {
+Problem problemOf(MeshData (*parse)(std::string_view), const std::string& text) {
   try {
-    parseOff(text);
+    parse(text);
   } catch (const ParseError& e) {
     return {e.what(), e.line()};
   }
   return {"no error", 0};
 }
-Problem objProblem(const std::string& text) {
-  try {
-    parseObj(text);
-  } catch (const ParseError& e) {
-    return {e.what(), e.line()};
-  }
-  return {"no error", 0};
-}
+Problem offProblem(const std::string& text) { return problemOf(parseOff, text); }
+Problem objProblem(const std::string& text) { return problemOf(parseObj, text); }
 
 // a cube in OBJ with texture and normal references and statements to ignore
 std::string cubeObj() {
