@@ -125,8 +125,9 @@ bool Scene2D::loadFile(const std::string& path) {
 bool Scene2D::rebuildLocator() {
   try {
     Locator2D next(*polygon_, method_, resolution_[static_cast<std::size_t>(method_)]);
-    std::vector<Cell2D> cells = next.cells();
     stats_ = next.stats();
+    std::vector<Cell2D> cells;
+    if (stats_.cells <= kMaxDrawnCells) cells = next.cells();
     locator_.emplace(std::move(next));
     cells_ = std::move(cells);
   } catch (const Error& e) {

@@ -59,6 +59,9 @@ struct Versions {
   std::uint64_t section = 0;    // 3D: the slicing plane's section
 };
 
+// above this many cells a subdivision is not drawn (nor hovered): its statistics still are
+inline constexpr std::size_t kMaxDrawnCells = std::size_t{1} << 18;
+
 // how many edges the cells of a method list at the least (the base of the tint)
 std::size_t baseEdgesPerCell(Method2D m);
 
@@ -93,7 +96,10 @@ public:
   // the resolution the locator actually uses (core's choice when 0 was asked)
   std::uint32_t effectiveResolution() const;
   const Locator2D& locator() const { return *locator_; }
+  // the cells, as core reports them; empty when there are more than kMaxDrawnCells
   const std::vector<Cell2D>& cells() const { return cells_; }
+  // the locator has cells, but too many to draw
+  bool cellsOmitted() const { return stats_.cells > cells_.size(); }
   const Stats2D& stats() const { return stats_; }
   // the polar centre, when the method is polar and core found one strictly inside
   std::optional<Vec2> centre() const;

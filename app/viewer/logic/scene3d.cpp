@@ -124,8 +124,9 @@ Bounds3 Scene3D::bounds() const {
 bool Scene3D::rebuildLocator() {
   try {
     Locator3D next(*poly_, method_, resolution_);
-    std::vector<Cell3D> cells = next.cells();
     stats_ = next.stats();
+    std::vector<Cell3D> cells;
+    if (stats_.cells <= kMaxDrawnCells) cells = next.cells();
     locator_.emplace(std::move(next));
     cells_ = std::move(cells);
   } catch (const Error& e) {

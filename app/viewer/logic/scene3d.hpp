@@ -75,7 +75,9 @@ public:
   std::uint32_t resolution() const { return resolution_; }
   std::uint32_t effectiveResolution() const;
   const Locator3D& locator() const { return *locator_; }
+  // the cells, as core reports them; empty when there are more than kMaxDrawnCells
   const std::vector<Cell3D>& cells() const { return cells_; }
+  bool cellsOmitted() const { return stats_.cells > cells_.size(); }
   const Stats3D& stats() const { return stats_; }
   // the centre strictly inside (walk, cube map), when core found one
   std::optional<Vec3> centre() const;

@@ -103,8 +103,9 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   const Box2 box = poly.bounds();
   const std::size_t base = baseEdgesPerCell(method);
 
-  // the polygon's interior, faintly
-  for (std::size_t i = 1; i + 1 < n; ++i)
+  // the polygon's interior, faintly (a cosmetic fan: left out for huge polygons)
+  if (n <= kMaxFilledVertices)
+    for (std::size_t i = 1; i + 1 < n; ++i)
     out.triangle(at2(toGlm(poly.vertex(0))), at2(toGlm(poly.vertex(i))),
                  at2(toGlm(poly.vertex(i + 1))), pal.polygonFill);
 

@@ -27,6 +27,7 @@ struct View2DOptions {
 inline constexpr std::size_t kMaxLabelledVertices = 40;
 inline constexpr std::size_t kMaxHandles = 400;
 inline constexpr std::size_t kMaxCellLines = 40000;
+inline constexpr std::size_t kMaxFilledVertices = 1 << 16;
 
 // the static layer: rebuilt when the shape, the method or the palette changes
 void buildStructure2D(const Scene2D& scene, const Palette& palette, const View2DOptions& options,

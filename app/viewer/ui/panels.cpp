@@ -118,6 +118,7 @@ void methodPanel(Model& model, UiState& ui) {
       row("edges per cell", "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3));
       if (s.crowdedCells) row("crowded cells", grouped(s.crowdedCells) + " (bisection)");
     }
+    if (scene.cellsOmitted()) row("drawing", "too many cells to draw");
     row("memory", bytesText(s.bytes) + " (" + approx(s.bytesPerEdge, 3) + " B/edge)");
     row("build", approx(s.buildSeconds * 1e3, 3) + " ms");
     if (!scene.points().empty()) row("locate", nsText(scene.locateNsPerPoint()) + " ns/point");

@@ -120,6 +120,7 @@ void methodPanel3(Model& model, UiState& ui) {
       if (s.crowdedCells) statRow("crowded cells", grouped(s.crowdedCells) + " (walk)");
     }
     if (!s.centred && scene.method() != Method3D::Halfspace) statRow("centre", "none: every face is tested");
+    if (scene.cellsOmitted()) statRow("drawing", "too many cells to draw");
     statRow("memory", bytesText(s.bytes) + " (" + approx(s.bytesPerFace, 3) + " B/face)");
     statRow("build", approx(s.buildSeconds * 1e3, 3) + " ms");
     ImGui::EndTable();
