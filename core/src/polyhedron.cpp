@@ -521,8 +521,8 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     }
   }
   {
-    // scale by a power of two so that no product below overflows or underflows (solid
-    // angles do not change); a difference that overflowed is taken at half scale
+    // scale by powers of two so that no product below overflows or underflows; a difference
+    // that overflowed is taken at half scale
     bool overflow = false;
     for (const Vec3& r : rel) overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
     if (overflow) {
@@ -537,10 +537,17 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
         }
       }
     }
-    double extent = 0;
-    for (const Vec3& r : rel) extent = std::max({extent, std::fabs(r.x), std::fabs(r.y), std::fabs(r.z)});
-    const int shift = -std::ilogb(extent);  // 2^shift itself may not be a double
-    for (Vec3& r : rel) r = {std::ldexp(r.x, shift), std::ldexp(r.y, shift), std::ldexp(r.z, shift)};
+    // Each axis gets its own power of two: a positive scaling of the axes does not change
+    // the winding number, and it makes a needle or slab far thinner along one axis than
+    // along another well shaped (at one common scale, a box 1e308 by 1e160 by 1e169 loses
+    // its thin directions in rounding, and triangles that see 0 turn get half a turn each).
+    Vec3 extent{};
+    for (const Vec3& r : rel)
+      extent = {std::max(extent.x, std::fabs(r.x)), std::max(extent.y, std::fabs(r.y)),
+                std::max(extent.z, std::fabs(r.z))};
+    auto shiftFor = [](double e) { return e > 0 ? -std::ilogb(e) : 0; };  // 2^shift may not be a double
+    const int sx = shiftFor(extent.x), sy = shiftFor(extent.y), sz = shiftFor(extent.z);
+    for (Vec3& r : rel) r = {std::ldexp(r.x, sx), std::ldexp(r.y, sy), std::ldexp(r.z, sz)};
   }
   {
     // every face has the centre strictly inside (the double centre, or g above), so each
