@@ -20,9 +20,9 @@
 #include "gl/gl.hpp"
 // GLFW after glad, so it does not pull in a GL header of its own
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include "gl/renderer.hpp"
 #include "gl/scene_view.hpp"
@@ -75,10 +75,10 @@ int rerunUnderXvfb(int argc, char** argv, const cv::Options& o) {
   const std::string png = o.screenshot.empty() ? "convexloc-viewer.png" : o.screenshot;
   std::cerr << "convexloc-viewer: no display (DISPLAY is not set); rendering the scene to " << png
             << " through xvfb-run instead\n";
-  std::vector<std::string> args = {"xvfb-run", "-a", "-s",
-                                   "-screen 0 " + std::to_string(o.width + 64) + "x" +
-                                       std::to_string(o.height + 64) + "x24",
-                                   selfPath(argv[0])};
+  std::vector<std::string> args = {
+      "xvfb-run", "-a", "-s",
+      "-screen 0 " + std::to_string(o.width + 64) + "x" + std::to_string(o.height + 64) + "x24",
+      selfPath(argv[0])};
   for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
   args.emplace_back("--no-xvfb");
   if (o.screenshot.empty()) {
@@ -89,8 +89,9 @@ int rerunUnderXvfb(int argc, char** argv, const cv::Options& o) {
   for (std::string& a : args) cargs.push_back(a.data());
   cargs.push_back(nullptr);
   execvp("xvfb-run", cargs.data());
-  std::cerr << "convexloc-viewer: cannot run xvfb-run (install the Debian packages xvfb and xauth), "
-               "or run with a display\n";
+  std::cerr
+      << "convexloc-viewer: cannot run xvfb-run (install the Debian packages xvfb and xauth), "
+         "or run with a display\n";
   return 1;
 }
 
@@ -135,7 +136,8 @@ int main(int argc, char** argv) {
   // The window needs no multisampling: the scene is drawn into an offscreen target that
   // has it (see SceneView), and ImGui anti-aliases its own shapes.
   glfwWindowHint(GLFW_SAMPLES, 0);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
+  GLFWwindow* window =
+      glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
   if (!window) {
     std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
     glfwTerminate();
@@ -185,8 +187,10 @@ int main(int argc, char** argv) {
   cv::scanAssets(ui);
   ui.fontScaleEdit = model.settings.fontScale;
   if (options.compare) {
-    if (model.dim == cv::Dim::Two) ui.compare = model.scene2d.compare();
-    else ui.compare3 = model.scene3d().compare();
+    if (model.dim == cv::Dim::Two)
+      ui.compare = model.scene2d.compare();
+    else
+      ui.compare3 = model.scene3d().compare();
   }
   ui.glInfo = rendererName + ", GL " + reinterpret_cast<const char*>(glGetString(GL_VERSION)) +
               (samples > 0 ? ", MSAA " + std::to_string(samples) + "x" : ", no MSAA");
@@ -206,12 +210,15 @@ int main(int argc, char** argv) {
     namespace fs = std::filesystem;
     std::error_code ec;
     shaderDir = CONVEXLOC_SHADER_DIR;
-    const fs::path installed = fs::path(selfPath(argv[0])).parent_path() / ".." / "share" / "convexloc" / "shaders";
-    if (!fs::exists(fs::path(shaderDir) / "points.vert", ec) && fs::exists(installed / "points.vert", ec))
+    const fs::path installed =
+        fs::path(selfPath(argv[0])).parent_path() / ".." / "share" / "convexloc" / "shaders";
+    if (!fs::exists(fs::path(shaderDir) / "points.vert", ec) &&
+        fs::exists(installed / "points.vert", ec))
       shaderDir = installed.lexically_normal().string();
   }
   if (!renderer.init(shaderDir)) {
-    std::cerr << "convexloc-viewer: shader problems in " << shaderDir << ":\n" << renderer.shaderLog();
+    std::cerr << "convexloc-viewer: shader problems in " << shaderDir << ":\n"
+              << renderer.shaderLog();
     model.fail("shaders failed to compile (see View > shaders): " + shaderDir);
     if (headless) return 1;
   }
@@ -228,8 +235,10 @@ int main(int argc, char** argv) {
   int idleFrames = 0;  // frames since the last input; past a few, wait for events (no busy loop)
   while (!glfwWindowShouldClose(window)) {
     const auto frameStart = Clock::now();
-    if (!headless && idleFrames > 3) glfwWaitEventsTimeout(0.25);
-    else glfwPollEvents();
+    if (!headless && idleFrames > 3)
+      glfwWaitEventsTimeout(0.25);
+    else
+      glfwPollEvents();
 
     // font and theme changes rebuild ImGui's atlas and style outside the frame
     if (ui.pendingFontScale > 0.0f) {
@@ -282,8 +291,10 @@ int main(int argc, char** argv) {
     }
     // --animate: the camera moves a little every frame, as under a hand (for timing)
     if (options.animate && frame > 0) {
-      if (model.dim == cv::Dim::Two) model.camera2d.pan({1.0, 0.5});
-      else model.camera3d.orbit({2.0, 0.0});
+      if (model.dim == cv::Dim::Two)
+        model.camera2d.pan({1.0, 0.5});
+      else
+        model.camera3d.orbit({2.0, 0.0});
     }
     model.collectErrors();
     bool input = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
@@ -314,7 +325,8 @@ int main(int argc, char** argv) {
     ++frame;
     const bool lastFrame = headless && frame >= options.frames;
     if (ui.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-      const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : cv::screenshotName();
+      const std::string path =
+          lastFrame && !options.screenshot.empty() ? options.screenshot : cv::screenshotName();
       glReadBuffer(GL_BACK);
       const std::string err = cv::saveScreenshot(path, fbW, fbH);
       if (!err.empty()) {
@@ -335,7 +347,10 @@ int main(int argc, char** argv) {
     }
     const auto frameEnd = Clock::now();
     const double ms = std::chrono::duration<double, std::milli>(frameEnd - frameStart).count();
-    ui.frameMs = ui.frameMs == 0.0 ? ms : 0.9 * ui.frameMs + 0.1 * std::chrono::duration<double, std::milli>(frameEnd - last).count();
+    ui.frameMs = ui.frameMs == 0.0
+                     ? ms
+                     : 0.9 * ui.frameMs +
+                           0.1 * std::chrono::duration<double, std::milli>(frameEnd - last).count();
     last = frameEnd;
     if (frame > 1) {  // the first frame uploads everything; time the steady state
       timedMs += ms;
@@ -345,11 +360,12 @@ int main(int argc, char** argv) {
   }
 
   if (headless) {
-    std::printf("convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
-                "ms/frame after the first (%s)\n",
-                frame, options.width, options.height, renderer.pointCount(), view.pointsDrawn(),
-                options.animate ? "camera moving" : "camera still", timedFrames ? timedMs / timedFrames : 0.0,
-                ui.glInfo.c_str());
+    std::printf(
+        "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
+        "ms/frame after the first (%s)\n",
+        frame, options.width, options.height, renderer.pointCount(), view.pointsDrawn(),
+        options.animate ? "camera moving" : "camera still",
+        timedFrames ? timedMs / timedFrames : 0.0, ui.glInfo.c_str());
   }
 
   ImGui_ImplOpenGL3_Shutdown();

@@ -23,14 +23,16 @@ struct Region {
 };
 
 bool parseRegion(const std::string& s, Region& r) {
-  return std::sscanf(s.c_str(), "%lf,%lf,%lf,%lf", &r.x0, &r.y0, &r.x1, &r.y1) == 4 && r.x0 < r.x1 &&
-         r.y0 < r.y1;
+  return std::sscanf(s.c_str(), "%lf,%lf,%lf,%lf", &r.x0, &r.y0, &r.x1, &r.y1) == 4 &&
+         r.x0 < r.x1 && r.y0 < r.y1;
 }
 
 struct Image {
   int w = 0, h = 0;
   unsigned char* px = nullptr;  // RGB
-  const unsigned char* at(int x, int y) const { return px + 3 * (static_cast<std::size_t>(y) * w + x); }
+  const unsigned char* at(int x, int y) const {
+    return px + 3 * (static_cast<std::size_t>(y) * w + x);
+  }
 };
 
 // calls f(pixel) for every pixel of the region
@@ -50,12 +52,15 @@ int usage(const char* why) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) return usage("usage: viewer_png_check FILE [--size WxH] [--expect L:RRGGBB:X0,Y0,X1,Y1:MIN]...");
+  if (argc < 2)
+    return usage(
+        "usage: viewer_png_check FILE [--size WxH] [--expect L:RRGGBB:X0,Y0,X1,Y1:MIN]...");
   Image img;
   int channels = 0;
   img.px = stbi_load(argv[1], &img.w, &img.h, &channels, 3);
   if (!img.px) {
-    std::fprintf(stderr, "viewer_png_check: %s: cannot be read as an image (%s)\n", argv[1], stbi_failure_reason());
+    std::fprintf(stderr, "viewer_png_check: %s: cannot be read as an image (%s)\n", argv[1],
+                 stbi_failure_reason());
     return 1;
   }
   int tolerance = 24;
@@ -81,7 +86,8 @@ int main(int argc, char** argv) {
         return usage("--expect needs LABEL:RRGGBB:X0,Y0,X1,Y1:MIN");
       Region r;
       if (!parseRegion(region, r)) return usage("a region is X0,Y0,X1,Y1 with X0 < X1, Y0 < Y1");
-      const int want[3] = {static_cast<int>(rgb >> 16), static_cast<int>((rgb >> 8) & 0xff), static_cast<int>(rgb & 0xff)};
+      const int want[3] = {static_cast<int>(rgb >> 16), static_cast<int>((rgb >> 8) & 0xff),
+                           static_cast<int>(rgb & 0xff)};
       long count = 0;
       forRegion(img, r, [&](const unsigned char* p) {
         bool near = true;
@@ -89,8 +95,8 @@ int main(int argc, char** argv) {
         count += near;
       });
       const bool good = count >= minimum;
-      std::printf("%s %-10s #%06X in %s: %ld pixels (at least %ld)\n", good ? "ok  " : "FAIL", label, rgb, region,
-                  count, minimum);
+      std::printf("%s %-10s #%06X in %s: %ld pixels (at least %ld)\n", good ? "ok  " : "FAIL",
+                  label, rgb, region, count, minimum);
       ok &= good;
     } else if (a == "--not-uniform") {
       Region r;
@@ -100,7 +106,8 @@ int main(int argc, char** argv) {
         if (colours.size() < 64) colours.insert((p[0] << 16) | (p[1] << 8) | p[2]);
       });
       const bool good = colours.size() > 8;
-      std::printf("%s %zu+ distinct colours in %s\n", good ? "ok  " : "FAIL", colours.size(), v.c_str());
+      std::printf("%s %zu+ distinct colours in %s\n", good ? "ok  " : "FAIL", colours.size(),
+                  v.c_str());
       ok &= good;
     } else {
       return usage(("unknown option " + a).c_str());

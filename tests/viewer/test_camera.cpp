@@ -98,7 +98,8 @@ TEST(Camera2D, ClipMatrixAgreesWithToScreen) {
   const glm::dvec2 origin{2.5, -1.0};
   const glm::mat4 m = c.clipFromLocal(origin);
   for (glm::dvec2 w : {glm::dvec2{3.0, -2.0}, glm::dvec2{4.25, 0.5}, glm::dvec2{-7.0, 3.0}}) {
-    const glm::vec4 clip = m * glm::vec4(static_cast<float>(w.x - origin.x), static_cast<float>(w.y - origin.y), 0.0f, 1.0f);
+    const glm::vec4 clip = m * glm::vec4(static_cast<float>(w.x - origin.x),
+                                         static_cast<float>(w.y - origin.y), 0.0f, 1.0f);
     const glm::dvec2 s = c.toScreen(w);
     EXPECT_NEAR((clip.x * 0.5 + 0.5) * 1200.0, s.x, 1e-3);
     EXPECT_NEAR((0.5 - clip.y * 0.5) * 800.0, s.y, 1e-3);
@@ -117,7 +118,8 @@ TEST(Camera3D, FitLooksAtTheMiddleOfTheArea) {
   EXPECT_NEAR(p.screen.y, area.middle().y, 1e-6);
   // every corner is on screen, inside the area
   for (int k = 0; k < 8; ++k) {
-    const glm::dvec3 q{k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z};
+    const glm::dvec3 q{k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y,
+                       k & 4 ? box.hi.z : box.lo.z};
     const cv::Projected s = c.toScreen(q);
     ASSERT_TRUE(s.visible());
     EXPECT_GE(s.screen.x, area.lo.x - 1e-6);
@@ -131,7 +133,8 @@ TEST(Camera3D, RayThroughAProjectedPointHitsIt) {
   cv::Camera3D c;
   c.setViewport({1000.0, 700.0});
   c.set({1.0, 2.0, 3.0}, 9.0, 0.8, 0.3);
-  for (glm::dvec3 p : {glm::dvec3{1.0, 2.0, 3.0}, glm::dvec3{2.0, 1.5, 3.5}, glm::dvec3{0.0, 3.0, 2.0}}) {
+  for (glm::dvec3 p :
+       {glm::dvec3{1.0, 2.0, 3.0}, glm::dvec3{2.0, 1.5, 3.5}, glm::dvec3{0.0, 3.0, 2.0}}) {
     const cv::Projected s = c.toScreen(p);
     ASSERT_TRUE(s.visible());
     const cv::Ray3 r = c.rayThrough(s.screen);

@@ -22,9 +22,13 @@ using convexloc::Vec2;
 namespace {
 
 // relative luminance, for telling colours apart without hue
-double luminance(cv::Rgba c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+double luminance(cv::Rgba c) {
+  return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
 
-cv::ParsedOptions parse(std::vector<std::string_view> args) { return cv::parseOptions(args); }
+cv::ParsedOptions parse(std::vector<std::string_view> args) {
+  return cv::parseOptions(args);
+}
 
 }  // namespace
 
@@ -68,9 +72,11 @@ TEST(Colour, PackAndHex) {
 // === Options
 
 TEST(Options, ParsesTheSceneFlags) {
-  const auto r = parse({"shape.txt", "--method", "wedge", "--spray", "1e6", "--seed", "7", "--near-boundary",
-                        "--screenshot", "out.png", "--frames", "5", "--size", "1024x768", "--theme", "light",
-                        "--probe", "0.5,-1e-3", "--show", "inside", "--hide-ui", "--samples", "0"});
+  const auto r =
+      parse({"shape.txt", "--method",        "wedge",        "--spray",   "1e6",      "--seed",
+             "7",         "--near-boundary", "--screenshot", "out.png",   "--frames", "5",
+             "--size",    "1024x768",        "--theme",      "light",     "--probe",  "0.5,-1e-3",
+             "--show",    "inside",          "--hide-ui",    "--samples", "0"});
   ASSERT_EQ(r.error, "");
   const cv::Options& o = r.options;
   EXPECT_EQ(o.shape, "shape.txt");
@@ -194,7 +200,8 @@ TEST(Text, TraceIsToldStepByStep) {
   ASSERT_TRUE(s.setShape(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 3}, {0, 3}}, "box"));
   s.setMethod(Method2D::Polar);
   s.place({1.0, 1.0});
-  const auto lines = cv::describeTrace(s.probe()->trace, s.probe()->point, s.polygon(), s.effectiveResolution());
+  const auto lines =
+      cv::describeTrace(s.probe()->trace, s.probe()->point, s.polygon(), s.effectiveResolution());
   ASSERT_GE(lines.size(), 4u);
   EXPECT_EQ(lines.front().kind, cv::TraceLine::Heading);
   EXPECT_EQ(lines.back().kind, cv::TraceLine::Result);

@@ -160,7 +160,8 @@ TEST(Scene2D, ValidDragMovesTheVertexAndKeepsThePoints) {
   EXPECT_EQ(s.polygon().vertex(s.drag()->vertex), (Vec2{3.0, 3.0}));
   // the spray stays, classified against the edited polygon
   EXPECT_TRUE(std::equal(before.begin(), before.end(), s.points().begin()));
-  for (std::size_t i = 0; i < before.size(); i += 37) EXPECT_EQ(s.classes()[i], s.locator().locate(before[i]));
+  for (std::size_t i = 0; i < before.size(); i += 37)
+    EXPECT_EQ(s.classes()[i], s.locator().locate(before[i]));
   s.endDrag();
   EXPECT_FALSE(s.drag());
   EXPECT_TRUE(s.error().empty());
@@ -266,7 +267,7 @@ TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
   cv::Scene2D s;
   EXPECT_EQ(s.resolution(), 8u);  // the default scene's polar slabs per octant
   ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 40, 1));
-  EXPECT_EQ(s.resolution(), 0u);  // core's choice for a new shape
+  EXPECT_EQ(s.resolution(), 0u);            // core's choice for a new shape
   EXPECT_EQ(s.effectiveResolution(), 10u);  // (40 + 3) / 4
   ASSERT_TRUE(s.setResolution(5));
   ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 60, 1));

@@ -44,7 +44,8 @@ TEST(Scene3D, DefaultSceneIsTheCubeMapWithAClassifiedSpray) {
   EXPECT_GT(s.cubeHalfSize(), 0.0);
   ASSERT_FALSE(s.points().empty());
   EXPECT_EQ(s.counts()[0] + s.counts()[1] + s.counts()[2], s.points().size());
-  for (std::size_t i = 0; i < s.points().size(); i += 53) EXPECT_EQ(s.classes()[i], s.locator().locate(s.points()[i]));
+  for (std::size_t i = 0; i < s.points().size(); i += 53)
+    EXPECT_EQ(s.classes()[i], s.locator().locate(s.points()[i]));
 }
 
 TEST(Scene3D, BadMeshesKeepTheLastValidOne) {
@@ -54,7 +55,9 @@ TEST(Scene3D, BadMeshesKeepTheLastValidOne) {
   EXPECT_EQ(s.polyhedron().faceCount(), 12u);
   EXPECT_EQ(s.label(), "viewer_cube.off");
   // a face pointing at a vertex that does not exist
-  const std::string bad = writeTemp("viewer_bad.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 9\n");
+  const std::string bad =
+      writeTemp("viewer_bad.off",
+                "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 9\n");
   EXPECT_FALSE(s.loadFile(bad));
   EXPECT_NE(s.error().find("viewer_bad.off:"), std::string::npos) << s.error();
   EXPECT_EQ(s.label(), "viewer_cube.off");

@@ -41,7 +41,9 @@ void put4(float* out, Rgba c) {
   out[2] = c.b;
   out[3] = c.a;
 }
-glm::vec4 vec(Rgba c) { return {c.r, c.g, c.b, c.a}; }
+glm::vec4 vec(Rgba c) {
+  return {c.r, c.g, c.b, c.a};
+}
 
 // a float attribute of `size` components at byte `offset`, advancing per vertex or instance
 void attribute(GLuint index, GLint size, GLsizei stride, std::size_t offset, GLuint divisor) {
@@ -111,7 +113,8 @@ void Renderer::destroyTarget() {
 
 bool Renderer::ensureTarget(int width, int height, int samples) {
   if (width <= 0 || height <= 0) return false;
-  if (resolveFbo_ && width == targetW_ && height == targetH_ && samples == targetSamples_) return true;
+  if (resolveFbo_ && width == targetW_ && height == targetH_ && samples == targetSamples_)
+    return true;
   destroyTarget();
   // the single-sampled target: a texture to composite from, and depth
   glGenTextures(1, &texture_);
@@ -165,7 +168,8 @@ void Renderer::finishTarget() {
   if (msFbo_) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_);
-    glBlitFramebuffer(0, 0, targetW_, targetH_, 0, 0, targetW_, targetH_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, targetW_, targetH_, 0, 0, targetW_, targetH_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -227,7 +231,9 @@ bool Renderer::init(const std::string& dir) {
   return compileAll();
 }
 
-bool Renderer::reload() { return compileAll(); }
+bool Renderer::reload() {
+  return compileAll();
+}
 
 bool Renderer::compileAll() {
   log_.clear();
@@ -277,7 +283,8 @@ void Renderer::upload(Layer layer, const DrawList& list, glm::dvec3 origin) {
 }
 
 template <class P, class Put>
-void Renderer::uploadOrdered(std::span<const P> points, std::span<const Location> classes, Put put) {
+void Renderer::uploadOrdered(std::span<const P> points, std::span<const Location> classes,
+                             Put put) {
   static_assert(sizeof(Location) == 1, "classes upload as bytes");
   const std::size_t n = std::min(points.size(), classes.size());
   // boundary points last, each part in the spray's (random) order
@@ -296,8 +303,8 @@ void Renderer::uploadOrdered(std::span<const P> points, std::span<const Location
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(xyz.size() * sizeof(float)),
                xyz.empty() ? nullptr : xyz.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, classVbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cls.size()), cls.empty() ? nullptr : cls.data(),
-               GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cls.size()),
+               cls.empty() ? nullptr : cls.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   pointCount_ = n;
   boundaryStart_ = front;
@@ -367,17 +374,21 @@ void Renderer::drawPoints(const FrameParams& f, PointRange range) {
   points_.set("uPointSize", f.pointSize);
   points_.set("uBoundaryScale", 1.7f);
   points_.set("uVisible", static_cast<int>(f.visibleMask));
-  const glm::vec4 colours[3] = {vec(f.classColours[0]), vec(f.classColours[1]), vec(f.classColours[2])};
+  const glm::vec4 colours[3] = {vec(f.classColours[0]), vec(f.classColours[1]),
+                                vec(f.classColours[2])};
   points_.setArray("uColours", colours, 3);
   points_.set("uRim", vec(f.rim));
   glBindVertexArray(pointVao_);
   // a subsample keeps the same share of each part
-  const double share = f.maxPoints >= pointCount_ ? 1.0 : static_cast<double>(f.maxPoints) / static_cast<double>(pointCount_);
+  const double share = f.maxPoints >= pointCount_
+                           ? 1.0
+                           : static_cast<double>(f.maxPoints) / static_cast<double>(pointCount_);
   auto part = [&](std::size_t first, std::size_t count) {
     const auto k = static_cast<GLsizei>(std::ceil(share * static_cast<double>(count)));
     if (k > 0) glDrawArrays(GL_POINTS, static_cast<GLint>(first), k);
   };
-  if (range != PointRange::Boundary) part(0, range == PointRange::All ? pointCount_ : boundaryStart_);
+  if (range != PointRange::Boundary)
+    part(0, range == PointRange::All ? pointCount_ : boundaryStart_);
   if (range == PointRange::Boundary) part(boundaryStart_, pointCount_ - boundaryStart_);
 }
 

@@ -31,22 +31,22 @@ enum class PointRange { All, AllButBoundary, Boundary };
 // what a frame's draw calls share
 struct FrameParams {
   glm::mat4 clipFromLocal{1.0f};
-  glm::vec3 eyeLocal{0.0f};      // 3D: the eye, for the headlight
-  glm::vec2 framebuffer{1.0f};   // pixels
-  float pixelRatio = 1.0f;       // framebuffer pixels per window pixel
-  float pointSize = 4.0f;        // window pixels
-  unsigned visibleMask = 7u;     // classes of points drawn
+  glm::vec3 eyeLocal{0.0f};     // 3D: the eye, for the headlight
+  glm::vec2 framebuffer{1.0f};  // pixels
+  float pixelRatio = 1.0f;      // framebuffer pixels per window pixel
+  float pointSize = 4.0f;       // window pixels
+  unsigned visibleMask = 7u;    // classes of points drawn
   Rgba classColours[3];
   Rgba rim;
-  bool depth = false;            // 3D: depth-test
-  bool depthWrite = false;       // 3D: and write depth
-  bool offset = false;           // push fills back a little (so edges drawn on them win)
+  bool depth = false;                       // 3D: depth-test
+  bool depthWrite = false;                  // 3D: and write depth
+  bool offset = false;                      // push fills back a little (so edges drawn on them win)
   std::size_t maxPoints = ~std::size_t{0};  // draw at most this many points (a uniform subsample:
                                             // the sprays come in random order)
 };
 
 class Renderer {
-public:
+ public:
   Renderer() = default;
   ~Renderer();
   Renderer(const Renderer&) = delete;
@@ -63,8 +63,10 @@ public:
   // replaces a layer's geometry
   void upload(Layer layer, const DrawList& list, glm::dvec3 origin);
   // replaces the points and their classes
-  void uploadPoints(std::span<const Vec2> points, std::span<const Location> classes, glm::dvec3 origin);
-  void uploadPoints(std::span<const Vec3> points, std::span<const Location> classes, glm::dvec3 origin);
+  void uploadPoints(std::span<const Vec2> points, std::span<const Location> classes,
+                    glm::dvec3 origin);
+  void uploadPoints(std::span<const Vec3> points, std::span<const Location> classes,
+                    glm::dvec3 origin);
   std::size_t pointCount() const { return pointCount_; }
 
   void drawFills(Layer layer, const FrameParams& f, Cull cull = Cull::None);
@@ -84,7 +86,7 @@ public:
   void compositeTarget();
   bool hasTarget() const { return resolveFbo_ != 0; }
 
-private:
+ private:
   struct GpuLayer {
     GLuint fillVao = 0, fillVbo = 0;
     GLuint segVao = 0, segVbo = 0;
@@ -103,8 +105,8 @@ private:
   template <class P, class Put>
   void uploadOrdered(std::span<const P> points, std::span<const Location> classes, Put put);
   void destroyTarget();
-  GLuint msFbo_ = 0, msColour_ = 0, msDepth_ = 0;        // multisampled, when samples > 0
-  GLuint resolveFbo_ = 0, texture_ = 0, depth_ = 0;      // single-sampled, sampled by the blit
+  GLuint msFbo_ = 0, msColour_ = 0, msDepth_ = 0;    // multisampled, when samples > 0
+  GLuint resolveFbo_ = 0, texture_ = 0, depth_ = 0;  // single-sampled, sampled by the blit
   GLuint blitVao_ = 0;
   int targetW_ = 0, targetH_ = 0, targetSamples_ = 0;
 };

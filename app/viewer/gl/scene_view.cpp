@@ -12,8 +12,9 @@ namespace convexloc::viewer {
 namespace {
 
 bool same(const View2DOptions& a, const View2DOptions& b) {
-  return a.showStructure == b.showStructure && a.showTints == b.showTints && a.showBox == b.showBox &&
-         a.showOctants == b.showOctants && a.showLabels == b.showLabels && a.showHandles == b.showHandles;
+  return a.showStructure == b.showStructure && a.showTints == b.showTints &&
+         a.showBox == b.showBox && a.showOctants == b.showOctants && a.showLabels == b.showLabels &&
+         a.showHandles == b.showHandles;
 }
 
 bool same(const View3DOptions& a, const View3DOptions& b) {
@@ -37,7 +38,8 @@ void classColours(const Palette& pal, FrameParams& f) {
 void SceneView::sync(Model& model, Renderer& renderer) {
   const bool dimChanged = first_ || model.dim != dim_;
   const bool restyle = dimChanged || theme_ != model.settings.theme ||
-                       !same(options2_, model.settings.view2d) || !same(options3_, model.settings.view3d);
+                       !same(options2_, model.settings.view2d) ||
+                       !same(options3_, model.settings.view3d);
   if (dimChanged) {
     seen_ = {~0ull, ~0ull, ~0ull, ~0ull, ~0ull};
     mesh_.clear();
@@ -47,8 +49,10 @@ void SceneView::sync(Model& model, Renderer& renderer) {
     ++uploads_;
   }
   if (restyle) ++uploads_;
-  if (model.dim == Dim::Two) sync2d(model, renderer, restyle);
-  else sync3d(model, renderer, restyle);
+  if (model.dim == Dim::Two)
+    sync2d(model, renderer, restyle);
+  else
+    sync3d(model, renderer, restyle);
   dim_ = model.dim;
   theme_ = model.settings.theme;
   options2_ = model.settings.view2d;
@@ -191,9 +195,11 @@ void SceneView::drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, flo
     if (n > 100000) {
       // a heavy spray: learn how many points fit the frame budget
       glFinish();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const double perPoint = ms / static_cast<double>(std::max<std::size_t>(f.maxPoints, 1));
-      budget_ = static_cast<std::size_t>(std::clamp(frameBudgetMs / std::max(perPoint, 1e-9), 20000.0, 1e9));
+      budget_ = static_cast<std::size_t>(
+          std::clamp(frameBudgetMs / std::max(perPoint, 1e-9), 20000.0, 1e9));
     }
     renderer.finishTarget();
     pointsDrawn_ = std::min(n, f.maxPoints);

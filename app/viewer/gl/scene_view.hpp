@@ -14,14 +14,15 @@
 namespace convexloc::viewer {
 
 class SceneView {
-public:
+ public:
   // brings the renderer's layers and points up to date with the model
   void sync(Model& model, Renderer& renderer);
   // Draws the scene's base (everything but the overlay) into the renderer's cache when it
   // changed, then the cache into the window; without a cache, straight into the window.
   // While the camera moves over a heavy spray, a subsample of the points is drawn, sized
   // so that a frame takes about `frameBudgetMs`; all of them once it stops.
-  void drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio, double frameBudgetMs = 40.0);
+  void drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio,
+                double frameBudgetMs = 40.0);
   // draws the overlay (hover, probe, drag) over it
   void drawOverlay(Model& model, Renderer& renderer, glm::vec2 fbSize, float pixelRatio);
   // how many points the last base drew, of how many
@@ -33,7 +34,7 @@ public:
   // the point size the last frame used (window pixels)
   float pointSize() const { return pointSize_; }
 
-private:
+ private:
   // what the cached base was drawn from
   struct BaseKey {
     glm::mat4 clip{0.0f};
@@ -58,11 +59,11 @@ private:
   View2DOptions options2_{};
   View3DOptions options3_{};
   unsigned farFaces_ = 0;
-  std::uint64_t uploads_ = 0;     // grows with every upload the base depends on
+  std::uint64_t uploads_ = 0;  // grows with every upload the base depends on
   BaseKey lastKey_;
-  bool cached_ = false;           // the cache holds lastKey_'s picture
-  bool partial_ = false;          // ... drawn with a subsample of the points
-  std::size_t budget_ = 250000;   // points a moving frame may draw
+  bool cached_ = false;          // the cache holds lastKey_'s picture
+  bool partial_ = false;         // ... drawn with a subsample of the points
+  std::size_t budget_ = 250000;  // points a moving frame may draw
   std::size_t pointsDrawn_ = 0;
   bool first_ = true;
   float pointSize_ = 4.0f;

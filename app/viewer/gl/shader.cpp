@@ -95,11 +95,21 @@ GLint ShaderProgram::location(const char* name) {
 void ShaderProgram::set(const char* name, const glm::mat4& m) {
   glUniformMatrix4fv(location(name), 1, GL_FALSE, glm::value_ptr(m));
 }
-void ShaderProgram::set(const char* name, const glm::vec4& v) { glUniform4fv(location(name), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* name, const glm::vec3& v) { glUniform3fv(location(name), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* name, const glm::vec2& v) { glUniform2fv(location(name), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* name, float v) { glUniform1f(location(name), v); }
-void ShaderProgram::set(const char* name, int v) { glUniform1i(location(name), v); }
+void ShaderProgram::set(const char* name, const glm::vec4& v) {
+  glUniform4fv(location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, const glm::vec3& v) {
+  glUniform3fv(location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, const glm::vec2& v) {
+  glUniform2fv(location(name), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const char* name, float v) {
+  glUniform1f(location(name), v);
+}
+void ShaderProgram::set(const char* name, int v) {
+  glUniform1i(location(name), v);
+}
 void ShaderProgram::setArray(const char* name, const glm::vec4* v, int count) {
   glUniform4fv(location(name), count, glm::value_ptr(v[0]));
 }

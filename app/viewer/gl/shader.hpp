@@ -11,7 +11,7 @@
 namespace convexloc::viewer {
 
 class ShaderProgram {
-public:
+ public:
   ShaderProgram() = default;
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
@@ -31,7 +31,7 @@ public:
   void set(const char* name, int v);
   void setArray(const char* name, const glm::vec4* v, int count);
 
-private:
+ private:
   GLint location(const char* name);
   GLuint id_ = 0;
   std::unordered_map<std::string, GLint> locations_;

@@ -43,9 +43,12 @@ void Camera2D::fit(const Box2& box, ScreenRect area, double margin) {
   double w = box.hi.x - box.lo.x, h = box.hi.y - box.lo.y;
   const glm::dvec2 mid{0.5 * box.lo.x + 0.5 * box.hi.x, 0.5 * box.lo.y + 0.5 * box.hi.y};
   // a flat box gets the other side's extent, a point a unit square
-  if (!(w > 0.0) && !(h > 0.0)) w = h = 1.0;
-  else if (!(w > 0.0)) w = h;
-  else if (!(h > 0.0)) h = w;
+  if (!(w > 0.0) && !(h > 0.0))
+    w = h = 1.0;
+  else if (!(w > 0.0))
+    w = h;
+  else if (!(h > 0.0))
+    h = w;
   w *= 1.0 + 2.0 * margin;
   h *= 1.0 + 2.0 * margin;
   glm::dvec2 size = area.size();

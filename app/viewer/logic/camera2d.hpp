@@ -14,13 +14,15 @@ struct ScreenRect {
   glm::dvec2 hi{0.0, 0.0};
   glm::dvec2 size() const { return hi - lo; }
   glm::dvec2 middle() const { return 0.5 * (lo + hi); }
-  bool contains(glm::dvec2 p) const { return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y; }
+  bool contains(glm::dvec2 p) const {
+    return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
+  }
 };
 
 // Maps world coordinates (y up) to window pixels (y down) and back. The world point
 // `centre` sits at the middle of the viewport, and one world unit spans `scale` pixels.
 class Camera2D {
-public:
+ public:
   // the smallest and largest scales zooming reaches, in pixels per world unit
   static constexpr double kMinScale = 1e-250;
   static constexpr double kMaxScale = 1e250;
@@ -54,14 +56,18 @@ public:
   // computed in double so that only the small local coordinates go through floats
   glm::mat4 clipFromLocal(glm::dvec2 origin) const;
 
-private:
+ private:
   glm::dvec2 viewport_{1280.0, 800.0};
   glm::dvec2 centre_{0.0, 0.0};
   double scale_ = 100.0;
 };
 
 // conversions between core's points and GLM's vectors
-inline glm::dvec2 toGlm(Vec2 p) { return {p.x, p.y}; }
-inline Vec2 toVec2(glm::dvec2 p) { return {p.x, p.y}; }
+inline glm::dvec2 toGlm(Vec2 p) {
+  return {p.x, p.y};
+}
+inline Vec2 toVec2(glm::dvec2 p) {
+  return {p.x, p.y};
+}
 
 }  // namespace convexloc::viewer

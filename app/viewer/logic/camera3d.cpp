@@ -22,15 +22,23 @@ void Camera3D::set(glm::dvec3 target, double distance, double yaw, double pitch)
 }
 
 glm::dvec3 Camera3D::forward() const {
-  // from the eye toward the target; yaw 0 looks along +y... rotated about z
-  return {-std::cos(pitch_) * std::cos(yaw_), -std::cos(pitch_) * std::sin(yaw_), -std::sin(pitch_)};
+  // from the eye toward the target: yaw turns it about z (yaw 0 looks along -x), pitch
+  // tilts it down
+  return {-std::cos(pitch_) * std::cos(yaw_), -std::cos(pitch_) * std::sin(yaw_),
+          -std::sin(pitch_)};
 }
 
-glm::dvec3 Camera3D::right() const { return {-std::sin(yaw_), std::cos(yaw_), 0.0}; }
+glm::dvec3 Camera3D::right() const {
+  return {-std::sin(yaw_), std::cos(yaw_), 0.0};
+}
 
-glm::dvec3 Camera3D::up() const { return glm::cross(right(), forward()); }
+glm::dvec3 Camera3D::up() const {
+  return glm::cross(right(), forward());
+}
 
-glm::dvec3 Camera3D::eye() const { return target_ - distance_ * forward(); }
+glm::dvec3 Camera3D::eye() const {
+  return target_ - distance_ * forward();
+}
 
 void Camera3D::orbit(glm::dvec2 deltaPx) {
   yaw_ -= deltaPx.x * kRadiansPerPixel;
@@ -70,9 +78,15 @@ glm::dmat4 Camera3D::viewFromLocal(glm::dvec3 origin) const {
   const glm::dvec3 f = forward(), s = right(), u = up();
   const glm::dvec3 e = eye() - origin;
   glm::dmat4 m(1.0);
-  m[0][0] = s.x; m[1][0] = s.y; m[2][0] = s.z;
-  m[0][1] = u.x; m[1][1] = u.y; m[2][1] = u.z;
-  m[0][2] = -f.x; m[1][2] = -f.y; m[2][2] = -f.z;
+  m[0][0] = s.x;
+  m[1][0] = s.y;
+  m[2][0] = s.z;
+  m[0][1] = u.x;
+  m[1][1] = u.y;
+  m[2][1] = u.z;
+  m[0][2] = -f.x;
+  m[1][2] = -f.y;
+  m[2][2] = -f.z;
   m[3][0] = -glm::dot(s, e);
   m[3][1] = -glm::dot(u, e);
   m[3][2] = glm::dot(f, e);

@@ -37,7 +37,7 @@ struct Projected {
 };
 
 class Camera3D {
-public:
+ public:
   void setViewport(glm::dvec2 size);
   glm::dvec2 viewport() const { return viewport_; }
 
@@ -76,7 +76,7 @@ public:
   glm::dmat4 clipFromView() const;
   glm::mat4 clipFromLocal(glm::dvec3 origin) const;
 
-private:
+ private:
   glm::dvec2 viewport_{1280.0, 800.0};
   glm::dvec3 target_{0.0};
   double distance_ = 5.0;

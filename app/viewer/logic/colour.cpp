@@ -91,7 +91,9 @@ Rgba mix(Rgba a, Rgba b, float t) {
           a.a + (b.a - a.a) * t};
 }
 
-std::string_view toString(Theme t) { return t == Theme::Dark ? "dark" : "light"; }
+std::string_view toString(Theme t) {
+  return t == Theme::Dark ? "dark" : "light";
+}
 
 const Palette& paletteFor(Theme t) {
   static const Palette dark = makeDark();

@@ -17,7 +17,9 @@ struct Rgba {
 };
 
 // the same colour with alpha `a`
-constexpr Rgba withAlpha(Rgba c, float a) { return {c.r, c.g, c.b, a}; }
+constexpr Rgba withAlpha(Rgba c, float a) {
+  return {c.r, c.g, c.b, a};
+}
 // a colour from 0xRRGGBB and an alpha
 constexpr Rgba hex(std::uint32_t rgb, float a = 1.0f) {
   return {static_cast<float>((rgb >> 16) & 0xff) / 255.0f,

@@ -79,6 +79,8 @@ struct DrawList {
 };
 
 // 2D helpers: points of the plane z = 0
-inline glm::dvec3 at2(glm::dvec2 p) { return {p.x, p.y, 0.0}; }
+inline glm::dvec3 at2(glm::dvec2 p) {
+  return {p.x, p.y, 0.0};
+}
 
 }  // namespace convexloc::viewer

@@ -6,8 +6,10 @@
 namespace convexloc::viewer {
 
 void Interaction::update(const PointerInput& in, Model& model) {
-  if (model.dim == Dim::Two) update2d(in, model);
-  else update3d(in, model);
+  if (model.dim == Dim::Two)
+    update2d(in, model);
+  else
+    update3d(in, model);
 }
 
 void Interaction::update2d(const PointerInput& in, Model& model) {
@@ -24,10 +26,9 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
     if (in.wheel != 0.0) cam.zoomAt(in.pos, std::pow(kWheelZoom, in.wheel));
     if (in.pressed[0]) {
       const auto v = scene.polygon().vertices();
-      const std::ptrdiff_t grab =
-          model.settings.view2d.showHandles && v.size() <= kMaxHandles
-              ? pickVertex(v, cam, in.pos, kGrabRadius)
-              : -1;
+      const std::ptrdiff_t grab = model.settings.view2d.showHandles && v.size() <= kMaxHandles
+                                      ? pickVertex(v, cam, in.pos, kGrabRadius)
+                                      : -1;
       if (grab >= 0) {
         scene.beginDrag(static_cast<std::size_t>(grab));
         gesture_ = Gesture::DragVertex;
@@ -49,7 +50,8 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
         // a click: on a sprayed point, that very point (its exact doubles); else the cursor
         const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(),
                                              model.settings.visibleMask, cam, in.pos, kPickRadius);
-        scene.place(hit >= 0 ? scene.points()[static_cast<std::size_t>(hit)] : toVec2(cam.toWorld(in.pos)));
+        scene.place(hit >= 0 ? scene.points()[static_cast<std::size_t>(hit)]
+                             : toVec2(cam.toWorld(in.pos)));
         gesture_ = Gesture::None;
       }
       break;
@@ -65,8 +67,7 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
       }
       break;
     case Gesture::None:
-    case Gesture::Orbit:
-      break;
+    case Gesture::Orbit: break;
   }
 
   if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
@@ -101,8 +102,10 @@ void Interaction::update3d(const PointerInput& in, Model& model) {
         // or, off the plane, the cell under the cursor is pinned
         const Ray3 ray = cam.rayThrough(in.pos);
         const auto hit = in.shift ? std::nullopt : scene.hitSlice(ray);
-        if (hit) scene.place(toVec3(*hit));
-        else scene.pin(scene.pickCell(ray));
+        if (hit)
+          scene.place(toVec3(*hit));
+        else
+          scene.pin(scene.pickCell(ray));
         gesture_ = Gesture::None;
       }
       break;
@@ -115,11 +118,12 @@ void Interaction::update3d(const PointerInput& in, Model& model) {
       if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
       break;
     case Gesture::None:
-    case Gesture::DragVertex:
-      break;
+    case Gesture::DragVertex: break;
   }
-  if (gesture_ == Gesture::None || gesture_ == Gesture::Pending) scene.hover(cam.rayThrough(in.pos));
-  else scene.hover(std::nullopt);
+  if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
+    scene.hover(cam.rayThrough(in.pos));
+  else
+    scene.hover(std::nullopt);
 }
 
 }  // namespace convexloc::viewer

@@ -12,18 +12,18 @@ namespace convexloc::viewer {
 // the mouse this frame, in window pixels
 struct PointerInput {
   glm::dvec2 pos{0.0};
-  glm::dvec2 delta{0.0};        // movement since the last frame
-  bool down[3] = {};            // left, right, middle
-  bool pressed[3] = {};         // went down this frame
-  bool released[3] = {};        // went up this frame
-  double wheel = 0.0;           // notches, positive away from the user
-  bool captured = false;        // ImGui wants the mouse (io.WantCaptureMouse)
-  bool shift = false;           // a Shift key is down
-  bool hovering = true;         // the cursor is over the window
+  glm::dvec2 delta{0.0};  // movement since the last frame
+  bool down[3] = {};      // left, right, middle
+  bool pressed[3] = {};   // went down this frame
+  bool released[3] = {};  // went up this frame
+  double wheel = 0.0;     // notches, positive away from the user
+  bool captured = false;  // ImGui wants the mouse (io.WantCaptureMouse)
+  bool shift = false;     // a Shift key is down
+  bool hovering = true;   // the cursor is over the window
 };
 
 class Interaction {
-public:
+ public:
   // pixels the mouse may move between press and release and still count as a click
   static constexpr double kClickSlop = 4.0;
   // how close (pixels) a press must be to a vertex to grab it, or to a point to pick it
@@ -37,7 +37,7 @@ public:
   enum class Gesture { None, Pending, Pan, Orbit, DragVertex };
   Gesture gesture() const { return gesture_; }
 
-private:
+ private:
   void update2d(const PointerInput& in, Model& model);
   void update3d(const PointerInput& in, Model& model);
   Gesture gesture_ = Gesture::None;

@@ -97,7 +97,8 @@ bool Model::applyPreset(std::string_view name) {
     return false;
   }
   if (p->solid) {
-    const PolyhedronKind kind = name == "tiny-faces" ? PolyhedronKind::TinyFaces : PolyhedronKind::Coplanar;
+    const PolyhedronKind kind =
+        name == "tiny-faces" ? PolyhedronKind::TinyFaces : PolyhedronKind::Coplanar;
     if (!scene3d().generate(kind, 200, 1)) {
       collectErrors();
       return false;
@@ -107,7 +108,8 @@ bool Model::applyPreset(std::string_view name) {
     return true;
   }
   const std::vector<Vec2> v = presetPolygon(name);
-  if (!scene2d.setShape(v, std::string(p->title) + " (" + std::to_string(v.size()) + " input points)")) {
+  if (!scene2d.setShape(
+          v, std::string(p->title) + " (" + std::to_string(v.size()) + " input points)")) {
     collectErrors();
     return false;
   }
@@ -129,7 +131,8 @@ std::string Model::apply(const Options& o) {
   // a 3D method, --3d or a polyhedron kind ask for the 3D scene
   const bool method3d = o.method && parseMethod3D(*o.method).has_value();
   if (o.method && !method3d && !parseMethod2D(*o.method))
-    note("unknown method '" + *o.method + "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
+    note("unknown method '" + *o.method +
+         "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
   const std::uint64_t seed = o.seed.value_or(1);
   if (!o.shape.empty()) {
     if (!open(o.shape)) note(error_);
@@ -158,8 +161,10 @@ std::string Model::apply(const Options& o) {
     dim = Dim::Three;
   }
   if (dim == Dim::Two) {
-    if (o.method && !method3d) scene2d.setMethod(*parseMethod2D(*o.method));
-    else if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon");
+    if (o.method && !method3d)
+      scene2d.setMethod(*parseMethod2D(*o.method));
+    else if (method3d)
+      note("'" + *o.method + "' is a 3D method; the scene is a polygon");
     if (o.resolution && !scene2d.setResolution(*o.resolution)) {
       collectErrors();
       note(error_);
@@ -177,8 +182,10 @@ std::string Model::apply(const Options& o) {
     if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
   } else {
     Scene3D& s3 = scene3d();
-    if (o.method && method3d) s3.setMethod(*parseMethod3D(*o.method));
-    else if (o.method) note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
+    if (o.method && method3d)
+      s3.setMethod(*parseMethod3D(*o.method));
+    else if (o.method)
+      note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
     if (o.resolution && !s3.setResolution(*o.resolution)) {
       collectErrors();
       note(error_);
@@ -193,16 +200,23 @@ std::string Model::apply(const Options& o) {
     if (o.slice) s3.setSlice(*o.slice);
     if (o.probe3) s3.place(*o.probe3);
     if (o.cell) {
-      if (*o.cell < s3.cells().size()) s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
-      else note("--cell " + std::to_string(*o.cell) + ": the scene has " + std::to_string(s3.cells().size()) + " cells");
+      if (*o.cell < s3.cells().size())
+        s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
+      else
+        note("--cell " + std::to_string(*o.cell) + ": the scene has " +
+             std::to_string(s3.cells().size()) + " cells");
     }
     if (o.probe || o.hover) note("--probe X,Y and --hover are for a 2D scene");
   }
   if (o.show) {
-    if (*o.show == "inside") settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
-    else if (*o.show == "outside") settings.visibleMask = classBit(Location::Outside) | classBit(Location::Boundary);
-    else if (*o.show == "boundary") settings.visibleMask = classBit(Location::Boundary);
-    else settings.visibleMask = kAllClasses;
+    if (*o.show == "inside")
+      settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
+    else if (*o.show == "outside")
+      settings.visibleMask = classBit(Location::Outside) | classBit(Location::Boundary);
+    else if (*o.show == "boundary")
+      settings.visibleMask = classBit(Location::Boundary);
+    else
+      settings.visibleMask = kAllClasses;
   }
   collectErrors();
   requestFit();

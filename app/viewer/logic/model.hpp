@@ -28,7 +28,7 @@ struct Settings {
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
   bool showUi = true;
-  float pointSize = 0.0f;            // pixels; 0 chooses from the count and the window
+  float pointSize = 0.0f;              // pixels; 0 chooses from the count and the window
   unsigned visibleMask = kAllClasses;  // which classes of sprayed points are drawn
   View2DOptions view2d;
   View3DOptions view3d;
@@ -38,7 +38,7 @@ struct Settings {
 float autoPointSize(std::size_t count, double areaPx);
 
 class Model {
-public:
+ public:
   Model() = default;
 
   Dim dim = Dim::Two;
@@ -81,7 +81,7 @@ public:
   // collects a scene's new error, if any (call once per frame)
   void collectErrors();
 
-private:
+ private:
   void remember(const std::string& path);
   std::unique_ptr<Scene3D> scene3d_;
   std::uint64_t seen3d_ = 0;

@@ -45,7 +45,8 @@ bool parsePoint3(std::string_view s, Vec3& out) {
 bool parseCount(std::string_view s, std::size_t& out) {
   if (parseInt<std::size_t>(s, 0, std::size_t{1} << 26, out)) return true;
   double d = 0.0;
-  if (!parseDouble(s, d) || d < 0.0 || d > static_cast<double>(std::size_t{1} << 26) || d != std::floor(d))
+  if (!parseDouble(s, d) || d < 0.0 || d > static_cast<double>(std::size_t{1} << 26) ||
+      d != std::floor(d))
     return false;
   out = static_cast<std::size_t>(d);
   return true;
@@ -69,13 +70,20 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
       return true;
     };
     std::string_view v;
-    if (a == "-h" || a == "--help") o.help = true;
-    else if (a == "--version") o.version = true;
-    else if (a == "--near-boundary") o.nearBoundary = true;
-    else if (a == "--hide-ui") o.hideUi = true;
-    else if (a == "--no-xvfb") o.noXvfb = true;
-    else if (a == "--animate") o.animate = true;
-    else if (a == "--compare") o.compare = true;
+    if (a == "-h" || a == "--help")
+      o.help = true;
+    else if (a == "--version")
+      o.version = true;
+    else if (a == "--near-boundary")
+      o.nearBoundary = true;
+    else if (a == "--hide-ui")
+      o.hideUi = true;
+    else if (a == "--no-xvfb")
+      o.noXvfb = true;
+    else if (a == "--animate")
+      o.animate = true;
+    else if (a == "--compare")
+      o.compare = true;
     else if (a == "--method") {
       if (!value(v)) return fail("--method needs a method name");
       o.method = std::string(v);
@@ -112,16 +120,20 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
       Vec2 p;
       Vec3 q;
       if (!value(v)) return fail("--probe needs X,Y or X,Y,Z");
-      if (parsePoint3(v, q)) o.probe3 = q;
-      else if (parsePoint(v, p)) o.probe = p;
-      else return fail("--probe needs X,Y or X,Y,Z");
+      if (parsePoint3(v, q))
+        o.probe3 = q;
+      else if (parsePoint(v, p))
+        o.probe = p;
+      else
+        return fail("--probe needs X,Y or X,Y,Z");
     } else if (a == "--hover") {
       Vec2 p;
       if (!value(v) || !parsePoint(v, p)) return fail("--hover needs X,Y");
       o.hover = p;
     } else if (a == "--view") {
       Vec3 q;
-      if (!value(v) || !parsePoint3(v, q) || !(q.z > 0.0)) return fail("--view needs X,Y,WIDTH with WIDTH > 0");
+      if (!value(v) || !parsePoint3(v, q) || !(q.z > 0.0))
+        return fail("--view needs X,Y,WIDTH with WIDTH > 0");
       o.view = q;
     } else if (a == "--3d") {
       o.solid = true;
@@ -135,7 +147,8 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
       o.slice = s;
     } else if (a == "--cell") {
       std::size_t k = 0;
-      if (!value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k)) return fail("--cell needs a cell index");
+      if (!value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
+        return fail("--cell needs a cell index");
       o.cell = k;
     } else if (a == "--theme") {
       if (!value(v) || (v != "dark" && v != "light")) return fail("--theme needs dark or light");

@@ -24,8 +24,8 @@ std::ptrdiff_t pickCell(std::span<const Cell2D> cells, Vec2 p) {
   return -1;
 }
 
-std::ptrdiff_t pickVertex(std::span<const Vec2> vertices, const Camera2D& camera,
-                          glm::dvec2 screen, double radiusPx) {
+std::ptrdiff_t pickVertex(std::span<const Vec2> vertices, const Camera2D& camera, glm::dvec2 screen,
+                          double radiusPx) {
   std::ptrdiff_t best = -1;
   double bestDistance = radiusPx * radiusPx;
   for (std::size_t i = 0; i < vertices.size(); ++i) {

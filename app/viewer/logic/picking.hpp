@@ -21,8 +21,8 @@ bool outlineContains(std::span<const Vec2> outline, Vec2 p);
 std::ptrdiff_t pickCell(std::span<const Cell2D> cells, Vec2 p);
 
 // the vertex nearest to the window pixel `screen` within `radiusPx`, or -1
-std::ptrdiff_t pickVertex(std::span<const Vec2> vertices, const Camera2D& camera,
-                          glm::dvec2 screen, double radiusPx);
+std::ptrdiff_t pickVertex(std::span<const Vec2> vertices, const Camera2D& camera, glm::dvec2 screen,
+                          double radiusPx);
 
 // The point nearest to the window pixel `screen` within `radiusPx` among those whose class
 // bit is set in `visibleMask` (bit 0 inside, 1 boundary, 2 outside), or -1.
@@ -31,7 +31,9 @@ std::ptrdiff_t pickPoint(std::span<const Vec2> points, std::span<const Location>
                          double radiusPx);
 
 // the bit of a class in a visibility mask
-constexpr unsigned classBit(Location l) { return 1u << static_cast<unsigned>(l); }
+constexpr unsigned classBit(Location l) {
+  return 1u << static_cast<unsigned>(l);
+}
 inline constexpr unsigned kAllClasses = 7u;
 
 }  // namespace convexloc::viewer

@@ -13,10 +13,10 @@
 namespace convexloc::viewer {
 
 struct Preset {
-  std::string_view name;   // for --preset
-  std::string_view title;  // for the button
-  std::string_view about;  // one sentence: what it shows
-  bool solid = false;      // a polyhedron (3D) rather than a polygon
+  std::string_view name;           // for --preset
+  std::string_view title;          // for the button
+  std::string_view about;          // one sentence: what it shows
+  bool solid = false;              // a polyhedron (3D) rather than a polygon
   std::optional<Method2D> method;  // the method that shows it best, if it matters
 };
 

@@ -287,7 +287,8 @@ bool Scene2D::dragTo(Vec2 p) {
 
 void Scene2D::endDrag() {
   if (!drag_) return;
-  if (drag_->rejected) setError("vertex drag: " + drag_->message + "; the last valid shape is kept");
+  if (drag_->rejected)
+    setError("vertex drag: " + drag_->message + "; the last valid shape is kept");
   drag_.reset();
   ++versions_.overlay;
 }

@@ -34,7 +34,7 @@ struct Probe {
 // one method timed by `compare`
 struct CompareRow {
   Method2D method = Method2D::Halfplane;
-  std::size_t points = 0;         // how many of the spray were located in the time budget
+  std::size_t points = 0;  // how many of the spray were located in the time budget
   double nsPerPoint = 0.0;
   double buildMs = 0.0;
   std::size_t bytes = 0;
@@ -45,9 +45,9 @@ struct CompareRow {
 // a vertex being dragged
 struct Drag {
   std::size_t vertex = 0;  // its index in the current polygon
-  Vec2 cursor{};          // where the mouse is
-  bool rejected = false;  // the shape with the vertex at the cursor is not valid
-  std::string message;    // why, when rejected
+  Vec2 cursor{};           // where the mouse is
+  bool rejected = false;   // the shape with the vertex at the cursor is not valid
+  std::string message;     // why, when rejected
 };
 
 // counters bumped when a part changes, so that drawing rebuilds only that part
@@ -66,7 +66,7 @@ inline constexpr std::size_t kMaxDrawnCells = std::size_t{1} << 18;
 std::size_t baseEdgesPerCell(Method2D m);
 
 class Scene2D {
-public:
+ public:
   // the default scene: a random convex polygon with polar slabs and a spray of points
   Scene2D();
 
@@ -148,7 +148,7 @@ public:
 
   const Versions& versions() const { return versions_; }
 
-private:
+ private:
   bool adopt(ConvexPolygon polygon, std::string label, bool respray);
   bool rebuildLocator();
   void classify();

@@ -177,7 +177,8 @@ std::optional<Vec3> Scene3D::centre() const {
 }
 
 double Scene3D::cubeHalfSize() const {
-  if (const auto* c = locator_->get<CubemapLocator>(); c && !cells_.empty()) return c->cubeHalfSize();
+  if (const auto* c = locator_->get<CubemapLocator>(); c && !cells_.empty())
+    return c->cubeHalfSize();
   return 0.0;
 }
 
@@ -316,7 +317,8 @@ std::ptrdiff_t Scene3D::pickCell(const Ray3& ray) const {
       if (ray.origin[a] < lo[a] || ray.origin[a] > hi[a]) return -1;
       continue;
     }
-    double ta = (lo[a] - ray.origin[a]) / ray.direction[a], tb = (hi[a] - ray.origin[a]) / ray.direction[a];
+    double ta = (lo[a] - ray.origin[a]) / ray.direction[a],
+           tb = (hi[a] - ray.origin[a]) / ray.direction[a];
     if (ta > tb) std::swap(ta, tb);
     t0 = std::max(t0, ta);
     t1 = std::min(t1, tb);
@@ -343,7 +345,8 @@ std::ptrdiff_t Scene3D::pickCell(const Ray3& ray) const {
       vlo = std::min(vlo, g[v]);
       vhi = std::max(vhi, g[v]);
     }
-    if (p[u] >= ulo && p[u] <= uhi && p[v] >= vlo && p[v] <= vhi) return static_cast<std::ptrdiff_t>(k);
+    if (p[u] >= ulo && p[u] <= uhi && p[v] >= vlo && p[v] <= vhi)
+      return static_cast<std::ptrdiff_t>(k);
   }
   return -1;
 }

@@ -52,7 +52,7 @@ struct CompareRow3D {
 inline constexpr std::size_t kBaseFacesPerCell = 1;
 
 class Scene3D {
-public:
+ public:
   // the default scene: an icosahedron with the cube map
   Scene3D();
 
@@ -126,7 +126,7 @@ public:
   void setError(std::string message);
   const Versions& versions() const { return versions_; }
 
-private:
+ private:
   bool adopt(ConvexPolyhedron poly, std::string label);
   bool rebuildLocator();
   void classify();
@@ -160,7 +160,11 @@ private:
 };
 
 // conversions between core's points and GLM's vectors
-inline glm::dvec3 toGlm(Vec3 p) { return {p.x, p.y, p.z}; }
-inline Vec3 toVec3(glm::dvec3 p) { return {p.x, p.y, p.z}; }
+inline glm::dvec3 toGlm(Vec3 p) {
+  return {p.x, p.y, p.z};
+}
+inline Vec3 toVec3(glm::dvec3 p) {
+  return {p.x, p.y, p.z};
+}
 
 }  // namespace convexloc::viewer

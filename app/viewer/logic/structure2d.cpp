@@ -46,7 +46,8 @@ void labelEdge(const ConvexPolygon& poly, std::size_t e, std::string text, Rgba 
   const double len = glm::length(d);
   glm::vec2 offset{0.0f};
   // outward normal of a counter-clockwise edge, y flipped for the screen
-  if (len > 0.0) offset = glm::vec2(static_cast<float>(d.y / len), static_cast<float>(d.x / len)) * px;
+  if (len > 0.0)
+    offset = glm::vec2(static_cast<float>(d.y / len), static_cast<float>(d.x / len)) * px;
   out.label(at2(0.5 * (a + b)), std::move(text), c, offset);
 }
 
@@ -70,8 +71,10 @@ bool clipLineToBox(glm::dvec2 a, glm::dvec2 b, const Box2& box, glm::dvec2& p, g
     // keep the part where denom * t <= num
     if (denom == 0.0) return num >= 0.0;
     const double t = num / denom;
-    if (denom > 0.0) t1 = std::min(t1, t);
-    else t0 = std::max(t0, t);
+    if (denom > 0.0)
+      t1 = std::min(t1, t);
+    else
+      t0 = std::max(t0, t);
     return true;
   };
   if (!clip(-d.x, a.x - box.lo.x) || !clip(d.x, box.hi.x - a.x) || !clip(-d.y, a.y - box.lo.y) ||
@@ -106,8 +109,8 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   // the polygon's interior, faintly (a cosmetic fan: left out for huge polygons)
   if (n <= kMaxFilledVertices)
     for (std::size_t i = 1; i + 1 < n; ++i)
-    out.triangle(at2(toGlm(poly.vertex(0))), at2(toGlm(poly.vertex(i))),
-                 at2(toGlm(poly.vertex(i + 1))), pal.polygonFill);
+      out.triangle(at2(toGlm(poly.vertex(0))), at2(toGlm(poly.vertex(i))),
+                   at2(toGlm(poly.vertex(i + 1))), pal.polygonFill);
 
   // cells listing more than the method's fewest edges, tinted apart
   if (opt.showStructure && opt.showTints)
@@ -154,7 +157,8 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
           for (std::size_t i = 0; i < cells.size(); ++i) {
             const auto& o = cells[i].outline;
             out.segment(at2(toGlm(o[0])), at2(toGlm(o[1])), pal.structure, 1.0f);
-            if (i + 1 == cells.size()) out.segment(at2(toGlm(o[2])), at2(toGlm(o[3])), pal.structure, 1.0f);
+            if (i + 1 == cells.size())
+              out.segment(at2(toGlm(o[2])), at2(toGlm(o[3])), pal.structure, 1.0f);
           }
         break;
       case Method2D::Polar: {
@@ -201,8 +205,10 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
     for (std::size_t i = 0; i < n; ++i) {
       glm::dvec2 d = toGlm(poly.vertex(i)) - mid;
       const double len = glm::length(d);
-      glm::vec2 off = len > 0.0 ? glm::vec2(static_cast<float>(d.x / len), static_cast<float>(-d.y / len)) * 14.0f
-                                : glm::vec2(0.0f);
+      glm::vec2 off =
+          len > 0.0
+              ? glm::vec2(static_cast<float>(d.x / len), static_cast<float>(-d.y / len)) * 14.0f
+              : glm::vec2(0.0f);
       out.label(at2(toGlm(poly.vertex(i))), std::to_string(i), pal.textMuted, off);
     }
   }
@@ -244,7 +250,8 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
     if (t.outsideBox) {
       glm::dvec2 k[4];
       boxCorners(poly.bounds(), k);
-      for (int i = 0; i < 4; ++i) out.segment(at2(k[i]), at2(k[(i + 1) % 4]), pal.negative, 2.0f, 6.0f);
+      for (int i = 0; i < 4; ++i)
+        out.segment(at2(k[i]), at2(k[(i + 1) % 4]), pal.negative, 2.0f, 6.0f);
     }
     // the cell the query chose
     const std::ptrdiff_t pos = cellPosition(scene, t.cell);
@@ -272,11 +279,14 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
       if (e.edge >= n) continue;
       strokeEdge(poly, e.edge, signColour(pal, e.sign), 4.5f, out);
       if (opt.showLabels && fewEdges)
-        labelEdge(poly, e.edge, numbered("e", e.edge).append(signText(e.sign)), signColour(pal, e.sign), 18.0f, out);
+        labelEdge(poly, e.edge, numbered("e", e.edge).append(signText(e.sign)),
+                  signColour(pal, e.sign), 18.0f, out);
     }
     out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
     out.marker(at2(x), colourOf(pal, t.result), 13.0f, MarkerShape::Disc);
-    if (opt.showLabels) out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
+    if (opt.showLabels)
+      out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result),
+                {12.0f, 12.0f});
   }
 
   // a dragged vertex: accepted edits are the shape itself; a rejected one shows where

@@ -11,7 +11,9 @@ namespace {
 
 using Tri = ConvexPolyhedron::Triangle;
 
-glm::dvec3 vertexOf(const ConvexPolyhedron& p, std::uint32_t i) { return toGlm(p.vertices()[i]); }
+glm::dvec3 vertexOf(const ConvexPolyhedron& p, std::uint32_t i) {
+  return toGlm(p.vertices()[i]);
+}
 
 // the unit normal of a triangle, for shading (drawing only)
 glm::vec3 normalOf(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
@@ -64,7 +66,8 @@ const char* kCubeFaceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 }  // namespace
 
-void buildMesh3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt, DrawList& out) {
+void buildMesh3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt,
+                 DrawList& out) {
   out.clear();
   if (!opt.showMesh) return;
   const ConvexPolyhedron& p = scene.polyhedron();
@@ -86,8 +89,8 @@ unsigned farCubeFaces(const Scene3D& scene, glm::dvec3 eye) {
   return mask;
 }
 
-void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt, unsigned farFaces,
-                      DrawList& out) {
+void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt,
+                      unsigned farFaces, DrawList& out) {
   out.clear();
   const ConvexPolyhedron& p = scene.polyhedron();
   const auto& cells = scene.cells();
@@ -99,7 +102,8 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
     for (std::uint32_t f = 0; f < tris.size(); ++f)
       for (int k = 0; k < 3; ++k)
         if (nbs[f][k] > f)
-          out.segment(vertexOf(p, tris[f][k]), vertexOf(p, tris[f][(k + 1) % 3]), pal.meshEdge, 1.0f);
+          out.segment(vertexOf(p, tris[f][k]), vertexOf(p, tris[f][(k + 1) % 3]), pal.meshEdge,
+                      1.0f);
   }
 
   // the cube map: tinted cells and the grid on the far faces, the cube's outline
@@ -159,14 +163,16 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
         const Location l = s.classes[static_cast<std::size_t>(j) * s.n + i];
         if (l == Location::Outside) continue;
         const Rgba c = withAlpha(colourOf(pal, l), l == Location::Inside ? 0.6f : 0.95f);
-        const glm::dvec3 a = s.corner + static_cast<double>(i) * s.du + static_cast<double>(j) * s.dv;
+        const glm::dvec3 a =
+            s.corner + static_cast<double>(i) * s.du + static_cast<double>(j) * s.dv;
         out.triangle(a, a + s.du, a + s.du + s.dv, c);
         out.triangle(a, a + s.du + s.dv, a + s.dv, c);
       }
   }
 }
 
-void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt, DrawList& out) {
+void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt,
+                    DrawList& out) {
   out.clear();
   const ConvexPolyhedron& p = scene.polyhedron();
   const auto& cells = scene.cells();
@@ -198,7 +204,8 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
     // the walk's path, face after face
     for (std::size_t i = 0; i < t.path.size(); ++i) {
       fillFace(p, t.path[i], withAlpha(pal.structureStrong, 0.35f), false, out);
-      if (opt.showLabels && t.path.size() <= 40) out.label(faceMiddle(p, t.path[i]), std::to_string(i + 1), pal.text);
+      if (opt.showLabels && t.path.size() <= 40)
+        out.label(faceMiddle(p, t.path[i]), std::to_string(i + 1), pal.text);
     }
     // the planes tested, coloured by the sign
     const bool few = t.faces.size() <= 64;
@@ -211,7 +218,8 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
     }
     out.marker(x, pal.rim, 17.0f, MarkerShape::Disc);
     out.marker(x, rc, 13.0f, MarkerShape::Disc);
-    if (opt.showLabels) out.label(x, std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
+    if (opt.showLabels)
+      out.label(x, std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
   }
 }
 

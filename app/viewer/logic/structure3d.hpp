@@ -12,11 +12,11 @@ namespace convexloc::viewer {
 
 struct View3DOptions {
   bool showMesh = true;
-  bool transparent = true;   // the polyhedron's faces see-through
-  bool wireframe = true;     // its triangle edges
-  bool showCube = true;      // the cube map's grid on the cube's six faces
-  bool showTints = true;     // cells listing extra faces tinted apart
-  bool showSlice = true;     // the slicing plane and its section
+  bool transparent = true;  // the polyhedron's faces see-through
+  bool wireframe = true;    // its triangle edges
+  bool showCube = true;     // the cube map's grid on the cube's six faces
+  bool showTints = true;    // cells listing extra faces tinted apart
+  bool showSlice = true;    // the slicing plane and its section
   bool showLabels = true;
 };
 
@@ -25,7 +25,8 @@ inline constexpr std::size_t kMaxWireframeFaces = 200000;
 inline constexpr std::size_t kMaxGridCells = 60000;
 
 // the polyhedron's faces (lit), in the mesh layer
-void buildMesh3D(const Scene3D& scene, const Palette& palette, const View3DOptions& options, DrawList& out);
+void buildMesh3D(const Scene3D& scene, const Palette& palette, const View3DOptions& options,
+                 DrawList& out);
 // Edges, the cube and its cells, the centre, the slicing plane and its section. Cells are
 // drawn on the cube faces in `farFaces` (bit f for cube face f): those the eye sees from
 // inside, behind the polyhedron; the other faces show their grid only faintly, untinted.

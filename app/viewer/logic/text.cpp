@@ -12,7 +12,9 @@ TraceLine::Kind signKind(int s) {
 }
 
 // "+1", "0", "-1"
-std::string signWord(int s) { return s > 0 ? "+1" : (s < 0 ? "-1" : "0"); }
+std::string signWord(int s) {
+  return s > 0 ? "+1" : (s < 0 ? "-1" : "0");
+}
 
 std::string edgeLine(const EdgeTest& e) {
   std::string side = e.sign > 0 ? "inner side" : (e.sign < 0 ? "outer side" : "on its line");
@@ -20,7 +22,8 @@ std::string edgeLine(const EdgeTest& e) {
 }
 
 std::string rayLine(const RayTest& r, const char* apex) {
-  std::string side = r.sign > 0 ? "counter-clockwise of it" : (r.sign < 0 ? "clockwise of it" : "on it");
+  std::string side =
+      r.sign > 0 ? "counter-clockwise of it" : (r.sign < 0 ? "clockwise of it" : "on it");
   return std::string("ray ") + apex + " -> vertex " + std::to_string(r.vertex) + ": " +
          signWord(r.sign) + "  (" + side + ")";
 }
@@ -62,13 +65,18 @@ std::string numbered(std::string_view prefix, std::uint64_t n) {
 
 std::string nsText(double ns) {
   char buf[32];
-  if (ns >= 100.0) std::snprintf(buf, sizeof buf, "%.0f", ns);
-  else if (ns >= 10.0) std::snprintf(buf, sizeof buf, "%.1f", ns);
-  else std::snprintf(buf, sizeof buf, "%.2f", ns);
+  if (ns >= 100.0)
+    std::snprintf(buf, sizeof buf, "%.0f", ns);
+  else if (ns >= 10.0)
+    std::snprintf(buf, sizeof buf, "%.1f", ns);
+  else
+    std::snprintf(buf, sizeof buf, "%.2f", ns);
   return buf;
 }
 
-std::string signText(int sign) { return sign > 0 ? " +" : (sign < 0 ? " -" : " 0"); }
+std::string signText(int sign) {
+  return sign > 0 ? " +" : (sign < 0 ? " -" : " 0");
+}
 
 std::string grouped(std::size_t n) {
   std::string digits = std::to_string(n), out;
@@ -100,22 +108,27 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
       break;
     case Method2D::Slab:
     case Method2D::Uniform:
-      if (t.outsideBox) add(TraceLine::Step, "outside the bounding box: no slab is needed");
+      if (t.outsideBox)
+        add(TraceLine::Step, "outside the bounding box: no slab is needed");
       else if (t.cell >= 0)
-        add(TraceLine::Step, std::string(t.method == Method2D::Slab ? "binary search of y" : "slab index from y (eq. 4)") +
+        add(TraceLine::Step, std::string(t.method == Method2D::Slab ? "binary search of y"
+                                                                    : "slab index from y (eq. 4)") +
                                  ": slab " + std::to_string(t.cell));
       break;
     case Method2D::Polar:
-      if (t.atCentre) add(TraceLine::Step, "the point is the centre x_T itself");
+      if (t.atCentre)
+        add(TraceLine::Step, "the point is the centre x_T itself");
       else if (t.octant >= 0) {
         add(TraceLine::Step, "centre x_T = " + exact(t.apex));
-        add(TraceLine::Step, "octant " + std::to_string(t.octant) +
-                                 " (signs of dx, dy and |dx| vs |dy|)");
+        add(TraceLine::Step,
+            "octant " + std::to_string(t.octant) + " (signs of dx, dy and |dx| vs |dy|)");
         if (q > 0)
-          add(TraceLine::Step, "polar slab " + std::to_string(t.cell % q) + " of " + std::to_string(q) +
-                                   " in the octant: cell " + std::to_string(t.cell));
+          add(TraceLine::Step, "polar slab " + std::to_string(t.cell % q) + " of " +
+                                   std::to_string(q) + " in the octant: cell " +
+                                   std::to_string(t.cell));
       } else {
-        add(TraceLine::Step, "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
+        add(TraceLine::Step,
+            "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
       }
       break;
   }
@@ -147,7 +160,8 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
   add(TraceLine::Heading, std::string(toString(t.method)) + ": point " + exact(p));
   if (t.nonFinite) add(TraceLine::Step, "a coordinate is not finite: outside");
   if (t.atCentre) add(TraceLine::Step, "the point is the centre x_T itself");
-  if (t.centre && t.method != Method3D::Halfspace) add(TraceLine::Step, "centre x_T = " + exact(*t.centre));
+  if (t.centre && t.method != Method3D::Halfspace)
+    add(TraceLine::Step, "centre x_T = " + exact(*t.centre));
   if (t.cubeFace >= 0) {
     add(TraceLine::Step, std::string("direction from x_T: cube face ") + kFaces[t.cubeFace] +
                              " (the largest |coordinate| and its sign)");
@@ -170,8 +184,8 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
   for (const FaceTest& f : t.faces) {
     const char* side = f.sign > 0 ? "inner side" : (f.sign < 0 ? "outer side" : "on its plane");
     add(f.sign > 0 ? TraceLine::Positive : (f.sign < 0 ? TraceLine::Negative : TraceLine::Zero),
-        "face " + std::to_string(f.face) + ": orient3d = " + (f.sign > 0 ? "+1" : (f.sign < 0 ? "-1" : "0")) +
-            "  (" + side + ")");
+        "face " + std::to_string(f.face) +
+            ": orient3d = " + (f.sign > 0 ? "+1" : (f.sign < 0 ? "-1" : "0")) + "  (" + side + ")");
   }
   const std::size_t k = t.faces.size() + t.steps.size();
   add(TraceLine::Result, "result: " + upper(toString(t.result)) + "  (" + std::to_string(k) +

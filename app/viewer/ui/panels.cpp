@@ -39,7 +39,8 @@ void shapePanel(Model& model, UiState& ui) {
   ImGui::TextDisabled("%s vertices", grouped(poly.size()).c_str());
   if (poly.droppedCount() > 0) {
     ImGui::SameLine();
-    ImGui::TextDisabled("(%s dropped: repeated or collinear)", grouped(poly.droppedCount()).c_str());
+    ImGui::TextDisabled("(%s dropped: repeated or collinear)",
+                        grouped(poly.droppedCount()).c_str());
   }
   if (poly.wasClockwise()) {
     ImGui::SameLine();
@@ -52,15 +53,18 @@ void shapePanel(Model& model, UiState& ui) {
   ImGui::Spacing();
   const int kinds = static_cast<int>(std::size(kAllPolygonKinds));
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-  if (ImGui::BeginCombo("##kind", std::string(toString(kAllPolygonKinds[ui.generatorKind])).c_str())) {
+  if (ImGui::BeginCombo("##kind",
+                        std::string(toString(kAllPolygonKinds[ui.generatorKind])).c_str())) {
     for (int k = 0; k < kinds; ++k)
-      if (ImGui::Selectable(std::string(toString(kAllPolygonKinds[k])).c_str(), k == ui.generatorKind))
+      if (ImGui::Selectable(std::string(toString(kAllPolygonKinds[k])).c_str(),
+                            k == ui.generatorKind))
         ui.generatorKind = k;
     ImGui::EndCombo();
   }
   ImGui::SameLine();
   if (ImGui::Button("Generate", ImVec2(-1.0f, 0.0f)))
-    if (scene.generate(kAllPolygonKinds[ui.generatorKind], static_cast<std::size_t>(ui.generatorN), ui.generatorSeed))
+    if (scene.generate(kAllPolygonKinds[ui.generatorKind], static_cast<std::size_t>(ui.generatorN),
+                       ui.generatorSeed))
       model.requestFit();
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
   ImGui::InputInt("N", &ui.generatorN, 1, 16);
@@ -70,7 +74,8 @@ void shapePanel(Model& model, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::SmallButton("next")) {
     ++ui.generatorSeed;
-    if (scene.generate(kAllPolygonKinds[ui.generatorKind], static_cast<std::size_t>(ui.generatorN), ui.generatorSeed))
+    if (scene.generate(kAllPolygonKinds[ui.generatorKind], static_cast<std::size_t>(ui.generatorN),
+                       ui.generatorSeed))
       model.requestFit();
   }
 
@@ -94,11 +99,13 @@ void methodPanel(Model& model, UiState& ui) {
   if (m == Method2D::Uniform || m == Method2D::Polar) {
     bool automatic = scene.resolution() == 0;
     int r = static_cast<int>(scene.effectiveResolution());
-    if (ImGui::Checkbox("auto", &automatic)) scene.setResolution(automatic ? 0 : static_cast<std::uint32_t>(r));
+    if (ImGui::Checkbox("auto", &automatic))
+      scene.setResolution(automatic ? 0 : static_cast<std::uint32_t>(r));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     const int most = m == Method2D::Uniform ? 1 << 20 : 1 << 16;
-    if (ImGui::SliderInt("##res", &r, 1, most, m == Method2D::Uniform ? "%d slabs" : "%d per octant",
+    if (ImGui::SliderInt("##res", &r, 1, most,
+                         m == Method2D::Uniform ? "%d slabs" : "%d per octant",
                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
       scene.setResolution(static_cast<std::uint32_t>(std::max(r, 1)));
   }
@@ -115,7 +122,8 @@ void methodPanel(Model& model, UiState& ui) {
     row("edges", grouped(s.edges));
     if (s.cells) {
       row("cells", grouped(s.cells));
-      row("edges per cell", "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3));
+      row("edges per cell",
+          "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3));
       if (s.crowdedCells) row("crowded cells", grouped(s.crowdedCells) + " (bisection)");
     }
     if (scene.cellsOmitted()) row("drawing", "too many cells to draw");
@@ -127,8 +135,8 @@ void methodPanel(Model& model, UiState& ui) {
   if (!s.histogram.empty() && s.cells) {
     std::vector<float> h(s.histogram.begin(), s.histogram.end());
     ImGui::TextDisabled("cells by edges listed: 0, 1, ..., %zu+", h.size() - 1);
-    ImGui::PlotHistogram("##hist", h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f,
-                         FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f));
+    ImGui::PlotHistogram("##hist", h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f, FLT_MAX,
+                         ImVec2(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f));
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       for (std::size_t k = 0; k < s.histogram.size(); ++k)
@@ -140,8 +148,9 @@ void methodPanel(Model& model, UiState& ui) {
   }
 
   if (ImGui::Button("Compare all methods", ImVec2(-1.0f, 0.0f))) ui.compare = scene.compare();
-  help("Times every method's batch locate on the current spray (at most ~0.1 s each) and checks "
-       "that all answer the same.");
+  help(
+      "Times every method's batch locate on the current spray (at most ~0.1 s each) and checks "
+      "that all answer the same.");
   if (!ui.compare.empty() &&
       ImGui::BeginTable("compare", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("method");
@@ -158,15 +167,20 @@ void methodPanel(Model& model, UiState& ui) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(std::string(toString(r.method)).c_str());
       ImGui::TableNextColumn();
-      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
-      else ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
+      if (r.nsPerPoint == best)
+        ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
+      else
+        ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(), bytesText(r.bytes).c_str());
+        ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(),
+                          bytesText(r.bytes).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%s ms", approx(r.buildMs, 2).c_str());
       ImGui::TableNextColumn();
-      if (r.disagreements == 0) ImGui::TextColored(im(pal.positive), "yes");
-      else ImGui::TextColored(im(pal.negative), "%zu differ", r.disagreements);
+      if (r.disagreements == 0)
+        ImGui::TextColored(im(pal.positive), "yes");
+      else
+        ImGui::TextColored(im(pal.negative), "%zu differ", r.disagreements);
     }
     ImGui::EndTable();
   }
@@ -200,21 +214,25 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
     viewOptions3(model);
   }
 
-  const float third = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+  const float third =
+      (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
   if (ImGui::Button("Fit (F)", ImVec2(third, 0.0f))) model.requestFit();
   ImGui::SameLine();
   if (ImGui::Button("Screenshot", ImVec2(third, 0.0f))) ui.screenshotRequested = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: a PNG of the window in the working directory");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("F12: a PNG of the window in the working directory");
   ImGui::SameLine();
   if (ImGui::Button("Shaders", ImVec2(third, 0.0f))) ui.reloadShaders = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Reload the shaders from %s", renderer.shaderDir().c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Reload the shaders from %s", renderer.shaderDir().c_str());
   if (!renderer.shaderLog().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, im(paletteFor(model.settings.theme).negative));
     ImGui::TextWrapped("%s", renderer.shaderLog().c_str());
     ImGui::PopStyleColor();
   }
   ImGui::TextDisabled("%.2f ms/frame (%.0f fps), %s points", ui.frameMs,
-                      ui.frameMs > 0 ? 1000.0 / ui.frameMs : 0.0, grouped(renderer.pointCount()).c_str());
+                      ui.frameMs > 0 ? 1000.0 / ui.frameMs : 0.0,
+                      grouped(renderer.pointCount()).c_str());
   if (!ui.glInfo.empty()) ImGui::TextDisabled("%s", ui.glInfo.c_str());
 }
 
@@ -233,13 +251,16 @@ void inspectorContents(Model& model, bool hints) {
       what += ", y in [" + approx(c.y0, 6) + ", " + approx(c.y1, 6) + ")";
     ImGui::TextWrapped("%s", what.c_str());
     std::string edges;
-    for (std::size_t i = 0; i < c.edges.size() && i < 24; ++i) edges += (i ? ", " : "") + std::to_string(c.edges[i]);
+    for (std::size_t i = 0; i < c.edges.size() && i < 24; ++i)
+      edges += (i ? ", " : "") + std::to_string(c.edges[i]);
     if (c.edges.size() > 24) edges += ", ...";
-    ImGui::TextWrapped("lists %zu edge%s: %s", c.edges.size(), c.edges.size() == 1 ? "" : "s", edges.c_str());
+    ImGui::TextWrapped("lists %zu edge%s: %s", c.edges.size(), c.edges.size() == 1 ? "" : "s",
+                       edges.c_str());
   } else if (hints) {
     ImGui::TextDisabled("Under the cursor");
-    ImGui::TextWrapped("%s", scene.cells().empty() ? "this method has no cells: it tests the edges in turn"
-                                                   : "hover over a cell to see the edges it lists");
+    ImGui::TextWrapped("%s", scene.cells().empty()
+                                 ? "this method has no cells: it tests the edges in turn"
+                                 : "hover over a cell to see the edges it lists");
   }
   if (!probe) {
     if (hints) {
@@ -252,8 +273,9 @@ void inspectorContents(Model& model, bool hints) {
   ImGui::Spacing();
   ImGui::TextColored(im(textColourOf(pal, probe->trace.result)), "Placed point: %s",
                      std::string(toString(probe->trace.result)).c_str());
-  const auto lines = describeTrace(probe->trace, probe->point, scene.polygon(),
-                                   scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
+  const auto lines =
+      describeTrace(probe->trace, probe->point, scene.polygon(),
+                    scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
   traceLines(lines, pal, textColourOf(pal, probe->trace.result));
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
@@ -268,8 +290,10 @@ void legendContents(Model& model) {
   const Stats2D& s = scene.stats();
   ImGui::Text("%s", std::string(toString(scene.method())).c_str());
   ImGui::SameLine();
-  if (s.cells) ImGui::TextDisabled("%s edges, %s cells", grouped(s.edges).c_str(), grouped(s.cells).c_str());
-  else ImGui::TextDisabled("%s edges", grouped(s.edges).c_str());
+  if (s.cells)
+    ImGui::TextDisabled("%s edges, %s cells", grouped(s.edges).c_str(), grouped(s.cells).c_str());
+  else
+    ImGui::TextDisabled("%s edges", grouped(s.edges).c_str());
   classRows(model, scene.counts(), scene.points().size(), false);
   const Method2D m = scene.method();
   const std::size_t base = baseEdgesPerCell(m);
@@ -297,14 +321,18 @@ void legendContents(Model& model) {
 
 // the legend alone, over the scene's lower right corner (panels hidden)
 void legendOverlay(Model& model, ScreenRect area) {
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f, static_cast<float>(area.hi.y) - 10.0f),
-                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  ImGui::SetNextWindowPos(
+      ImVec2(static_cast<float>(area.hi.x) - 10.0f, static_cast<float>(area.hi.y) - 10.0f),
+      ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   ImGui::SetNextWindowBgAlpha(0.82f);
   ImGui::Begin("Legend", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  if (model.dim == Dim::Two) legendContents(model);
-  else legendContents3(model);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  if (model.dim == Dim::Two)
+    legendContents(model);
+  else
+    legendContents3(model);
   ImGui::End();
 }
 
@@ -319,17 +347,21 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
   }
   const Palette& pal = paletteFor(model.settings.theme);
   float y = 10.0f;
-  auto banner = [&](const char* id, const std::string& text, Rgba colour, bool closable, double& until) {
+  auto banner = [&](const char* id, const std::string& text, Rgba colour, bool closable,
+                    double& until) {
     if (text.empty() || now > until) return;
-    const float w = std::min(static_cast<float>(area.size().x) - 40.0f, ImGui::GetFontSize() * 36.0f);
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.middle().x), y), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    const float w =
+        std::min(static_cast<float>(area.size().x) - 40.0f, ImGui::GetFontSize() * 36.0f);
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.middle().x), y), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0.0f), ImVec2(w, 400.0f));
     ImGui::SetNextWindowBgAlpha(0.95f);
     ImGui::PushStyleColor(ImGuiCol_Border, im(colour));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 1.5f);
     ImGui::Begin(id, nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::PushStyleColor(ImGuiCol_Text, im(colour));
     ImGui::TextWrapped("%s", text.c_str());
     ImGui::PopStyleColor();
@@ -347,7 +379,8 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
   if (!model.settings.showUi) return 0.0f;
-  return std::min(345.0f * model.settings.fontScale, std::max(300.0f, static_cast<float>(0.32 * window.x)));
+  return std::min(345.0f * model.settings.fontScale,
+                  std::max(300.0f, static_cast<float>(0.32 * window.x)));
 }
 
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
@@ -367,7 +400,8 @@ void scanAssets(UiState& ui) {
   for (const auto& e : std::filesystem::directory_iterator(ui.assetDir, ec)) {
     const std::string ext = e.path().extension().string();
     const std::string name = e.path().filename().string();
-    if ((ext == ".txt" || ext == ".off" || ext == ".obj") && name.find("points") == std::string::npos)
+    if ((ext == ".txt" || ext == ".off" || ext == ".obj") &&
+        name.find("points") == std::string::npos)
       ui.assets.push_back(e.path().string());
   }
   std::sort(ui.assets.begin(), ui.assets.end());
@@ -422,19 +456,24 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
     for (Dim d : {Dim::Two, Dim::Three}) {
       const bool on = model.dim == d;
       if (d == Dim::Three) ImGui::SameLine();
-      if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-      if (ImGui::Button(d == Dim::Two ? "2D: polygon" : "3D: polyhedron", ImVec2(half, 0.0f))) model.show(d);
+      if (on)
+        ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+      if (ImGui::Button(d == Dim::Two ? "2D: polygon" : "3D: polyhedron", ImVec2(half, 0.0f)))
+        model.show(d);
       if (on) ImGui::PopStyleColor();
     }
     ImGui::Separator();
     if (model.dim == Dim::Two) {
       if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) shapePanel(model, ui);
       if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodPanel(model, ui);
-      if (ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen)) pointsPanel(model, ui, model.scene2d);
+      if (ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen))
+        pointsPanel(model, ui, model.scene2d);
     } else {
       if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) shapePanel3(model, ui);
-      if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) methodPanel3(model, ui);
-      if (ImGui::CollapsingHeader("Slicing plane", ImGuiTreeNodeFlags_DefaultOpen)) slicePanel3(model);
+      if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen))
+        methodPanel3(model, ui);
+      if (ImGui::CollapsingHeader("Slicing plane", ImGuiTreeNodeFlags_DefaultOpen))
+        slicePanel3(model);
       if (ImGui::CollapsingHeader("Points")) pointsPanel(model, ui, model.scene3d());
     }
     if (ImGui::CollapsingHeader("View")) viewPanel(model, renderer, ui);
@@ -448,7 +487,6 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
       ImGui::TextDisabled("F fit, H hide panels, 1-3 method, Space spray");
     }
     ImGui::End();
-
   }
   const float rw = rightPanelWidth(model, window);
   if (rw > 0.0f) {
@@ -458,29 +496,37 @@ void drawUi(Model& model, Renderer& renderer, const SceneView& view, UiState& ui
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
-    if (model.dim == Dim::Two) legendContents(model);
-    else legendContents3(model);
+    if (model.dim == Dim::Two)
+      legendContents(model);
+    else
+      legendContents3(model);
     ImGui::Separator();
-    if (model.dim == Dim::Two) inspectorContents(model, true);
-    else inspectorContents3(model, true);
+    if (model.dim == Dim::Two)
+      inspectorContents(model, true);
+    else
+      inspectorContents3(model, true);
     ImGui::End();
   } else {
     legendOverlay(model, area);
-    const bool something = model.dim == Dim::Two
-                               ? model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value()
-                               : model.scene3d().hoveredCell() >= 0 || model.scene3d().pinnedCell() >= 0 ||
-                                     model.scene3d().probe().has_value();
+    const bool something =
+        model.dim == Dim::Two
+            ? model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value()
+            : model.scene3d().hoveredCell() >= 0 || model.scene3d().pinnedCell() >= 0 ||
+                  model.scene3d().probe().has_value();
     if (model.settings.showUi && something) {
-      const float iw = std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
+      const float iw =
+          std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
       ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
       ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, io.DisplaySize.y * 0.6f));
       ImGui::SetNextWindowBgAlpha(0.9f);
       ImGui::Begin("Inspector", nullptr,
-                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_AlwaysAutoResize |
-                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
-                       ImGuiWindowFlags_NoFocusOnAppearing);
-      if (model.dim == Dim::Two) inspectorContents(model, false);
-      else inspectorContents3(model, false);
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing);
+      if (model.dim == Dim::Two)
+        inspectorContents(model, false);
+      else
+        inspectorContents3(model, false);
       ImGui::End();
     }
   }
@@ -508,7 +554,8 @@ void drawLabels(Model& model, const SceneView& view) {
       }
       if (s.x < -200.0 || s.y < -50.0 || s.x > vp.x + 200.0 || s.y > vp.y + 50.0) continue;
       const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-      const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x), std::round(static_cast<float>(s.y) - 0.5f * size.y));
+      const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x),
+                      std::round(static_cast<float>(s.y) - 0.5f * size.y));
       for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
         dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, l.text.c_str());
       dl->AddText(at, packAbgr(l.colour), l.text.c_str());

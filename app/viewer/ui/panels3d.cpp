@@ -36,8 +36,8 @@ std::string listOf(const std::vector<std::uint32_t>& v, std::size_t most) {
 
 // what a cell is and lists
 void cellText(const Cell3D& c) {
-  std::string what = "cell " + std::to_string(c.index) + " on cube face " + kCubeFaces[c.cubeFace] + ", (" +
-                     std::to_string(c.i) + ", " + std::to_string(c.j) + ")";
+  std::string what = "cell " + std::to_string(c.index) + " on cube face " + kCubeFaces[c.cubeFace] +
+                     ", (" + std::to_string(c.i) + ", " + std::to_string(c.j) + ")";
   if (c.level > 0) what += ", quadtree level " + std::to_string(c.level);
   ImGui::TextWrapped("%s", what.c_str());
   ImGui::TextWrapped("lists %zu face%s: %s", c.faces.size(), c.faces.size() == 1 ? "" : "s",
@@ -50,7 +50,8 @@ void shapePanel3(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   const ConvexPolyhedron& p = scene.polyhedron();
   ImGui::TextWrapped("%s", scene.label().c_str());
-  ImGui::TextDisabled("%s triangles, %s vertices", grouped(p.faceCount()).c_str(), grouped(p.vertexCount()).c_str());
+  ImGui::TextDisabled("%s triangles, %s vertices", grouped(p.faceCount()).c_str(),
+                      grouped(p.vertexCount()).c_str());
   std::string notes;
   if (p.inputFaces() != p.faceCount()) notes += grouped(p.inputFaces()) + " input faces; ";
   if (p.mergedVertices()) notes += grouped(p.mergedVertices()) + " vertices merged; ";
@@ -64,16 +65,18 @@ void shapePanel3(Model& model, UiState& ui) {
   const int kinds = static_cast<int>(std::size(kAllPolyhedronKinds));
   ui.generator3Kind = std::clamp(ui.generator3Kind, 0, kinds - 1);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-  if (ImGui::BeginCombo("##kind3", std::string(toString(kAllPolyhedronKinds[ui.generator3Kind])).c_str())) {
+  if (ImGui::BeginCombo("##kind3",
+                        std::string(toString(kAllPolyhedronKinds[ui.generator3Kind])).c_str())) {
     for (int k = 0; k < kinds; ++k)
-      if (ImGui::Selectable(std::string(toString(kAllPolyhedronKinds[k])).c_str(), k == ui.generator3Kind))
+      if (ImGui::Selectable(std::string(toString(kAllPolyhedronKinds[k])).c_str(),
+                            k == ui.generator3Kind))
         ui.generator3Kind = k;
     ImGui::EndCombo();
   }
   ImGui::SameLine();
   auto generate = [&] {
-    if (scene.generate(kAllPolyhedronKinds[ui.generator3Kind], static_cast<std::size_t>(ui.generator3N),
-                       ui.generator3Seed))
+    if (scene.generate(kAllPolyhedronKinds[ui.generator3Kind],
+                       static_cast<std::size_t>(ui.generator3N), ui.generator3Seed))
       model.requestFit();
   };
   if (ImGui::Button("Generate##3", ImVec2(-1.0f, 0.0f))) generate();
@@ -95,14 +98,16 @@ void shapePanel3(Model& model, UiState& ui) {
 void methodPanel3(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   for (Method3D m : kAllMethods3D) {
-    if (ImGui::RadioButton(std::string(toString(m)).c_str(), scene.method() == m)) scene.setMethod(m);
+    if (ImGui::RadioButton(std::string(toString(m)).c_str(), scene.method() == m))
+      scene.setMethod(m);
     ImGui::SameLine(ImGui::GetFontSize() * 7.0f);
     ImGui::TextDisabled("%s", complexityOf(m));
   }
   if (scene.method() == Method3D::Cubemap) {
     bool automatic = scene.resolution() == 0;
     int g = static_cast<int>(scene.effectiveResolution());
-    if (ImGui::Checkbox("auto##g", &automatic)) scene.setResolution(automatic ? 0 : static_cast<std::uint32_t>(g));
+    if (ImGui::Checkbox("auto##g", &automatic))
+      scene.setResolution(automatic ? 0 : static_cast<std::uint32_t>(g));
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderInt("##g", &g, 1, 256, "G = %d",
@@ -113,13 +118,17 @@ void methodPanel3(Model& model, UiState& ui) {
   if (ImGui::BeginTable("stats3", 2, ImGuiTableFlags_SizingStretchProp)) {
     statRow("faces", grouped(s.faces) + " (" + grouped(s.vertices) + " vertices)");
     if (s.cells) {
-      statRow("cells", grouped(s.cells) + (s.nodes > s.cells ? " (" + grouped(s.nodes) + " nodes)" : ""));
-      statRow("grid", "G = " + std::to_string(s.resolution) +
-                          (s.maxLevel > 0 ? ", quadtree to level " + std::to_string(s.maxLevel) : ""));
-      statRow("faces per cell", "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3));
+      statRow("cells",
+              grouped(s.cells) + (s.nodes > s.cells ? " (" + grouped(s.nodes) + " nodes)" : ""));
+      statRow("grid",
+              "G = " + std::to_string(s.resolution) +
+                  (s.maxLevel > 0 ? ", quadtree to level " + std::to_string(s.maxLevel) : ""));
+      statRow("faces per cell",
+              "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3));
       if (s.crowdedCells) statRow("crowded cells", grouped(s.crowdedCells) + " (walk)");
     }
-    if (!s.centred && scene.method() != Method3D::Halfspace) statRow("centre", "none: every face is tested");
+    if (!s.centred && scene.method() != Method3D::Halfspace)
+      statRow("centre", "none: every face is tested");
     if (scene.cellsOmitted()) statRow("drawing", "too many cells to draw");
     statRow("memory", bytesText(s.bytes) + " (" + approx(s.bytesPerFace, 3) + " B/face)");
     statRow("build", approx(s.buildSeconds * 1e3, 3) + " ms");
@@ -140,8 +149,9 @@ void methodPanel3(Model& model, UiState& ui) {
     }
   }
   if (ImGui::Button("Compare all methods##3", ImVec2(-1.0f, 0.0f))) ui.compare3 = scene.compare();
-  help("Times every method's batch locate on the current spray (at most ~0.1 s each) and checks "
-       "that all answer the same.");
+  help(
+      "Times every method's batch locate on the current spray (at most ~0.1 s each) and checks "
+      "that all answer the same.");
   if (!ui.compare3.empty() &&
       ImGui::BeginTable("compare3", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("method");
@@ -158,15 +168,20 @@ void methodPanel3(Model& model, UiState& ui) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(std::string(toString(r.method)).c_str());
       ImGui::TableNextColumn();
-      if (r.nsPerPoint == best) ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
-      else ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
+      if (r.nsPerPoint == best)
+        ImGui::TextColored(im(pal.positive), "%s", nsText(r.nsPerPoint).c_str());
+      else
+        ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(), bytesText(r.bytes).c_str());
+        ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(),
+                          bytesText(r.bytes).c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%s ms", approx(r.buildMs, 2).c_str());
       ImGui::TableNextColumn();
-      if (r.disagreements == 0) ImGui::TextColored(im(pal.positive), "yes");
-      else ImGui::TextColored(im(pal.negative), "%zu differ", r.disagreements);
+      if (r.disagreements == 0)
+        ImGui::TextColored(im(pal.positive), "yes");
+      else
+        ImGui::TextColored(im(pal.negative), "%zu differ", r.disagreements);
     }
     ImGui::EndTable();
   }
@@ -189,7 +204,8 @@ void slicePanel3(Model& model) {
   const double margin = 0.15 * (b.hi[s.axis] - b.lo[s.axis]);
   double lo = b.lo[s.axis] - margin, hi = b.hi[s.axis] + margin;
   ImGui::SetNextItemWidth(-1.0f);
-  if (ImGui::SliderScalar("##offset", ImGuiDataType_Double, &s.offset, &lo, &hi, "%.6g")) changed = true;
+  if (ImGui::SliderScalar("##offset", ImGuiDataType_Double, &s.offset, &lo, &hi, "%.6g"))
+    changed = true;
   if (changed) scene.setSlice(s);
   ImGui::Checkbox("show the plane and its section", &model.settings.view3d.showSlice);
   ImGui::TextDisabled("click on the plane to place a point");
@@ -215,8 +231,10 @@ void legendContents3(Model& model) {
   const Stats3D& s = scene.stats();
   ImGui::Text("%s", std::string(toString(scene.method())).c_str());
   ImGui::SameLine();
-  if (s.cells) ImGui::TextDisabled("%s faces, %s cells", grouped(s.faces).c_str(), grouped(s.cells).c_str());
-  else ImGui::TextDisabled("%s faces", grouped(s.faces).c_str());
+  if (s.cells)
+    ImGui::TextDisabled("%s faces, %s cells", grouped(s.faces).c_str(), grouped(s.cells).c_str());
+  else
+    ImGui::TextDisabled("%s faces", grouped(s.faces).c_str());
   classRows(model, scene.counts(), scene.points().size(), false);
   if (s.cells && model.settings.view3d.showCube && model.settings.view3d.showTints) {
     swatchBox(cellTint(pal, 2, kBaseFacesPerCell, false), withAlpha(pal.extraEdges, 0.8f));
@@ -245,8 +263,9 @@ void inspectorContents3(Model& model, bool hints) {
     cellText(cells[static_cast<std::size_t>(scene.hoveredCell())]);
   } else if (hints) {
     ImGui::TextDisabled("Under the cursor");
-    ImGui::TextWrapped("%s", cells.empty() ? "this method has no cells"
-                                           : "hover over the cube to see a cell's pyramid and its faces");
+    ImGui::TextWrapped("%s", cells.empty()
+                                 ? "this method has no cells"
+                                 : "hover over the cube to see a cell's pyramid and its faces");
   }
   if (scene.pinnedCell() >= 0) {
     ImGui::Spacing();
@@ -266,7 +285,8 @@ void inspectorContents3(Model& model, bool hints) {
   ImGui::Spacing();
   ImGui::TextColored(im(textColourOf(pal, probe->trace.result)), "Placed point: %s",
                      std::string(toString(probe->trace.result)).c_str());
-  traceLines(describeTrace3D(probe->trace, probe->point), pal, textColourOf(pal, probe->trace.result));
+  traceLines(describeTrace3D(probe->trace, probe->point), pal,
+             textColourOf(pal, probe->trace.result));
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
   if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());

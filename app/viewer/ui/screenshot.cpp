@@ -6,7 +6,6 @@
 #include <ctime>
 #include <vector>
 
-
 #include "gl/gl.hpp"
 #include "ui/png_write.hpp"
 
@@ -14,10 +13,12 @@ namespace convexloc::viewer {
 
 std::string saveScreenshot(const std::string& path, int width, int height) {
   if (width <= 0 || height <= 0) return "nothing to capture: the window has no pixels";
-  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) *
+                                 static_cast<std::size_t>(height) * 3);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-  if (GLenum e = glGetError(); e != GL_NO_ERROR) return "glReadPixels failed (GL error " + std::to_string(e) + ")";
+  if (GLenum e = glGetError(); e != GL_NO_ERROR)
+    return "glReadPixels failed (GL error " + std::to_string(e) + ")";
   // GL's rows start at the bottom; PNG's at the top
   if (!writePngRgb(path.c_str(), width, height, rgb.data(), true))
     return path + ": cannot be written (" + std::strerror(errno) + ")";

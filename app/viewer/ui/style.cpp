@@ -4,13 +4,15 @@
 #include <cmath>
 #include <filesystem>
 
-#include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 namespace convexloc::viewer {
 namespace {
 
-ImVec4 im(Rgba c) { return {c.r, c.g, c.b, c.a}; }
+ImVec4 im(Rgba c) {
+  return {c.r, c.g, c.b, c.a};
+}
 
 // places a font may be installed (Debian's fonts-dejavu-core first)
 constexpr const char* kFontFiles[] = {
@@ -23,8 +25,10 @@ constexpr const char* kFontFiles[] = {
 
 void applyStyle(Theme theme, float scale) {
   ImGuiStyle style;
-  if (theme == Theme::Dark) ImGui::StyleColorsDark(&style);
-  else ImGui::StyleColorsLight(&style);
+  if (theme == Theme::Dark)
+    ImGui::StyleColorsDark(&style);
+  else
+    ImGui::StyleColorsLight(&style);
   style.WindowRounding = 6.0f;
   style.FrameRounding = 4.0f;
   style.GrabRounding = 4.0f;

@@ -8,7 +8,6 @@
 
 namespace convexloc::viewer {
 
-
 void swatchDisc(Rgba c, float radius, Rgba rim) {
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const float h = ImGui::GetTextLineHeight();
@@ -64,7 +63,8 @@ void help(const char* text) {
 std::string percent(std::size_t part, std::size_t whole) {
   if (!whole) return "";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
+  std::snprintf(buf, sizeof buf, "%.1f%%",
+                100.0 * static_cast<double>(part) / static_cast<double>(whole));
   return buf;
 }
 
@@ -78,8 +78,8 @@ void statRow(const char* key, const std::string& value) {
 
 void fileOpen(Model& model, UiState& ui, const char* hint) {
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3.0f * ImGui::GetStyle().FramePadding.x);
-  const bool enter = ImGui::InputTextWithHint("##path", hint, ui.path,
-                                              sizeof ui.path, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter = ImGui::InputTextWithHint("##path", hint, ui.path, sizeof ui.path,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if ((ImGui::Button("Open") || enter) && ui.path[0]) model.open(ui.path);
   if (!model.recent.empty() || !ui.assets.empty()) {
@@ -101,7 +101,6 @@ void fileOpen(Model& model, UiState& ui, const char* hint) {
       ImGui::EndCombo();
     }
   }
-
 }
 
 void gallery(Model& model, bool solid) {
@@ -126,11 +125,16 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
   for (std::size_t i = 0; i < lines.size() && i < kMaxLines; ++i) {
     const TraceLine& l = lines[i];
     Rgba c = pal.text;
-    if (l.kind == TraceLine::Positive) c = pal.positive;
-    else if (l.kind == TraceLine::Negative) c = pal.negative;
-    else if (l.kind == TraceLine::Zero) c = pal.zero;
-    else if (l.kind == TraceLine::Result) c = resultColour;
-    else if (l.kind == TraceLine::Heading) c = pal.textMuted;
+    if (l.kind == TraceLine::Positive)
+      c = pal.positive;
+    else if (l.kind == TraceLine::Negative)
+      c = pal.negative;
+    else if (l.kind == TraceLine::Zero)
+      c = pal.zero;
+    else if (l.kind == TraceLine::Result)
+      c = resultColour;
+    else if (l.kind == TraceLine::Heading)
+      c = pal.textMuted;
     ImGui::PushStyleColor(ImGuiCol_Text, im(c));
     ImGui::TextWrapped("%s", l.text.c_str());
     ImGui::PopStyleColor();
@@ -141,7 +145,8 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
   }
 }
 
-void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total, bool checkboxes) {
+void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total,
+               bool checkboxes) {
   const Palette& pal = paletteFor(model.settings.theme);
   const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
   const float r = 0.27f * ImGui::GetTextLineHeight();
@@ -151,7 +156,8 @@ void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size
     if (checkboxes) {
       bool s = shown;
       if (ImGui::Checkbox("##show", &s))
-        model.settings.visibleMask = s ? model.settings.visibleMask | classBit(l) : model.settings.visibleMask & ~classBit(l);
+        model.settings.visibleMask = s ? model.settings.visibleMask | classBit(l)
+                                       : model.settings.visibleMask & ~classBit(l);
       ImGui::SameLine();
     }
     swatchDisc(shown ? colourOf(pal, l) : withAlpha(colourOf(pal, l), 0.25f), r, pal.rim);

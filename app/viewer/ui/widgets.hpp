@@ -15,8 +15,12 @@
 
 namespace convexloc::viewer {
 
-inline ImVec4 im(Rgba c) { return {c.r, c.g, c.b, c.a}; }
-inline ImU32 u32(Rgba c) { return packAbgr(c); }
+inline ImVec4 im(Rgba c) {
+  return {c.r, c.g, c.b, c.a};
+}
+inline ImU32 u32(Rgba c) {
+  return packAbgr(c);
+}
 
 // a small disc, square or line sample in the text flow, as in a legend
 void swatchDisc(Rgba c, float radius, Rgba rim);
@@ -35,7 +39,8 @@ void gallery(Model& model, bool solid);
 // a trace, one coloured line per step
 void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour);
 // the class legend rows (disc, name, count) and the counts' visibility check boxes
-void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total, bool checkboxes);
+void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total,
+               bool checkboxes);
 
 // === Points: spray settings and buttons, counts, filters, point size (2D and 3D alike)
 template <class Scene>
@@ -43,7 +48,8 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::SliderInt("##count", &ui.sprayCount, 1000, 1000000, "%d points",
                    ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  const float quarter = 0.25f * (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
+  const float quarter =
+      0.25f * (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
   const int quick[4] = {1000, 10000, 100000, 1000000};
   const char* quickName[4] = {"1e3", "1e4", "1e5", "1e6"};
   for (int i = 0; i < 4; ++i) {
@@ -56,12 +62,14 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
   if (ImGui::RadioButton("uniform in the box", !ui.sprayNear)) ui.sprayNear = false;
   ImGui::SameLine();
   if (ImGui::RadioButton("near the boundary", ui.sprayNear)) ui.sprayNear = true;
-  help("Uniform: in the bounding box grown by 10% on each side. Near the boundary: core's hard "
-       "cases: vertices, points exactly on edges or faces, one ulp off, a hair inside or outside.");
+  help(
+      "Uniform: in the bounding box grown by 10% on each side. Near the boundary: core's hard "
+      "cases: vertices, points exactly on edges or faces, one ulp off, a hair inside or outside.");
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
   ImGui::InputScalar("seed##spray", ImGuiDataType_U64, &ui.spraySeed);
   ImGui::SameLine();
-  if (ImGui::Button("Spray")) scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
+  if (ImGui::Button("Spray"))
+    scene.spray({static_cast<std::size_t>(ui.sprayCount), ui.spraySeed, ui.sprayNear});
   ImGui::SameLine();
   if (ImGui::Button("Clear")) scene.clearSpray();
 
