@@ -411,7 +411,10 @@ void handleKeys(Model& model, UiState& ui) {
   if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) ui.screenshotRequested = true;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) model.requestFit();
-  if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) model.settings.showUi = !model.settings.showUi;
+  if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) {
+    model.settings.showUi = !model.settings.showUi;
+    model.requestFit();  // the scene's area changed
+  }
   if (ImGui::IsKeyPressed(GLFW_KEY_T, false))
     model.settings.theme = model.settings.theme == Theme::Dark ? Theme::Light : Theme::Dark;
   const bool space = ImGui::IsKeyPressed(GLFW_KEY_SPACE, false);

@@ -150,9 +150,13 @@ void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size
   const Palette& pal = paletteFor(model.settings.theme);
   const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
   const float r = 0.27f * ImGui::GetTextLineHeight();
+  // name, count and share in columns that fit their text (auto-sized windows too)
+  if (!ImGui::BeginTable("classes", total ? 3 : 1, ImGuiTableFlags_SizingFixedFit)) return;
   for (Location l : order) {
     const bool shown = (model.settings.visibleMask & classBit(l)) != 0;
     ImGui::PushID(static_cast<int>(l));
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
     if (checkboxes) {
       bool s = shown;
       if (ImGui::Checkbox("##show", &s))
@@ -161,16 +165,21 @@ void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size
       ImGui::SameLine();
     }
     swatchDisc(shown ? colourOf(pal, l) : withAlpha(colourOf(pal, l), 0.25f), r, pal.rim);
-    const std::size_t k = counts[static_cast<std::size_t>(l)];
+    ImGui::TextUnformatted(std::string(toString(l)).c_str());
     if (total) {
-      ImGui::Text("%-9s %s", std::string(toString(l)).c_str(), grouped(k).c_str());
-      ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("100.0%").x);
+      const std::size_t k = counts[static_cast<std::size_t>(l)];
+      ImGui::TableNextColumn();
+      // right-aligned counts
+      const std::string count = grouped(k);
+      const float width = ImGui::CalcTextSize(grouped(total).c_str()).x;
+      ImGui::SetCursorPosX(ImGui::GetCursorPosX() + width - ImGui::CalcTextSize(count.c_str()).x);
+      ImGui::TextUnformatted(count.c_str());
+      ImGui::TableNextColumn();
       ImGui::TextDisabled("%s", percent(k, total).c_str());
-    } else {
-      ImGui::Text("%s", std::string(toString(l)).c_str());
     }
     ImGui::PopID();
   }
+  ImGui::EndTable();
 }
 
 }  // namespace convexloc::viewer
