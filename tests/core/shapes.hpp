@@ -60,6 +60,7 @@ inline constexpr std::size_t full = 100000, fewer = 30000, few = 12000;
 // the rest (large N, where the O(N) reference and halfplane dominate, and extreme magnitudes,
 // where core's exact fallback does); adversarial points come on top for every shape.
 inline std::vector<ShapeCase> buildCases() {
+  using convexloc::generatePolygon;
   using convexloc::PolygonKind;
   std::vector<ShapeCase> out;
   for (PolygonKind kind : convexloc::kAllPolygonKinds) {
@@ -96,6 +97,10 @@ inline std::vector<ShapeCase> buildCases() {
   // a 17-gon rounded into the subnormal range, then made strictly convex again
   add("subnormal_17gon", ref::hull(scaled(regular(17), -1066)), fewer);
   add("tiny_1e_300", scaled(regular(17), -997), fewer);
+  // differences rounded as normal numbers, their products subnormal: where a filter without
+  // an underflow guard goes wrong
+  add("products_subnormal_2e_537", scaled(regular(17), -537), few);
+  add("products_subnormal_2e_528", scaled(generatePolygon(PolygonKind::Random, 17, 3), -528), few);
   add("huge_1e300", scaled(regular(17), 997), fewer);
   add("huge_near_max", scaled(regular(17), 1022), fewer);
   add("span_1e_150_1e150", {{0, 0}, {1e-150, 0}, {1e150, 1e150}, {0, 1e-150}});
