@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs, builds (Release) and runs the main job: classifies the shipped example points
-# against the shipped hexagon with every method, and shows what the subdivision looks like.
+# Installs, builds (Release) and runs the main job: a short exact classification in the
+# terminal, then convexloc-viewer on its default scene. Without a display the viewer says
+# so and renders the default scene to convexloc-viewer.png through Xvfb instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -21,5 +22,10 @@ for m in halfplane wedge slab uniform polar; do
   printf '   %-10s %s\n' "$m" "$("$bin" classify "$shape" "$points" --method "$m" | tr '\n' ' ')"
 done
 echo
-echo "== the polar subdivision behind it:"
+viewer=build/app/viewer/convexloc-viewer
+if [[ -x $viewer ]]; then
+  echo "== opening convexloc-viewer on its default scene (close the window to finish)"
+  exec "$viewer" "$@"
+fi
+echo "== the viewer was not built (CONVEXLOC_BUILD_VIEWER=OFF); the polar subdivision instead:"
 "$bin" info "$shape" --method polar
