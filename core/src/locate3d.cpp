@@ -2,6 +2,7 @@
 #include "convexloc/locate3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -465,6 +466,43 @@ bool onCubeFace(const Cone& k, int face, Poly& P) {
   return true;
 }
 
+// The bounding box, in (s, t) of cube face `face`, of face t's projection when all three
+// vertices lie strictly in front of that cube face (then the projection is the triangle of
+// the projected vertices), grown by far more than the rounding of their coordinates; as a
+// polygon (corners 0 and 2 are the low and high ones). False otherwise.
+bool projectedBox(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, int face, Poly& B) {
+  const int a = face / 2, u = (a + 1) % 3, w = (a + 2) % 3;
+  const double sigma = (face & 1) ? -1.0 : 1.0;
+  double lo[2] = {0, 0}, hi[2] = {0, 0}, big = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]];
+    const double d[3] = {p.x - c.x, p.y - c.y, p.z - c.z};
+    const double major = sigma * d[a];
+    if (!(major > 0)) return false;
+    const double st[2] = {d[u] / major, d[w] / major};
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = i ? std::min(lo[k], st[k]) : st[k];
+      hi[k] = i ? std::max(hi[k], st[k]) : st[k];
+      big = std::max(big, std::fabs(st[k]));
+    }
+  }
+  if (!(big < 0x1p40)) return false;  // also false for NaN
+  const double grow = 0x1p-50 * (1 + big);
+  B.n = 4;
+  B.p[0] = {lo[0] - grow, lo[1] - grow};
+  B.p[1] = {hi[0] + grow, lo[1] - grow};
+  B.p[2] = {hi[0] + grow, hi[1] + grow};
+  B.p[3] = {lo[0] - grow, hi[1] + grow};
+  return true;
+}
+
+// Narrows [first, last] to the cells, at the level with K = (cells per side) / 2, whose
+// range of one coordinate grown by kReach meets [lo, hi] (empty when first > last).
+inline void cellRange(double lo, double hi, double K, std::int64_t& first, std::int64_t& last) {
+  first = std::max(first, static_cast<std::int64_t>(std::ceil((lo - kReach + 1) * K)) - 1);
+  last = std::min(last, static_cast<std::int64_t>(std::floor((hi + kReach + 1) * K)));
+}
+
 // Calls cell(i, j) for every cell at the level with K = (cells per side) / 2, within the
 // index window [i0, i1] x [j0, j1], whose square grown by kReach meets P.
 template <class F>
@@ -475,8 +513,8 @@ void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1, std::i
     tmin = std::min(tmin, P.p[k].y);
     tmax = std::max(tmax, P.p[k].y);
   }
-  const std::int64_t jlo = std::max(j0, static_cast<std::int64_t>(std::ceil((tmin - kReach + 1) * K)) - 1);
-  const std::int64_t jhi = std::min(j1, static_cast<std::int64_t>(std::floor((tmax + kReach + 1) * K)));
+  std::int64_t jlo = j0, jhi = j1;
+  cellRange(tmin, tmax, K, jlo, jhi);
   for (std::int64_t j = jlo; j <= jhi; ++j) {
     const double ta = -1 + static_cast<double>(j) / K - kReach;
     const double tb = -1 + static_cast<double>(j + 1) / K + kReach;
@@ -495,8 +533,8 @@ void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1, std::i
         }
     }
     if (lo > hi) continue;
-    const std::int64_t ilo = std::max(i0, static_cast<std::int64_t>(std::ceil((lo - kReach + 1) * K)) - 1);
-    const std::int64_t ihi = std::min(i1, static_cast<std::int64_t>(std::floor((hi + kReach + 1) * K)));
+    std::int64_t ilo = i0, ihi = i1;
+    cellRange(lo, hi, K, ilo, ihi);
     for (std::int64_t i = ilo; i <= ihi; ++i) cell(i, j);
   }
 }
@@ -635,45 +673,119 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
     }
     entries_.swap(kept);
   };
-  std::vector<std::uint32_t> child[4];
+  // appends the 4 children of `node` (cell i, j at `level` - 1) with their lists; queues the
+  // crowded ones; returns the index of the first
+  auto addChildren = [&](std::uint32_t node, std::int64_t i0, std::int64_t j0, std::uint8_t face, int level,
+                         std::vector<std::uint32_t> (&lists)[4]) {
+    const std::uint32_t first = static_cast<std::uint32_t>(nodes_.size());
+    for (int c = 0; c < 4; ++c) {
+      nodes_.push_back({static_cast<std::uint32_t>(entries_.size()), static_cast<std::uint32_t>(lists[c].size())});
+      entries_.insert(entries_.end(), lists[c].begin(), lists[c].end());
+      if (lists[c].size() > kCrowdedCell3D)
+        queue.push_back({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+                         static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
+    }
+    nodes_[node] = {first, kInner};
+    return first;
+  };
+  std::vector<std::uint32_t> small, large;  // faces placed by their boxes, and the others
+  std::vector<std::array<double, 4>> smallBox;
+  std::vector<Poly> largePoly;
+  std::vector<std::uint32_t> lists[kMaxLevel + 1][4];
   Cone k;
-  Poly P;
+  Poly P, B;
+  // the box (s0, s1, t0, t1) as a polygon
+  auto boxPoly = [&](const std::array<double, 4>& b) {
+    B.n = 4;
+    B.p[0] = {b[0], b[2]}, B.p[1] = {b[1], b[2]}, B.p[2] = {b[1], b[3]}, B.p[3] = {b[0], b[3]};
+    return B;
+  };
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const Pending q = queue[head];
     if (q.level >= depth_) continue;
     const Node parent = nodes_[q.node];
-    for (auto& list : child) list.clear();
-    const double K = std::ldexp(g_ / 2.0, q.level + 1);
-    const std::int64_t i0 = 2 * static_cast<std::int64_t>(q.i), j0 = 2 * static_cast<std::int64_t>(q.j);
+    const double K1 = std::ldexp(g_ / 2.0, q.level + 1);
+    // sort the faces: a small face in front of the cube face goes by its box (a superset of
+    // its projection, so still conservative); others by their polygon
+    small.clear(), large.clear(), smallBox.clear(), largePoly.clear();
+    std::array<double, 4> all = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
     for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
       const std::uint32_t f = entries_[e];
-      if (!coneOf(v_, tri_[f], c_, scale, k) || !onCubeFace(k, q.face, P)) continue;
-      rasterise(P, K, i0, i0 + 1, j0, j0 + 1, [&](std::int64_t i, std::int64_t j) {
-        child[(j - j0) * 2 + (i - i0)].push_back(f);
-      });
+      if (projectedBox(v_, tri_[f], c_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
+          B.p[2].y - B.p[0].y <= 1 / K1) {
+        small.push_back(f);
+        smallBox.push_back({B.p[0].x, B.p[2].x, B.p[0].y, B.p[2].y});
+        all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x), std::min(all[2], B.p[0].y),
+               std::max(all[3], B.p[2].y)};
+      } else if (coneOf(v_, tri_[f], c_, scale, k) && onCubeFace(k, q.face, P)) {
+        large.push_back(f);
+        largePoly.push_back(P);
+      }
     }
-    std::size_t sum = 0, most = 0;
-    for (auto& list : child) {
-      sum += list.size();
-      most = std::max(most, list.size());
+    // a chain: while all the small faces stay in one cell, descend several levels at once;
+    // only the large faces are placed in the cells beside the chain
+    int deepest = q.level;
+    if (small.size() > kCrowdedCell3D) {
+      for (int level = q.level + 1; level <= depth_; ++level) {
+        const double K = std::ldexp(g_ / 2.0, level);
+        const std::int64_t n = static_cast<std::int64_t>(g_) << level;
+        std::int64_t i0 = 0, i1 = n - 1, j0 = 0, j1 = n - 1;
+        cellRange(all[0], all[1], K, i0, i1);
+        cellRange(all[2], all[3], K, j0, j1);
+        if (i0 != i1 || j0 != j1) break;
+        deepest = level;
+      }
     }
-    // a child keeping every face while the others share many: a vertex all of them meet,
-    // which no split separates; search it by a walk instead
-    if (most == parent.count && sum - most > parent.count / 2) continue;
-    const std::size_t grown = live + 4 * sizeof(Node) + (sum - parent.count) * sizeof(std::uint32_t);
-    if (grown > budget) break;
-    if (entries_.size() + sum > std::numeric_limits<std::uint32_t>::max()) break;
-    const std::uint32_t first = static_cast<std::uint32_t>(nodes_.size());
-    for (int c = 0; c < 4; ++c) {
-      nodes_.push_back({static_cast<std::uint32_t>(entries_.size()), static_cast<std::uint32_t>(child[c].size())});
-      entries_.insert(entries_.end(), child[c].begin(), child[c].end());
-      if (child[c].size() > kCrowdedCell3D)
-        queue.push_back({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
-                         static_cast<std::uint32_t>(j0 + (c >> 1)), q.face, static_cast<std::uint8_t>(q.level + 1)});
+    const int levels = deepest >= q.level + 2 ? deepest - q.level : 1;
+    std::size_t added = 0;
+    std::int64_t ci = q.i, cj = q.j;  // the chain's cell at the level above
+    for (int l = 0; l < levels; ++l) {
+      const int level = q.level + 1 + l;
+      const double K = std::ldexp(g_ / 2.0, level);
+      const std::int64_t i0 = 2 * ci, j0 = 2 * cj;
+      for (auto& list : lists[l]) list.clear();
+      auto placer = [&](std::uint32_t f) {
+        return [&, f](std::int64_t i, std::int64_t j) { lists[l][(j - j0) * 2 + (i - i0)].push_back(f); };
+      };
+      for (std::size_t m = 0; m < large.size(); ++m) rasterise(largePoly[m], K, i0, i0 + 1, j0, j0 + 1, placer(large[m]));
+      if (l + 1 == levels) {
+        for (std::size_t m = 0; m < small.size(); ++m) rasterise(boxPoly(smallBox[m]), K, i0, i0 + 1, j0, j0 + 1, placer(small[m]));
+      } else {
+        // the chain's cell at this level: the one cell every small box meets
+        std::int64_t i1 = i0 + 1, j1 = j0 + 1, ii = i0, jj = j0;
+        cellRange(all[0], all[1], K, ii, i1);
+        cellRange(all[2], all[3], K, jj, j1);
+        ci = ii, cj = jj;
+        lists[l][(cj - j0) * 2 + (ci - i0)].clear();  // an inner node: its faces go deeper
+      }
+      for (auto& list : lists[l]) added += list.size();
     }
-    nodes_[q.node] = {first, kInner};
+    if (levels == 1) {
+      // an ordinary split: stop where a child keeps every face while the others share many
+      // (a vertex all of them meet, which no split separates; a walk searches it instead)
+      std::size_t most = 0;
+      for (auto& list : lists[0]) most = std::max(most, list.size());
+      if (most == parent.count && added - most > parent.count / 2) continue;
+    }
+    const std::size_t grown = live + 4 * sizeof(Node) * levels + added * sizeof(std::uint32_t) -
+                              parent.count * sizeof(std::uint32_t);
+    if (grown > budget || entries_.size() + added > std::numeric_limits<std::uint32_t>::max()) break;
+    // commit, top down; an inner chain cell gets its children at the next level
+    std::uint32_t node = q.node;
+    ci = q.i, cj = q.j;
+    for (int l = 0; l < levels; ++l) {
+      const int level = q.level + 1 + l;
+      const std::uint32_t first = addChildren(node, 2 * ci, 2 * cj, q.face, level, lists[l]);
+      if (l + 1 == levels) break;
+      const double K = std::ldexp(g_ / 2.0, level);
+      std::int64_t i1 = 2 * ci + 1, j1 = 2 * cj + 1, ii = 2 * ci, jj = 2 * cj;
+      cellRange(all[0], all[1], K, ii, i1);
+      cellRange(all[2], all[3], K, jj, j1);
+      node = first + static_cast<std::uint32_t>((jj - 2 * cj) * 2 + (ii - 2 * ci));
+      ci = ii, cj = jj;
+    }
     live = grown;
-    liveEntries = liveEntries + sum - parent.count;
+    liveEntries = liveEntries + added - parent.count;
     if (entries_.size() > 2 * liveEntries + (1u << 20)) compact();
   }
   compact();
