@@ -101,26 +101,28 @@ void stream(benchmark::State& state) {
 }
 
 template <class L>
-void registerMethod(const std::string& name, std::int64_t maxLocateN) {
+void registerMethod(const std::string& name, std::int64_t maxLocateN, std::int64_t maxBatchN) {
   for (std::int64_t n : kSizes) {
     if (n > maxLocateN) continue;
     benchmark::RegisterBenchmark(("Locate2D/" + name).c_str(), locateOne<L>)->Arg(n);
     benchmark::RegisterBenchmark(("Build2D/" + name).c_str(), build<L>)->Arg(n);
   }
-  for (std::int64_t n : {std::int64_t{8}, std::int64_t{64}, std::int64_t{1024}, std::int64_t{4096}})
+  for (std::int64_t n : {8, 64, 1024, 4096, 16384, 262144, 1048576}) {
+    if (n > maxBatchN) continue;
     for (int t : {1, 2})
       benchmark::RegisterBenchmark(("Batch2D/" + name).c_str(), locateBatch<L>)
           ->Arg(n)
           ->Threads(t)
           ->UseRealTime();
+  }
 }
 
 [[maybe_unused]] const bool registered = [] {
-  registerMethod<HalfplaneLocator>("halfplane", 16384);
-  registerMethod<WedgeLocator>("wedge", 1 << 20);
-  registerMethod<SlabLocator>("slab", 1 << 20);
-  registerMethod<UniformLocator>("uniform", 1 << 20);
-  registerMethod<PolarLocator>("polar", 1 << 20);
+  registerMethod<HalfplaneLocator>("halfplane", 16384, 64);
+  registerMethod<WedgeLocator>("wedge", 1 << 20, 4096);
+  registerMethod<SlabLocator>("slab", 1 << 20, 4096);
+  registerMethod<UniformLocator>("uniform", 1 << 20, 1 << 20);
+  registerMethod<PolarLocator>("polar", 1 << 20, 1 << 20);
   benchmark::RegisterBenchmark("Stream", stream)->Arg(1 << 16)->Arg(kBatchPoints);
   return true;
 }();
