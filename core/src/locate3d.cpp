@@ -578,6 +578,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   if (!centre || !std::isfinite(extent) || !(extent > 0)) {
     // no centre (a polyhedron thinner than the double grid), or one so vast that its
     // directions overflow: no cells; every query tests all faces
+    g_ = 0;
     buildSeconds_ = secondsSince(t0);
     return;
   }
@@ -602,6 +603,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   };
 
   // === the base grid: count, coarsen until it fits, fill
+  while (g_ > 1 && 6 * static_cast<std::size_t>(g_) * g_ * sizeof(Node) > budget) g_ /= 2;
   std::vector<std::uint32_t> count;
   for (;;) {
     depth_ = depthFor(g_);
@@ -617,6 +619,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
       });
     });
     if (!ok) {
+      g_ = 0;
       buildSeconds_ = secondsSince(t0);
       return;  // a direction overflowed: no cells, as above
     }
@@ -846,6 +849,10 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   sink.cell(face, level, X >> (depth_ - level), Y >> (depth_ - level), s, t);
   const Node leaf = nodes_[node];
   const std::uint32_t* first = entries_.data() + leaf.first;
+  if (leaf.count == 0) {
+    sink.fallback();  // cannot happen (every direction leaves through some face); be safe
+    return testAll(v_, tri_, p, sink);
+  }
   if (leaf.count <= kCrowdedCell3D) return testList(v_, tri_, first, first + leaf.count, p, sink);
   sink.crowded();
   const std::uint32_t exit = walkToExit(v_, tri_, nb_, c_, p, *first, 16 + leaf.count / 4, sink);

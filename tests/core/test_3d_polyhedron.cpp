@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include "convexloc/error.hpp"
 #include "convexloc/generate3d.hpp"
@@ -402,7 +401,6 @@ TEST(Generate3D, DegeneratePresetsAreWhatTheySay) {
   ConvexPolyhedron offset(generatePolyhedron(PolyhedronKind::Offset, 300, 1));
   EXPECT_GE(offset.bounds().lo.x, 1e9 - 2);
   ConvexPolyhedron coplanar(generatePolyhedron(PolyhedronKind::Coplanar, 1200, 1));
-  std::set<std::tuple<double, double, double>> normals;
   EXPECT_EQ(coplanar.faceCount(), 1200u);
 }
 

@@ -171,7 +171,7 @@ public:
   // the centre, when the polyhedron has one (else there are no cells and every query tests
   // all faces)
   std::optional<Vec3> centre() const noexcept;
-  // G, the base grid's cells per side on each cube face
+  // G, the base grid's cells per side on each cube face (0 when there are no cells)
   std::uint32_t resolution() const noexcept { return g_; }
   // half the side of the cube, centred on the centre, that cells() draws on (it encloses
   // the polyhedron)
