@@ -32,8 +32,10 @@ Vec3 normalised(Vec3 p) {
 void orientOutward(MeshData& mesh, Vec3 inside) {
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
     auto face = mesh.face(f);
-    if (orient3d(mesh.vertices[face[0]], mesh.vertices[face[1]], mesh.vertices[face[2]], inside) < 0)
-      std::reverse(mesh.indices.begin() + mesh.faceStart[f], mesh.indices.begin() + mesh.faceStart[f + 1]);
+    if (orient3d(mesh.vertices[face[0]], mesh.vertices[face[1]], mesh.vertices[face[2]], inside) <
+        0)
+      std::reverse(mesh.indices.begin() + mesh.faceStart[f],
+                   mesh.indices.begin() + mesh.faceStart[f + 1]);
   }
 }
 
@@ -69,7 +71,8 @@ MeshData geodesic(std::size_t nu, double r, Vec3 centre) {
     return mesh.addVertex({centre.x + r * u.x, centre.y + r * u.y, centre.z + r * u.z});
   };
   for (const Vec3& p : ico) place(p);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edgeStart;  // first point's index
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>
+      edgeStart;  // first point's index
   auto onEdge = [&](std::uint32_t a, std::uint32_t b, std::size_t k) -> std::uint32_t {
     // the k-th of nu steps from a to b
     if (k == 0) return a;
@@ -94,17 +97,23 @@ MeshData geodesic(std::size_t nu, double r, Vec3 centre) {
     const std::uint32_t A = face[0], B = face[1], C = face[2];
     // grid[(i, j)] for i + j <= nu: the point A + i/nu (B - A) + j/nu (C - A)
     grid.assign((nu + 1) * (nu + 1), 0);
-    auto at = [&](std::size_t i, std::size_t j) -> std::uint32_t& { return grid[i * (nu + 1) + j]; };
+    auto at = [&](std::size_t i, std::size_t j) -> std::uint32_t& {
+      return grid[i * (nu + 1) + j];
+    };
     for (std::size_t i = 0; i <= nu; ++i)
       for (std::size_t j = 0; i + j <= nu; ++j) {
-        if (j == 0) at(i, j) = onEdge(A, B, i);
-        else if (i == 0) at(i, j) = onEdge(A, C, j);
-        else if (i + j == nu) at(i, j) = onEdge(B, C, j);
+        if (j == 0)
+          at(i, j) = onEdge(A, B, i);
+        else if (i == 0)
+          at(i, j) = onEdge(A, C, j);
+        else if (i + j == nu)
+          at(i, j) = onEdge(B, C, j);
         else {
           const double u = static_cast<double>(i) / static_cast<double>(nu);
           const double w = static_cast<double>(j) / static_cast<double>(nu);
           const Vec3 a = ico[A], b = ico[B], c = ico[C];
-          at(i, j) = place({a.x + u * (b.x - a.x) + w * (c.x - a.x), a.y + u * (b.y - a.y) + w * (c.y - a.y),
+          at(i, j) = place({a.x + u * (b.x - a.x) + w * (c.x - a.x),
+                            a.y + u * (b.y - a.y) + w * (c.y - a.y),
                             a.z + u * (b.z - a.z) + w * (c.z - a.z)});
         }
       }
@@ -201,7 +210,8 @@ MeshData smallHull(std::span<const Vec3> points) {
   MeshData mesh;
   if (n < 4) return mesh;
   Vec3 inside{0, 0, 0};
-  for (const Vec3& p : points) inside = {inside.x + p.x / n, inside.y + p.y / n, inside.z + p.z / n};
+  for (const Vec3& p : points)
+    inside = {inside.x + p.x / n, inside.y + p.y / n, inside.z + p.z / n};
   std::vector<std::vector<std::uint32_t>> seen;
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = i + 1; j < n; ++j)
@@ -210,9 +220,12 @@ MeshData smallHull(std::span<const Vec3> points) {
         std::vector<std::uint32_t> on;
         for (std::uint32_t q = 0; q < n; ++q) {
           const int s = orient3d(points[i], points[j], points[k], points[q]);
-          if (s > 0) ++above;
-          else if (s < 0) ++below;
-          else on.push_back(q);
+          if (s > 0)
+            ++above;
+          else if (s < 0)
+            ++below;
+          else
+            on.push_back(q);
         }
         if ((above && below) || (!above && !below) || on.size() < 3) continue;
         if (std::find(seen.begin(), seen.end(), on) != seen.end()) continue;
@@ -227,7 +240,8 @@ MeshData smallHull(std::span<const Vec3> points) {
             if (q == ring.front() && ring.size() < on.size()) continue;
             bool left = true;
             for (std::uint32_t r : on)
-              if (r != p && r != q && orient3d(points[p], points[q], points[r], inside) <= 0) left = false;
+              if (r != p && r != q && orient3d(points[p], points[q], points[r], inside) <= 0)
+                left = false;
             if (left) {
               ring.push_back(q);
               break;
@@ -245,12 +259,14 @@ MeshData generatePolyhedron(PolyhedronKind kind, std::size_t n, std::uint64_t se
   const bool hull = kind == PolyhedronKind::SphereHull || kind == PolyhedronKind::CubeHull ||
                     kind == PolyhedronKind::EllipsoidHull || kind == PolyhedronKind::TinyFaces;
   if (n > (std::size_t{1} << (hull ? 22 : 24)))
-    throw UsageError(std::string("at most 2^") + (hull ? "22" : "24") + " faces can be generated for " +
-                     std::string(toString(kind)));
+    throw UsageError(std::string("at most 2^") + (hull ? "22" : "24") +
+                     " faces can be generated for " + std::string(toString(kind)));
   Rng rng(seed);
-  const std::size_t nu = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 20.0))));
+  const std::size_t nu =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 20.0))));
   switch (kind) {
-    case PolyhedronKind::Tetrahedron: return platonic({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}});
+    case PolyhedronKind::Tetrahedron:
+      return platonic({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}});
     case PolyhedronKind::Cube: {
       std::vector<Vec3> p;
       for (double x : {-1.0, 1.0})
@@ -311,12 +327,14 @@ MeshData generatePolyhedron(PolyhedronKind kind, std::size_t n, std::uint64_t se
       return hullMesh(p);
     }
     case PolyhedronKind::ThinSlab: {
-      const std::size_t k = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 4.0))));
+      const std::size_t k =
+          std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 4.0))));
       const std::size_t counts[3] = {k, k, 1};
       return gridBox({0, 0, 0}, {1, 1, 1e-9}, counts, false);
     }
     case PolyhedronKind::Coplanar: {
-      const std::size_t k = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 12.0))));
+      const std::size_t k =
+          std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(n / 12.0))));
       const std::size_t counts[3] = {k, k, k};
       return gridBox({-1, -1, -1}, {1, 1, 1}, counts, true);
     }
@@ -336,7 +354,9 @@ double ulps(double v, int steps) {
 }
 
 // the coordinate k of p
-double& coord(Vec3& p, int k) { return k == 0 ? p.x : k == 1 ? p.y : p.z; }
+double& coord(Vec3& p, int k) {
+  return k == 0 ? p.x : k == 1 ? p.y : p.z;
+}
 
 // p exactly on the plane of (a, b, c) if a few ulps along the normal's major axis get
 // there; else p unchanged
@@ -345,8 +365,8 @@ Vec3 ontoPlane(Vec3 a, Vec3 b, Vec3 c, Vec3 p) {
   const double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
   const double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   const int axis = std::fabs(nx) >= std::fabs(ny) && std::fabs(nx) >= std::fabs(nz) ? 0
-                   : std::fabs(ny) >= std::fabs(nz)                                  ? 1
-                                                                                     : 2;
+                   : std::fabs(ny) >= std::fabs(nz)                                 ? 1
+                                                                                    : 2;
   for (int k = 0; k <= 8; ++k)
     for (int sign : {1, -1}) {
       Vec3 q = p;
@@ -369,7 +389,8 @@ std::vector<Vec3> generatePoints3D(const ConvexPolyhedron& polyhedron, std::size
   auto tri = polyhedron.triangles();
   while (out.size() < count) {
     if (!nearBoundary) {
-      out.push_back({rng.uniform(b.lo.x - w.x, b.hi.x + w.x), rng.uniform(b.lo.y - w.y, b.hi.y + w.y),
+      out.push_back({rng.uniform(b.lo.x - w.x, b.hi.x + w.x),
+                     rng.uniform(b.lo.y - w.y, b.hi.y + w.y),
                      rng.uniform(b.lo.z - w.z, b.hi.z + w.z)});
       continue;
     }
@@ -377,9 +398,10 @@ std::vector<Vec3> generatePoints3D(const ConvexPolyhedron& polyhedron, std::size
     const Vec3 A = v[t[0]], B = v[t[1]], C = v[t[2]];
     switch (rng.below(6)) {
       case 0: out.push_back(v[rng.below(v.size())]); break;  // a vertex
-      case 1: {                                                // one ulp off a vertex
+      case 1: {                                              // one ulp off a vertex
         Vec3 p = A;
-        for (int k = 0; k < 3; ++k) coord(p, k) = ulps(coord(p, k), static_cast<int>(rng.below(3)) - 1);
+        for (int k = 0; k < 3; ++k)
+          coord(p, k) = ulps(coord(p, k), static_cast<int>(rng.below(3)) - 1);
         out.push_back(p);
         break;
       }
@@ -407,7 +429,8 @@ std::vector<Vec3> generatePoints3D(const ConvexPolyhedron& polyhedron, std::size
       default: {  // a hair inside or outside, relative to the box
         const double h = (rng.uniform() - 0.5) * 1e-9;
         const Vec3 m{(A.x + B.x + C.x) / 3, (A.y + B.y + C.y) / 3, (A.z + B.z + C.z) / 3};
-        out.push_back({m.x + h * (b.hi.x - b.lo.x) * rng.uniform(-1, 1), m.y + h * (b.hi.y - b.lo.y) * rng.uniform(-1, 1),
+        out.push_back({m.x + h * (b.hi.x - b.lo.x) * rng.uniform(-1, 1),
+                       m.y + h * (b.hi.y - b.lo.y) * rng.uniform(-1, 1),
                        m.z + h * (b.hi.z - b.lo.z) * rng.uniform(-1, 1)});
         break;
       }

@@ -21,7 +21,7 @@ constexpr int kRepairRounds = 64;
 
 // Qhull's state for one run, freed when it goes
 class QhullRun {
-public:
+ public:
   QhullRun() : err_(std::tmpfile()) { qh_zero(&qh_, err_); }
   ~QhullRun() {
     qh_freeqhull(&qh_, !qh_ALL);
@@ -52,14 +52,17 @@ public:
         if (k < 3) ids[k] = static_cast<std::uint32_t>(qh_pointid(qh, vertex->point));
         ++k;
       }
-      if (k != 3) throw GeometryError("Qhull returned a facet with " + std::to_string(k) + " vertices");
+      if (k != 3)
+        throw GeometryError("Qhull returned a facet with " + std::to_string(k) + " vertices");
       // Qhull's own rule for printing a simplicial 3D facet in a consistent order
-      if (facet->toporient ^ qh_ORIENTclock) mesh.addFace({ids[0], ids[1], ids[2]});
-      else mesh.addFace({ids[1], ids[0], ids[2]});
+      if (facet->toporient ^ qh_ORIENTclock)
+        mesh.addFace({ids[0], ids[1], ids[2]});
+      else
+        mesh.addFace({ids[1], ids[0], ids[2]});
     }
   }
 
-private:
+ private:
   // the first line Qhull wrote to its error stream
   std::string firstErrorLine() {
     if (!err_) return "unknown error";
@@ -81,7 +84,8 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3 p = points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw GeometryError("point " + std::to_string(i) + " has a coordinate that is not a finite number");
+      throw GeometryError("point " + std::to_string(i) +
+                          " has a coordinate that is not a finite number");
   }
   if (points.size() > kMaxPolyhedronVertices)
     throw UsageError("too many points for a hull: " + std::to_string(points.size()));
@@ -95,8 +99,11 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
              orient2d({p.y, p.z}, {q.y, q.z}, {r.y, r.z}) == 0 &&
              orient2d({p.z, p.x}, {q.z, q.x}, {r.z, r.x}) == 0;
     };
-    for (c = b + 1; c < points.size() && line(c); ++c) {}
-    for (d = c + 1; d < points.size() && orient3d(points[0], points[b], points[c], points[d]) == 0; ++d) {}
+    for (c = b + 1; c < points.size() && line(c); ++c) {
+    }
+    for (d = c + 1; d < points.size() && orient3d(points[0], points[b], points[c], points[d]) == 0;
+         ++d) {
+    }
     if (points.size() < 4 || d >= points.size())
       throw GeometryError("the hull has zero volume: the " + std::to_string(points.size()) +
                           " points are " + (c >= points.size() ? "collinear" : "coplanar") +

@@ -59,7 +59,9 @@ struct TraceSink {
 };
 
 // all three coordinates are finite
-inline bool finite(Vec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+inline bool finite(Vec3 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 // orient3d of p against face t: > 0 on the inner side
 inline int planeSign(const std::vector<Vec3>& v, const Triangle& t, Vec3 p) {
@@ -192,7 +194,8 @@ Location HalfspaceLocator::locate(Vec3 p) const noexcept {
   return testAll(v_, tri_, p, sink);
 }
 
-void HalfspaceLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
+void HalfspaceLocator::locate(std::span<const Vec3> points,
+                              std::span<Location> out) const noexcept {
   locateAll(*this, points, out);
 }
 
@@ -210,7 +213,8 @@ Trace3D HalfspaceLocator::trace(Vec3 p) const {
 }
 
 Stats3D HalfspaceLocator::stats() const {
-  return baseStats(tri_.size(), v_.size(), sizeof(*this) + bytesOf(v_) + bytesOf(tri_), buildSeconds_);
+  return baseStats(tri_.size(), v_.size(), sizeof(*this) + bytesOf(v_) + bytesOf(tri_),
+                   buildSeconds_);
 }
 
 // === walk
@@ -222,11 +226,13 @@ WalkLocator::WalkLocator(const ConvexPolyhedron& polyhedron) {
   nb_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
   centre_ = polyhedron.centre();
   const std::size_t n = tri_.size();
-  cap_ = static_cast<std::uint32_t>(std::min<double>(64 + 8 * std::sqrt(static_cast<double>(n)), 1e9));
+  cap_ =
+      static_cast<std::uint32_t>(std::min<double>(64 + 8 * std::sqrt(static_cast<double>(n)), 1e9));
   if (centre_) {
     // jump and walk: about F^(1/3) start faces spread over the list; a query starts from the
     // one whose direction from the centre is closest to its own
-    const std::size_t k = std::clamp<std::size_t>(static_cast<std::size_t>(std::cbrt(static_cast<double>(n))), 1, 1024);
+    const std::size_t k = std::clamp<std::size_t>(
+        static_cast<std::size_t>(std::cbrt(static_cast<double>(n))), 1, 1024);
     const Vec3 c = *centre_;
     for (std::size_t i = 0; i < k; ++i) {
       const std::uint32_t f = static_cast<std::uint32_t>(i * n / k);
@@ -302,8 +308,8 @@ Trace3D WalkLocator::trace(Vec3 p) const {
 
 Stats3D WalkLocator::stats() const {
   Stats3D s = baseStats(tri_.size(), v_.size(),
-                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) + bytesOf(starts_) +
-                            bytesOf(startDir_),
+                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) +
+                            bytesOf(starts_) + bytesOf(startDir_),
                         buildSeconds_);
   s.centred = centre_.has_value();
   return s;
@@ -392,7 +398,8 @@ struct PowerOfTwo {
 };
 
 // the cone of face t seen from c, scaled exactly; false when something is not finite
-bool coneOf(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, const PowerOfTwo& scale, Cone& k) {
+bool coneOf(const std::vector<Vec3>& v, const Triangle& t, Vec3 c, const PowerOfTwo& scale,
+            Cone& k) {
   for (int i = 0; i < 3; ++i) {
     const Vec3 p = v[t[i]];
     k.d[i][0] = scale(p.x - c.x);
@@ -445,7 +452,11 @@ bool onCubeFace(const Cone& k, int face, Poly& P) {
     for (int i = 0; i < 3 && all; ++i) {
       const double* d = k.d[i];
       const double da = sigma * d[a];
-      const double f = rule == 0 ? da : rule == 1 ? da + d[u] : rule == 2 ? da - d[u] : rule == 3 ? da + d[w] : da - d[w];
+      const double f = rule == 0   ? da
+                       : rule == 1 ? da + d[u]
+                       : rule == 2 ? da - d[u]
+                       : rule == 3 ? da + d[w]
+                                   : da - d[w];
       all = f < -kReject * (std::fabs(d[a]) + std::fabs(d[u]) + std::fabs(d[w]));
     }
     if (all) return false;
@@ -573,7 +584,8 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   if (centre) {
     c_ = *centre;
     for (const Vec3& p : v_)
-      extent = std::max({extent, std::fabs(p.x - c_.x), std::fabs(p.y - c_.y), std::fabs(p.z - c_.z)});
+      extent =
+          std::max({extent, std::fabs(p.x - c_.x), std::fabs(p.y - c_.y), std::fabs(p.z - c_.z)});
   }
   if (!centre || !std::isfinite(extent) || !(extent > 0)) {
     // no centre (a polyhedron thinner than the double grid), or one so vast that its
@@ -641,7 +653,8 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
     const std::int64_t last = g_ - 1;
     forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
       rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
-        entries_[cursor[static_cast<std::size_t>(cf) * g_ * g_ + static_cast<std::size_t>(j) * g_ + i]++] = f;
+        entries_[cursor[static_cast<std::size_t>(cf) * g_ * g_ + static_cast<std::size_t>(j) * g_ +
+                        i]++] = f;
       });
     });
   }
@@ -659,8 +672,10 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   for (std::size_t c = 0; c < baseCells; ++c)
     if (nodes_[c].count > kCrowdedCell3D) {
       const std::uint32_t cf = static_cast<std::uint32_t>(c / (static_cast<std::size_t>(g_) * g_));
-      const std::uint32_t rest = static_cast<std::uint32_t>(c % (static_cast<std::size_t>(g_) * g_));
-      queue.push_back({static_cast<std::uint32_t>(c), rest % g_, rest / g_, static_cast<std::uint8_t>(cf), 0});
+      const std::uint32_t rest =
+          static_cast<std::uint32_t>(c % (static_cast<std::size_t>(g_) * g_));
+      queue.push_back(
+          {static_cast<std::uint32_t>(c), rest % g_, rest / g_, static_cast<std::uint8_t>(cf), 0});
     }
   std::size_t live = nodes_.size() * sizeof(Node) + entries_.size() * sizeof(std::uint32_t);
   std::size_t liveEntries = entries_.size();
@@ -678,15 +693,17 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   };
   // appends the 4 children of `node` (cell i, j at `level` - 1) with their lists; queues the
   // crowded ones; returns the index of the first
-  auto addChildren = [&](std::uint32_t node, std::int64_t i0, std::int64_t j0, std::uint8_t face, int level,
-                         std::vector<std::uint32_t> (&lists)[4]) {
+  auto addChildren = [&](std::uint32_t node, std::int64_t i0, std::int64_t j0, std::uint8_t face,
+                         int level, std::vector<std::uint32_t>(&lists)[4]) {
     const std::uint32_t first = static_cast<std::uint32_t>(nodes_.size());
     for (int c = 0; c < 4; ++c) {
-      nodes_.push_back({static_cast<std::uint32_t>(entries_.size()), static_cast<std::uint32_t>(lists[c].size())});
+      nodes_.push_back({static_cast<std::uint32_t>(entries_.size()),
+                        static_cast<std::uint32_t>(lists[c].size())});
       entries_.insert(entries_.end(), lists[c].begin(), lists[c].end());
       if (lists[c].size() > kCrowdedCell3D)
-        queue.push_back({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
-                         static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
+        queue.push_back(
+            {first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+             static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
     }
     nodes_[node] = {first, kInner};
     return first;
@@ -748,11 +765,15 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
       const std::int64_t i0 = 2 * ci, j0 = 2 * cj;
       for (auto& list : lists[l]) list.clear();
       auto placer = [&](std::uint32_t f) {
-        return [&, f](std::int64_t i, std::int64_t j) { lists[l][(j - j0) * 2 + (i - i0)].push_back(f); };
+        return [&, f](std::int64_t i, std::int64_t j) {
+          lists[l][(j - j0) * 2 + (i - i0)].push_back(f);
+        };
       };
-      for (std::size_t m = 0; m < large.size(); ++m) rasterise(largePoly[m], K, i0, i0 + 1, j0, j0 + 1, placer(large[m]));
+      for (std::size_t m = 0; m < large.size(); ++m)
+        rasterise(largePoly[m], K, i0, i0 + 1, j0, j0 + 1, placer(large[m]));
       if (l + 1 == levels) {
-        for (std::size_t m = 0; m < small.size(); ++m) rasterise(boxPoly(smallBox[m]), K, i0, i0 + 1, j0, j0 + 1, placer(small[m]));
+        for (std::size_t m = 0; m < small.size(); ++m)
+          rasterise(boxPoly(smallBox[m]), K, i0, i0 + 1, j0, j0 + 1, placer(small[m]));
       } else {
         // the chain's cell at this level: the one cell every small box meets
         std::int64_t i1 = i0 + 1, j1 = j0 + 1, ii = i0, jj = j0;
@@ -772,7 +793,8 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
     }
     const std::size_t grown = live + 4 * sizeof(Node) * levels + added * sizeof(std::uint32_t) -
                               parent.count * sizeof(std::uint32_t);
-    if (grown > budget || entries_.size() + added > std::numeric_limits<std::uint32_t>::max()) break;
+    if (grown > budget || entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
+      break;
     // commit, top down; an inner chain cell gets its children at the next level
     std::uint32_t node = q.node;
     ci = q.i, cj = q.j;
@@ -844,7 +866,8 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   while (nodes_[node].count == kInner) {
     ++level;
     const int shift = depth_ - level;
-    node = nodes_[node].first + static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
+    node = nodes_[node].first +
+           static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
   }
   sink.cell(face, level, X >> (depth_ - level), Y >> (depth_ - level), s, t);
   const Node leaf = nodes_[node];
@@ -884,8 +907,8 @@ Trace3D CubemapLocator::trace(Vec3 p) const {
 
 Stats3D CubemapLocator::stats() const {
   Stats3D s = baseStats(tri_.size(), v_.size(),
-                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) + bytesOf(nodes_) +
-                            bytesOf(entries_),
+                        sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_) +
+                            bytesOf(nodes_) + bytesOf(entries_),
                         buildSeconds_);
   s.centred = centred_;
   s.resolution = centred_ ? g_ : 0;
@@ -951,7 +974,8 @@ std::vector<Cell3D> CubemapLocator::cells() const {
       cell.t0 = -1 + it.j / K;
       cell.t1 = -1 + (it.j + 1) / K;
       cell.apex = c_;
-      const double st[4][2] = {{cell.s0, cell.t0}, {cell.s1, cell.t0}, {cell.s1, cell.t1}, {cell.s0, cell.t1}};
+      const double st[4][2] = {
+          {cell.s0, cell.t0}, {cell.s1, cell.t0}, {cell.s1, cell.t1}, {cell.s0, cell.t1}};
       for (int q = 0; q < 4; ++q) {
         const Vec3 d = cubeDirection(cf, st[q][0], st[q][1]);
         cell.corners[q] = {c_.x + half_ * d.x, c_.y + half_ * d.y, c_.z + half_ * d.z};
@@ -966,9 +990,8 @@ std::vector<Cell3D> CubemapLocator::cells() const {
 // === Locator3D
 
 namespace {
-std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> build(const ConvexPolyhedron& polyhedron,
-                                                                  Method3D method,
-                                                                  std::uint32_t resolution) {
+std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> build(
+    const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution) {
   switch (method) {
     case Method3D::Halfspace: return HalfspaceLocator(polyhedron);
     case Method3D::Walk: return WalkLocator(polyhedron);

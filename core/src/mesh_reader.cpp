@@ -15,7 +15,9 @@ namespace convexloc {
 namespace {
 
 // a blank that separates tokens (not a line end)
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+bool isBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
 
 // a short, printable quote of a token, for messages
 std::string quote(std::string_view s) {
@@ -34,7 +36,7 @@ std::string quote(std::string_view s) {
 // Lines from a file (buffered, constant memory) or from text in memory, numbered from 1,
 // without their line ending.
 class LineSource {
-public:
+ public:
   explicit LineSource(std::FILE* file) : file_(file), buf_(1 << 16) {}
   explicit LineSource(std::string_view text) : text_(text) {}
 
@@ -68,7 +70,7 @@ public:
   // the number of the line last returned
   std::size_t line() const noexcept { return line_; }
 
-private:
+ private:
   bool finish(std::string_view& line) {
     ++line_;
     // the limit is on the text: a CRLF line's '\r' is not counted (as in text_reader.cpp)
@@ -92,7 +94,8 @@ private:
     std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
     end_ += got;
     if (got == 0) {
-      if (std::ferror(file_)) throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
+      if (std::ferror(file_))
+        throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
       eof_ = true;
       return false;
     }
@@ -110,7 +113,7 @@ private:
 
 // the whitespace-separated tokens of a line, up to a '#' comment
 class Tokens {
-public:
+ public:
   explicit Tokens(std::string_view line) : rest_(line) {}
   bool next(std::string_view& token) {
     std::size_t i = 0;
@@ -134,7 +137,7 @@ public:
     return n;
   }
 
-private:
+ private:
   std::string_view rest_;
 };
 
@@ -151,7 +154,8 @@ bool integer(std::string_view token, long long& out) {
   const char* b = token.data();
   if (*b == '+') ++b;
   auto [ptr, ec] = std::from_chars(b, token.data() + token.size(), out);
-  return ec == std::errc() && ptr == token.data() + token.size() && b != token.data() + token.size();
+  return ec == std::errc() && ptr == token.data() + token.size() &&
+         b != token.data() + token.size();
 }
 
 // a count from an OFF header ("vertex" or "face" count), checked against the limit
@@ -159,16 +163,18 @@ std::size_t headerCount(std::string_view token, std::string_view what, std::size
   long long v = 0;
   if (!integer(token, v) || v < 0) {
     // a number too large for 64 bits is still a count, just an absurd one
-    bool digits = !token.empty() && std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+    bool digits = !token.empty() && std::all_of(token.begin(), token.end(),
+                                                [](char c) { return c >= '0' && c <= '9'; });
     if (!digits)
-      throw ParseError("the OFF header's " + std::string(what) + " count is not a non-negative integer: " +
-                           quote(token),
+      throw ParseError("the OFF header's " + std::string(what) +
+                           " count is not a non-negative integer: " + quote(token),
                        line);
     v = std::numeric_limits<long long>::max();
   }
   if (static_cast<unsigned long long>(v) > kMaxMeshElements)
-    throw ParseError("the OFF header announces " + std::string(token) + (what == "vertex" ? " vertices" : " faces") +
-                         "; at most " + std::to_string(kMaxMeshElements) + " are supported",
+    throw ParseError("the OFF header announces " + std::string(token) +
+                         (what == "vertex" ? " vertices" : " faces") + "; at most " +
+                         std::to_string(kMaxMeshElements) + " are supported",
                      line);
   return static_cast<std::size_t>(v);
 }
@@ -195,7 +201,8 @@ MeshData parseOffFrom(LineSource& src) {
   if (!integer(tok, probe)) {
     std::string_view key = tok;
     if (key.size() < 3 || key.substr(key.size() - 3) != "OFF")
-      throw ParseError("not an OFF file: expected the header 'OFF', found " + quote(tok), src.line());
+      throw ParseError("not an OFF file: expected the header 'OFF', found " + quote(tok),
+                       src.line());
     std::string_view prefix = key.substr(0, key.size() - 3);
     if (prefix.find('4') != std::string_view::npos || prefix.find('n') != std::string_view::npos)
       throw ParseError("only 3D OFF files are supported, not " + quote(tok), src.line());
@@ -204,26 +211,30 @@ MeshData parseOffFrom(LineSource& src) {
         throw ParseError("unknown OFF header " + quote(tok), src.line());
     extras = prefix.empty() ? 0 : -1;
     if (!head.next(tok)) {
-      if (!nextContent(src, line)) throw ParseError("the OFF file ends before its counts", src.line());
+      if (!nextContent(src, line))
+        throw ParseError("the OFF file ends before its counts", src.line());
       head = Tokens(line);
       head.next(tok);
     }
   }
   const std::size_t headerLine = src.line();
   const std::size_t nv = headerCount(tok, "vertex", headerLine);
-  if (!head.next(tok)) throw ParseError("the OFF header needs the vertex and face counts", headerLine);
+  if (!head.next(tok))
+    throw ParseError("the OFF header needs the vertex and face counts", headerLine);
   const std::size_t nf = headerCount(tok, "face", headerLine);
   if (head.next(tok)) {
     long long edges = 0;
     if (!integer(tok, edges) || edges < 0)
-      throw ParseError("the OFF header's edge count is not a non-negative integer: " + quote(tok), headerLine);
-    if (head.next(tok)) throw ParseError("unexpected text after the OFF counts: " + quote(tok), headerLine);
+      throw ParseError("the OFF header's edge count is not a non-negative integer: " + quote(tok),
+                       headerLine);
+    if (head.next(tok))
+      throw ParseError("unexpected text after the OFF counts: " + quote(tok), headerLine);
   }
 
   for (std::size_t i = 0; i < nv; ++i) {
     if (!nextContent(src, line))
-      throw ParseError("the file ends after " + std::to_string(i) + " of the " + std::to_string(nv) +
-                           " vertices its header announces",
+      throw ParseError("the file ends after " + std::to_string(i) + " of the " +
+                           std::to_string(nv) + " vertices its header announces",
                        src.line());
     Tokens t(line);
     std::size_t count = t.count();
@@ -245,8 +256,8 @@ MeshData parseOffFrom(LineSource& src) {
   std::vector<std::uint32_t> poly;
   for (std::size_t f = 0; f < nf; ++f) {
     if (!nextContent(src, line))
-      throw ParseError("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf) +
-                           " faces its header announces",
+      throw ParseError("the file ends after " + std::to_string(f) + " of the " +
+                           std::to_string(nf) + " faces its header announces",
                        src.line());
     Tokens t(line);
     t.next(tok);
@@ -254,13 +265,14 @@ MeshData parseOffFrom(LineSource& src) {
     if (!integer(tok, k) || k < 0)
       throw ParseError("a face starts with its vertex count, found " + quote(tok), src.line());
     if (k < 3)
-      throw ParseError("a face needs at least 3 vertices, this one has " + std::to_string(k), src.line());
+      throw ParseError("a face needs at least 3 vertices, this one has " + std::to_string(k),
+                       src.line());
     poly.clear();
     for (long long i = 0; i < k; ++i) {
       if (!t.next(tok))
-        throw ParseError("the face announces " + std::to_string(k) + " vertices but lists " +
-                             std::to_string(i),
-                         src.line());
+        throw ParseError(
+            "the face announces " + std::to_string(k) + " vertices but lists " + std::to_string(i),
+            src.line());
       long long idx = 0;
       if (!integer(tok, idx)) throw ParseError("not a vertex index: " + quote(tok), src.line());
       if (idx < 0 || static_cast<unsigned long long>(idx) >= nv)
@@ -273,8 +285,9 @@ MeshData parseOffFrom(LineSource& src) {
     std::size_t colour = t.count();
     if (colour != 0 && colour != 1 && colour != 3 && colour != 4) {
       t.next(tok);
-      throw ParseError("unexpected text after the face's " + std::to_string(k) + " vertices: " + quote(tok),
-                       src.line());
+      throw ParseError(
+          "unexpected text after the face's " + std::to_string(k) + " vertices: " + quote(tok),
+          src.line());
     }
     while (t.next(tok)) number(tok, src.line());
     mesh.addFace(poly);
@@ -314,7 +327,8 @@ MeshData parseObjFrom(LineSource& src) {
       if (count == 4) {
         t.next(tok);
         if (number(tok, src.line()) != 1.0)
-          throw ParseError("a vertex weight w other than 1 is not supported: " + quote(tok), src.line());
+          throw ParseError("a vertex weight w other than 1 is not supported: " + quote(tok),
+                           src.line());
       }
       while (t.next(tok)) number(tok, src.line());
       if (mesh.vertices.size() >= kMaxMeshElements)
@@ -326,19 +340,23 @@ MeshData parseObjFrom(LineSource& src) {
       while (t.next(tok)) {
         std::string_view ref = tok.substr(0, tok.find('/'));
         long long idx = 0;
-        if (!integer(ref, idx)) throw ParseError("not a vertex reference: " + quote(tok), src.line());
-        if (idx == 0) throw ParseError("vertex reference 0: OBJ numbers vertices from 1", src.line());
+        if (!integer(ref, idx))
+          throw ParseError("not a vertex reference: " + quote(tok), src.line());
+        if (idx == 0)
+          throw ParseError("vertex reference 0: OBJ numbers vertices from 1", src.line());
         if (idx < 0) {
           long long resolved = static_cast<long long>(mesh.vertices.size()) + idx;
           if (resolved < 0)
-            throw ParseError("vertex reference " + std::string(ref) + " points before the first vertex (only " +
+            throw ParseError("vertex reference " + std::string(ref) +
+                                 " points before the first vertex (only " +
                                  std::to_string(mesh.vertices.size()) + " so far)",
                              src.line());
           idx = resolved;
         } else {
           idx -= 1;
           if (static_cast<unsigned long long>(idx) >= kMaxMeshElements)
-            throw ParseError("vertex reference " + std::string(ref) + " is out of range", src.line());
+            throw ParseError("vertex reference " + std::string(ref) + " is out of range",
+                             src.line());
         }
         if (static_cast<std::size_t>(idx) >= maxRef) {
           maxRef = static_cast<std::size_t>(idx) + 1;
@@ -347,8 +365,9 @@ MeshData parseObjFrom(LineSource& src) {
         raw.push_back(idx);
       }
       if (raw.size() < 3)
-        throw ParseError("a face needs at least 3 vertices, this one has " + std::to_string(raw.size()),
-                         src.line());
+        throw ParseError(
+            "a face needs at least 3 vertices, this one has " + std::to_string(raw.size()),
+            src.line());
       if (mesh.faceCount() >= kMaxMeshElements)
         throw ParseError("more than " + std::to_string(kMaxMeshElements) + " faces", src.line());
       poly.assign(raw.begin(), raw.end());
@@ -358,8 +377,9 @@ MeshData parseObjFrom(LineSource& src) {
     // every other statement is ignored
   }
   if (maxRef > mesh.vertices.size())
-    throw ParseError("vertex reference " + std::to_string(maxRef) + " is out of range: the file has " +
-                         std::to_string(mesh.vertices.size()) + " vertices",
+    throw ParseError("vertex reference " + std::to_string(maxRef) +
+                         " is out of range: the file has " + std::to_string(mesh.vertices.size()) +
+                         " vertices",
                      maxRefLine);
   return mesh;
 }
@@ -383,7 +403,8 @@ void flush(std::FILE* out, std::string& text) {
 std::optional<MeshFormat> meshFormatOf(std::string_view path) {
   if (path.size() < 4) return std::nullopt;
   std::string ext(path.substr(path.size() - 4));
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".obj") return MeshFormat::Obj;
   return std::nullopt;
@@ -416,7 +437,9 @@ MeshData readMesh(const std::string& path) {
   return *format == MeshFormat::Off ? parseOff(in.get()) : parseObj(in.get());
 }
 
-ConvexPolyhedron loadPolyhedron(const std::string& path) { return ConvexPolyhedron(readMesh(path)); }
+ConvexPolyhedron loadPolyhedron(const std::string& path) {
+  return ConvexPolyhedron(readMesh(path));
+}
 
 MeshData toMesh(const ConvexPolyhedron& polyhedron) {
   MeshData mesh;

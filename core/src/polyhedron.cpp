@@ -40,7 +40,9 @@ bool collinear(Vec3 a, Vec3 b, Vec3 c) {
 
 // b lies between a and c, given that the three are collinear
 bool between(Vec3 a, Vec3 b, Vec3 c) {
-  auto in = [](double lo, double v, double hi) { return (lo <= v && v <= hi) || (hi <= v && v <= lo); };
+  auto in = [](double lo, double v, double hi) {
+    return (lo <= v && v <= hi) || (hi <= v && v <= lo);
+  };
   return in(a.x, b.x, c.x) && in(a.y, b.y, c.y) && in(a.z, b.z, c.z);
 }
 
@@ -59,7 +61,8 @@ std::pair<int, int> planarSides(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 double solidAngle(Vec3 a, Vec3 b, Vec3 c) {
   auto dot = [](Vec3 u, Vec3 v) { return u.x * v.x + u.y * v.y + u.z * v.z; };
   auto len = [&](Vec3 u) { return std::sqrt(dot(u, u)); };
-  double det = a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+  double det =
+      a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
   double la = len(a), lb = len(b), lc = len(c);
   double den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
   return 2.0 * std::atan2(det, den);
@@ -73,7 +76,8 @@ long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]) {
     p[k][1] = static_cast<long double>(abc[k].y) - o.y;
     p[k][2] = static_cast<long double>(abc[k].z) - o.z;
   }
-  return p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+  return p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+         p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
          p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
 }
 
@@ -119,7 +123,9 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     throw UsageError("MeshData: vertexLines must be empty or match the vertices");
   if (!mesh.faceLines.empty() && mesh.faceLines.size() != m)
     throw UsageError("MeshData: faceLines must be empty or match the faces");
-  auto vertexLine = [&](std::size_t i) { return mesh.vertexLines.empty() ? 0 : mesh.vertexLines[i]; };
+  auto vertexLine = [&](std::size_t i) {
+    return mesh.vertexLines.empty() ? 0 : mesh.vertexLines[i];
+  };
   auto faceLine = [&](std::size_t f) { return mesh.faceLines.empty() ? 0 : mesh.faceLines[f]; };
   if (n > kMaxPolyhedronVertices)
     throw UsageError("too many vertices: " + std::to_string(n) + " (the limit is " +
@@ -139,7 +145,8 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     auto face = mesh.face(f);
     if (face.size() < 3)
       throw GeometryError("face " + std::to_string(f) + " has " + std::to_string(face.size()) +
-                              (face.size() == 1 ? " vertex" : " vertices") + "; a face needs at least 3",
+                              (face.size() == 1 ? " vertex" : " vertices") +
+                              "; a face needs at least 3",
                           faceLine(f));
     for (std::uint32_t v : face) {
       if (v >= n)
@@ -208,9 +215,9 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
         if (poly.empty() || poly.back() != id[k]) poly.push_back(id[k]);
       while (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
       if (poly.size() < 3)
-        throw GeometryError("face " + std::to_string(f) +
-                                " is degenerate: it has fewer than 3 distinct vertices",
-                            faceLine(f));
+        throw GeometryError(
+            "face " + std::to_string(f) + " is degenerate: it has fewer than 3 distinct vertices",
+            faceLine(f));
       sorted = poly;
       std::sort(sorted.begin(), sorted.end());
       auto twice = std::adjacent_find(sorted.begin(), sorted.end());
@@ -256,8 +263,8 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
         const std::uint32_t h1 = *it, t1 = h1 / 3;
         const std::size_t count = static_cast<std::size_t>(run - it);
         if (count == 1)
-          throw GeometryError("the surface is open: " + ename(head(h1), tail(h1)) +
-                                  " belongs to " + fname(t1) + " only",
+          throw GeometryError("the surface is open: " + ename(head(h1), tail(h1)) + " belongs to " +
+                                  fname(t1) + " only",
                               tline(t1));
         if (count > 2) {
           std::string faces;
@@ -301,8 +308,9 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
                           tline(stray));
     const long long chi = static_cast<long long>(v.size()) - 3LL * nt / 2 + nt;
     if (chi != 2)
-      throw GeometryError("the surface is not a sphere: V - E + F = " + std::to_string(chi) +
-                          " where a convex polyhedron has 2 (a handle, or faces meeting only at a vertex)");
+      throw GeometryError(
+          "the surface is not a sphere: V - E + F = " + std::to_string(chi) +
+          " where a convex polyhedron has 2 (a handle, or faces meeting only at a vertex)");
   }
 
   // === positive volume: four vertices not in one plane
@@ -465,7 +473,8 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
       az += (static_cast<long double>(w.z) - o.z) / v.size();
     }
     auto at = [&](long double x, long double y, long double z) {
-      return Vec3{static_cast<double>(o.x + x), static_cast<double>(o.y + y), static_cast<double>(o.z + z)};
+      return Vec3{static_cast<double>(o.x + x), static_cast<double>(o.y + y),
+                  static_cast<double>(o.z + z)};
     };
     std::vector<Vec3> candidates;
     if (vol != 0) candidates.push_back(at(cx / (4 * vol), cy / (4 * vol), cz / (4 * vol)));
@@ -524,7 +533,8 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     // scale by powers of two so that no product below overflows or underflows; a difference
     // that overflowed is taken at half scale
     bool overflow = false;
-    for (const Vec3& r : rel) overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
+    for (const Vec3& r : rel)
+      overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
     if (overflow) {
       for (std::size_t i = 0; i < v.size(); ++i) {
         if (centre_) {
@@ -545,7 +555,9 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
     for (const Vec3& r : rel)
       extent = {std::max(extent.x, std::fabs(r.x)), std::max(extent.y, std::fabs(r.y)),
                 std::max(extent.z, std::fabs(r.z))};
-    auto shiftFor = [](double e) { return e > 0 ? -std::ilogb(e) : 0; };  // 2^shift may not be a double
+    auto shiftFor = [](double e) {
+      return e > 0 ? -std::ilogb(e) : 0;
+    };  // 2^shift may not be a double
     const int sx = shiftFor(extent.x), sy = shiftFor(extent.y), sz = shiftFor(extent.z);
     for (Vec3& r : rel) r = {std::ldexp(r.x, sx), std::ldexp(r.y, sy), std::ldexp(r.z, sz)};
   }
@@ -564,8 +576,10 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
 
   bounds_ = {v[0], v[0]};
   for (const Vec3& w : v) {
-    bounds_.lo = {std::min(bounds_.lo.x, w.x), std::min(bounds_.lo.y, w.y), std::min(bounds_.lo.z, w.z)};
-    bounds_.hi = {std::max(bounds_.hi.x, w.x), std::max(bounds_.hi.y, w.y), std::max(bounds_.hi.z, w.z)};
+    bounds_.lo = {std::min(bounds_.lo.x, w.x), std::min(bounds_.lo.y, w.y),
+                  std::min(bounds_.lo.z, w.z)};
+    bounds_.hi = {std::max(bounds_.hi.x, w.x), std::max(bounds_.hi.y, w.y),
+                  std::max(bounds_.hi.z, w.z)};
   }
 }
 

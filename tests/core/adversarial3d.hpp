@@ -56,19 +56,24 @@ inline std::vector<Vec3> surfacePoints(const convexloc::ConvexPolyhedron& p, std
   std::vector<Vec3> out;
   auto v = p.vertices();
   auto tri = p.triangles();
-  const std::size_t step = std::max<std::size_t>(1, tri.size() / std::max<std::size_t>(1, budget / 4));
-  for (std::size_t i = 0; i < v.size(); i += std::max<std::size_t>(1, v.size() / budget)) withNeighbours(out, v[i]);
+  const std::size_t step =
+      std::max<std::size_t>(1, tri.size() / std::max<std::size_t>(1, budget / 4));
+  for (std::size_t i = 0; i < v.size(); i += std::max<std::size_t>(1, v.size() / budget))
+    withNeighbours(out, v[i]);
   for (std::size_t t = rng.below(step); t < tri.size(); t += step) {
     const Vec3 a = v[tri[t][0]], b = v[tri[t][1]], c = v[tri[t][2]];
     // the edge's midpoint and a point a third along it
-    for (double s : {0.5, 1.0 / 3}) withNeighbours(out, {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)});
+    for (double s : {0.5, 1.0 / 3})
+      withNeighbours(out, {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)});
     // the face's centroid and a random point, moved onto its plane where possible
     const Vec3 m{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
     withNeighbours(out, ontoPlane(a, b, c, m));
     double s = rng.uniform(), r = rng.uniform();
     if (s + r > 1) s = 1 - s, r = 1 - r;
-    withNeighbours(out, ontoPlane(a, b, c, {a.x + s * (b.x - a.x) + r * (c.x - a.x), a.y + s * (b.y - a.y) + r * (c.y - a.y),
-                                            a.z + s * (b.z - a.z) + r * (c.z - a.z)}));
+    withNeighbours(out, ontoPlane(a, b, c,
+                                  {a.x + s * (b.x - a.x) + r * (c.x - a.x),
+                                   a.y + s * (b.y - a.y) + r * (c.y - a.y),
+                                   a.z + s * (b.z - a.z) + r * (c.z - a.z)}));
   }
   return out;
 }
@@ -101,8 +106,8 @@ inline void alongRay(std::vector<Vec3>& out, const convexloc::ConvexPolyhedron& 
 
 // points along the 26 cube edge, face and diagonal directions from the cubemap's centre, on
 // cell borders of the base grid, and the centre itself, each with its ulp neighbours
-inline std::vector<Vec3> cubemapPoints(const convexloc::ConvexPolyhedron& p, const convexloc::CubemapLocator& cm,
-                                       convexloc::Rng& rng) {
+inline std::vector<Vec3> cubemapPoints(const convexloc::ConvexPolyhedron& p,
+                                       const convexloc::CubemapLocator& cm, convexloc::Rng& rng) {
   std::vector<Vec3> out;
   const std::optional<Vec3> centre = cm.centre();
   if (!centre) return out;
@@ -117,7 +122,9 @@ inline std::vector<Vec3> cubemapPoints(const convexloc::ConvexPolyhedron& p, con
   for (int k = 0; k < 60; ++k) {
     const int face = static_cast<int>(rng.below(6));
     const double s = -1 + static_cast<double>(rng.below(cm.resolution() + 1)) / K;
-    const double t = rng.below(4) == 0 ? -1 + static_cast<double>(rng.below(cm.resolution() + 1)) / K : rng.uniform(-1, 1);
+    const double t = rng.below(4) == 0
+                         ? -1 + static_cast<double>(rng.below(cm.resolution() + 1)) / K
+                         : rng.uniform(-1, 1);
     const int a = face / 2;
     double w[3];
     w[a] = (face & 1) ? -1 : 1;

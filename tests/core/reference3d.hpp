@@ -75,9 +75,11 @@ inline int orient(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 // exactly) are tested once: the inner side of each is decided against a point strictly
 // inside, and the answer for a point is the same for all of them.
 class Reference {
-public:
-  explicit Reference(const convexloc::ConvexPolyhedron& p) : v_(p.vertices().begin(), p.vertices().end()) {
-    std::vector<convexloc::ConvexPolyhedron::Triangle> faces(p.triangles().begin(), p.triangles().end());
+ public:
+  explicit Reference(const convexloc::ConvexPolyhedron& p)
+      : v_(p.vertices().begin(), p.vertices().end()) {
+    std::vector<convexloc::ConvexPolyhedron::Triangle> faces(p.triangles().begin(),
+                                                             p.triangles().end());
     // a double point near the vertex average: if every face sees it strictly on one and the
     // same side, it lies in the intersection of those open halfspaces, which is non-empty
     // only when they are the inner ones, so that side is the inner side of every face
@@ -88,7 +90,8 @@ public:
       sz += w.z;
     }
     const long double n = static_cast<long double>(v_.size());
-    const Vec3 g{static_cast<double>(sx / n), static_cast<double>(sy / n), static_cast<double>(sz / n)};
+    const Vec3 g{static_cast<double>(sx / n), static_cast<double>(sy / n),
+                 static_cast<double>(sz / n)};
     std::vector<int> inner;
     bool agree = true;
     for (const auto& t : faces) {
@@ -125,7 +128,8 @@ public:
       for (std::size_t plane : buckets[key]) {
         const auto& r = planes_[plane];
         if (inner_[plane] == inner[f] && orient(v_[r[0]], v_[r[1]], v_[r[2]], a) == 0 &&
-            orient(v_[r[0]], v_[r[1]], v_[r[2]], b) == 0 && orient(v_[r[0]], v_[r[1]], v_[r[2]], c) == 0) {
+            orient(v_[r[0]], v_[r[1]], v_[r[2]], b) == 0 &&
+            orient(v_[r[0]], v_[r[1]], v_[r[2]], c) == 0) {
           joined = true;
           break;
         }
@@ -162,7 +166,7 @@ public:
   // the number of distinct face planes
   std::size_t planes() const { return planes_.size(); }
 
-private:
+ private:
   std::vector<Vec3> v_;
   std::vector<convexloc::ConvexPolyhedron::Triangle> planes_;  // one face per distinct plane
   std::vector<int> inner_;

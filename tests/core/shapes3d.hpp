@@ -79,7 +79,9 @@ inline MeshData torus() {
       const double r = 3 + std::cos(b);
       m.addVertex({r * std::cos(a), r * std::sin(a), std::sin(b)});
     }
-  auto at = [&](int i, int j) { return static_cast<std::uint32_t>(((i + n) % n) * n + (j + n) % n); };
+  auto at = [&](int i, int j) {
+    return static_cast<std::uint32_t>(((i + n) % n) * n + (j + n) % n);
+  };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) m.addFace({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
   return m;

@@ -39,14 +39,16 @@ void expectWithinBudget(const ConvexPolyhedron& p, const char* what) {
   const Stats3D s = cm.stats();
   EXPECT_LE(s.bytes, 128 * s.faces + 65536) << what;
   EXPECT_LE(s.bytesPerFace, 128.0) << what;
-  std::printf("[ info     ] %s: %zu faces, G = %u, %zu cells (levels 0..%d), %.1f bytes per face, built in %.3f s\n",
-              what, s.faces, s.resolution, s.cells, s.maxLevel, s.bytesPerFace, s.buildSeconds);
+  std::printf(
+      "[ info     ] %s: %zu faces, G = %u, %zu cells (levels 0..%d), %.1f bytes per face, built in "
+      "%.3f s\n",
+      what, s.faces, s.resolution, s.cells, s.maxLevel, s.bytesPerFace, s.buildSeconds);
 }
 
 // Checks that the cell a point maps to lists a face whose closed cone from the centre holds
 // the point's direction (exact tests, independent of core's predicates).
 class ConeCheck {
-public:
+ public:
   ConeCheck(const ConvexPolyhedron& p, const CubemapLocator& cm) : p_(p), c_(*cm.centre()) {
     for (const Cell3D& cell : cm.cells())
       cells_[{cell.cubeFace, cell.level, cell.i, cell.j}] = cell.faces;
@@ -62,7 +64,7 @@ public:
     return false;
   }
 
-private:
+ private:
   // x - c lies in the closed cone of face f from c
   bool inCone(std::uint32_t f, Vec3 x) const {
     const auto& t = p_.triangles()[f];
@@ -80,9 +82,12 @@ private:
 }  // namespace
 
 TEST(Cubemap3D, MemoryStaysWithin128BytesPerFace) {
-  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::TinyFaces, 100000, 1)), "tiny-faces");
-  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 100000, 1)), "geodesic");
-  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::ThinSlab, 20000, 1)), "thin-slab");
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::TinyFaces, 100000, 1)),
+                     "tiny-faces");
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 100000, 1)),
+                     "geodesic");
+  expectWithinBudget(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::ThinSlab, 20000, 1)),
+                     "thin-slab");
   expectWithinBudget(ConvexPolyhedron(spindle(20000)), "spindle");
   // a resolution far too fine for the shape is coarsened to fit
   const ConvexPolyhedron tetra(generatePolyhedron(PolyhedronKind::Tetrahedron, 4, 1));
@@ -119,7 +124,8 @@ TEST(Cubemap3D, EveryDirectionFindsItsExitFaceInItsCell) {
     // random directions, at random distances (inside and outside)
     for (int i = 0; i < 20000; ++i) {
       const double z = rng.uniform(-1, 1), a = rng.uniform(0, 6.283185307179586);
-      const double r = std::sqrt(1 - z * z), scale = std::ldexp(rng.uniform(), static_cast<int>(rng.below(8)) - 6);
+      const double r = std::sqrt(1 - z * z),
+                   scale = std::ldexp(rng.uniform(), static_cast<int>(rng.below(8)) - 6);
       const Vec3 x{c.x + scale * r * std::cos(a), c.y + scale * r * std::sin(a), c.z + scale * z};
       missed += !check.listed(cm, x);
     }
@@ -223,7 +229,8 @@ TEST(Trace3D, WalkRecordsItsPath) {
   }
   // jump and walk: far fewer faces than sqrt(F) on average
   EXPECT_LT(steps / n, std::sqrt(5120.0));
-  std::printf("[ info     ] walk: %.1f faces visited per query on %zu faces\n", steps / n, p.faceCount());
+  std::printf("[ info     ] walk: %.1f faces visited per query on %zu faces\n", steps / n,
+              p.faceCount());
 }
 
 TEST(Trace3D, HalfspaceTestsUntilTheFirstOuterSide) {

@@ -29,11 +29,15 @@ struct Config {
 };
 
 // defaults, plus a one-cell-per-face grid (crowded cells, deep quadtrees) and a fine one
-constexpr Config kConfigs[] = {{Method3D::Halfspace, 0}, {Method3D::Walk, 0}, {Method3D::Cubemap, 0},
-                               {Method3D::Cubemap, 1},   {Method3D::Cubemap, 48}};
+constexpr Config kConfigs[] = {{Method3D::Halfspace, 0},
+                               {Method3D::Walk, 0},
+                               {Method3D::Cubemap, 0},
+                               {Method3D::Cubemap, 1},
+                               {Method3D::Cubemap, 48}};
 
 // the concrete class of `config`, its batch locate over `points`
-std::vector<Location> concreteBatch(const ConvexPolyhedron& p, Config config, const std::vector<Vec3>& points) {
+std::vector<Location> concreteBatch(const ConvexPolyhedron& p, Config config,
+                                    const std::vector<Vec3>& points) {
   std::vector<Location> out(points.size(), Location::Boundary);
   switch (config.method) {
     case Method3D::Halfspace: HalfspaceLocator(p).locate(points, out); break;
@@ -51,11 +55,11 @@ std::string show(Vec3 p) {
 }
 
 // one line describing a wrong answer
-std::string mismatch(const std::string& shape, Config config, const char* path, Vec3 p, Location got,
-                     Location want) {
+std::string mismatch(const std::string& shape, Config config, const char* path, Vec3 p,
+                     Location got, Location want) {
   std::ostringstream s;
-  s << shape << ' ' << toString(config.method) << '(' << config.resolution << ") " << path << " at " << show(p)
-    << ": got " << toString(got) << ", reference says " << toString(want);
+  s << shape << ' ' << toString(config.method) << '(' << config.resolution << ") " << path << " at "
+    << show(p) << ": got " << toString(got) << ", reference says " << toString(want);
   return s.str();
 }
 
@@ -72,7 +76,9 @@ TEST_P(LocateExact3D, EveryMethodMatchesTheReference) {
 
   Rng rng(0x3d00 + GetParam());
   std::vector<Vec3> points = generatePoints3D(p, shape.randomPoints, 21, false);
-  auto append = [&](const std::vector<Vec3>& more) { points.insert(points.end(), more.begin(), more.end()); };
+  auto append = [&](const std::vector<Vec3>& more) {
+    points.insert(points.end(), more.begin(), more.end());
+  };
   append(generatePoints3D(p, shape.nearPoints, 22, true));
   append(adversarial3d::surfacePoints(p, p.faceCount() > 1000 ? 500 : 1500, rng));
   append(adversarial3d::cubemapPoints(p, CubemapLocator(p), rng));
@@ -94,8 +100,9 @@ TEST_P(LocateExact3D, EveryMethodMatchesTheReference) {
 
   for (const Config& config : kConfigs) {
     // halfspace costs O(F) per point: on the larger shapes it checks every stride-th point
-    const std::size_t stride =
-        config.method == Method3D::Halfspace ? std::clamp<std::size_t>(p.faceCount() / 100, 1, 16) : 1;
+    const std::size_t stride = config.method == Method3D::Halfspace
+                                   ? std::clamp<std::size_t>(p.faceCount() / 100, 1, 16)
+                                   : 1;
     std::vector<Vec3> tested;
     std::vector<Location> expected;
     for (std::size_t i = 0; i < points.size(); i += stride) {
@@ -109,7 +116,8 @@ TEST_P(LocateExact3D, EveryMethodMatchesTheReference) {
     std::size_t wrong = 0;
     for (std::size_t i = 0; i < tested.size(); ++i) {
       const Location one = loc.locate(tested[i]);
-      for (auto [got, path] : {std::pair{one, "locate"}, std::pair{batch[i], "batch"}, std::pair{concrete[i], "concrete"}})
+      for (auto [got, path] : {std::pair{one, "locate"}, std::pair{batch[i], "batch"},
+                               std::pair{concrete[i], "concrete"}})
         if (got != expected[i] && ++wrong <= 5)
           ADD_FAILURE() << mismatch(name, config, path, tested[i], got, expected[i]);
       if (i % 97 == 0) {
@@ -118,15 +126,17 @@ TEST_P(LocateExact3D, EveryMethodMatchesTheReference) {
           ADD_FAILURE() << mismatch(name, config, "trace", tested[i], t.result, expected[i]);
       }
     }
-    EXPECT_EQ(wrong, 0u) << name << ' ' << toString(config.method) << '(' << config.resolution << ") on "
-                         << tested.size() << " points";
+    EXPECT_EQ(wrong, 0u) << name << ' ' << toString(config.method) << '(' << config.resolution
+                         << ") on " << tested.size() << " points";
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, LocateExact3D, testing::Range<std::size_t>(0, shapes3d::matrix().size()),
+INSTANTIATE_TEST_SUITE_P(Shapes, LocateExact3D,
+                         testing::Range<std::size_t>(0, shapes3d::matrix().size()),
                          [](const testing::TestParamInfo<std::size_t>& param) {
                            const auto& s = shapes3d::matrix()[param.param];
-                           std::string n = std::string(toString(s.kind)) + "_" + std::to_string(s.n);
+                           std::string n =
+                               std::string(toString(s.kind)) + "_" + std::to_string(s.n);
                            for (char& c : n)
                              if (c == '-') c = '_';
                            return n;
@@ -139,29 +149,42 @@ TEST(Locate3D, ExtremeScalesAndPoints) {
     for (Vec3& v : m.vertices) v = {v.x * scale, v.y * scale, v.z * scale};
     const ConvexPolyhedron p(m);
     const reftest::Reference ref(p);
-    const double big = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
-    std::vector<Vec3> pts = {{0, 0, 0}, {scale, scale, scale}, {scale, 0, 0}, {big, big, big}, {-big, 0, 0},
-                             {tiny, tiny, tiny}, {scale, scale, adversarial3d::ulps(scale, 1)}, {0, -scale, 0.5 * scale}};
+    const double big = std::numeric_limits<double>::max(),
+                 tiny = std::numeric_limits<double>::denorm_min();
+    std::vector<Vec3> pts = {{0, 0, 0},
+                             {scale, scale, scale},
+                             {scale, 0, 0},
+                             {big, big, big},
+                             {-big, 0, 0},
+                             {tiny, tiny, tiny},
+                             {scale, scale, adversarial3d::ulps(scale, 1)},
+                             {0, -scale, 0.5 * scale}};
     for (const Config& config : kConfigs) {
       const Locator3D loc(p, config.method, config.resolution);
-      for (Vec3 q : pts) EXPECT_EQ(loc.locate(q), ref.locate(q)) << scale << ' ' << toString(config.method) << show(q);
+      for (Vec3 q : pts)
+        EXPECT_EQ(loc.locate(q), ref.locate(q))
+            << scale << ' ' << toString(config.method) << show(q);
     }
   }
   // a box near the top of the double range: directions from its centre overflow
   MeshData m = shapes3d::cube();
-  for (Vec3& v : m.vertices) v = {1.25e308 + v.x * 2e307, 1.25e308 + v.y * 2e307, 1.25e308 + v.z * 2e307};
+  for (Vec3& v : m.vertices)
+    v = {1.25e308 + v.x * 2e307, 1.25e308 + v.y * 2e307, 1.25e308 + v.z * 2e307};
   const ConvexPolyhedron p(m);
   const reftest::Reference ref(p);
   for (const Config& config : kConfigs) {
     const Locator3D loc(p, config.method, config.resolution);
-    for (Vec3 q : std::vector<Vec3>{{-1.7e308, 1.25e308, 1.25e308}, {1.25e308, 1.25e308, 1.25e308}, {1.05e308, 1.05e308, 1.05e308}})
+    for (Vec3 q : std::vector<Vec3>{{-1.7e308, 1.25e308, 1.25e308},
+                                    {1.25e308, 1.25e308, 1.25e308},
+                                    {1.05e308, 1.05e308, 1.05e308}})
       EXPECT_EQ(loc.locate(q), ref.locate(q)) << toString(config.method) << show(q);
   }
 }
 
 TEST(Locate3D, NonFinitePointsAreOutside) {
   const ConvexPolyhedron p(shapes3d::cube());
-  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity(),
+               nan = std::numeric_limits<double>::quiet_NaN();
   for (Method3D m : kAllMethods3D) {
     const Locator3D loc(p, m);
     for (Vec3 q : std::vector<Vec3>{{inf, 0, 0}, {0, -inf, 0}, {0, 0, nan}}) {

@@ -40,8 +40,12 @@ Problem problemOf(MeshData (*parse)(std::string_view), const std::string& text) 
   }
   return {"no error", 0};
 }
-Problem offProblem(const std::string& text) { return problemOf(parseOff, text); }
-Problem objProblem(const std::string& text) { return problemOf(parseObj, text); }
+Problem offProblem(const std::string& text) {
+  return problemOf(parseOff, text);
+}
+Problem objProblem(const std::string& text) {
+  return problemOf(parseObj, text);
+}
 
 // a cube in OBJ with texture and normal references and statements to ignore
 std::string cubeObj() {
@@ -67,19 +71,27 @@ TEST(OffReader, ReadsACubeWithCommentsBlankLinesAndColours) {
 }
 
 TEST(OffReader, HeaderVariants) {
-  EXPECT_EQ(parseOff("OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n").faceCount(), 4u);
-  EXPECT_EQ(parseOff("4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n").faceCount(), 4u);
-  MeshData c = parseOff("COFF\n4 4 6\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n0 0 1 1 0 0 1\n"
-                        "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+  EXPECT_EQ(parseOff("OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n")
+                .faceCount(),
+            4u);
+  EXPECT_EQ(
+      parseOff("4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n").faceCount(),
+      4u);
+  MeshData c = parseOff(
+      "COFF\n4 4 6\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n0 0 1 1 0 0 1\n"
+      "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
   EXPECT_EQ(c.vertices[1], (Vec3{1, 0, 0}));
   EXPECT_THAT(offProblem("4OFF\n1 1 0\n").message, HasSubstr("only 3D OFF"));
   EXPECT_THAT(offProblem("nOFF\n3\n").message, HasSubstr("only 3D OFF"));
   EXPECT_THAT(offProblem("PLY\n").message, HasSubstr("not an OFF file"));
   EXPECT_THAT(offProblem("").message, HasSubstr("empty OFF file"));
   EXPECT_THAT(offProblem("OFF\n8\n").message, HasSubstr("needs the vertex and face counts"));
-  EXPECT_THAT(offProblem("OFF\n8 x 0\n").message, HasSubstr("face count is not a non-negative integer"));
-  EXPECT_THAT(offProblem("OFF\n-8 6 0\n").message, HasSubstr("vertex count is not a non-negative integer"));
-  EXPECT_THAT(offProblem("OFF\n8 6 0 9\n").message, HasSubstr("unexpected text after the OFF counts"));
+  EXPECT_THAT(offProblem("OFF\n8 x 0\n").message,
+              HasSubstr("face count is not a non-negative integer"));
+  EXPECT_THAT(offProblem("OFF\n-8 6 0\n").message,
+              HasSubstr("vertex count is not a non-negative integer"));
+  EXPECT_THAT(offProblem("OFF\n8 6 0 9\n").message,
+              HasSubstr("unexpected text after the OFF counts"));
 }
 
 TEST(OffReader, AbsurdHeaderCountsFailFast) {
@@ -109,12 +121,16 @@ TEST(OffReader, BadLinesNameTheirLine) {
   Problem q = offProblem(verts + "3 0 2 1\n3 0 1 4\n3 1 2 3\n3 2 0 3\n");
   EXPECT_THAT(q.message, HasSubstr("vertex index 4 is out of range: the file has 4 vertices"));
   EXPECT_EQ(q.line, 8u);
-  EXPECT_THAT(offProblem(verts + "3 0 -2 1\n").message, HasSubstr("vertex index -2 is out of range"));
+  EXPECT_THAT(offProblem(verts + "3 0 -2 1\n").message,
+              HasSubstr("vertex index -2 is out of range"));
   EXPECT_THAT(offProblem(verts + "2 0 1\n").message, HasSubstr("a face needs at least 3 vertices"));
-  EXPECT_THAT(offProblem(verts + "4 0 1 2\n").message, HasSubstr("announces 4 vertices but lists 3"));
+  EXPECT_THAT(offProblem(verts + "4 0 1 2\n").message,
+              HasSubstr("announces 4 vertices but lists 3"));
   EXPECT_THAT(offProblem(verts + "3 0 1 x\n").message, HasSubstr("not a vertex index: 'x'"));
-  EXPECT_THAT(offProblem(verts + "three 0 1 2\n").message, HasSubstr("starts with its vertex count"));
-  EXPECT_THAT(offProblem(verts + "3 0 2 1 1 2\n").message, HasSubstr("unexpected text after the face"));
+  EXPECT_THAT(offProblem(verts + "three 0 1 2\n").message,
+              HasSubstr("starts with its vertex count"));
+  EXPECT_THAT(offProblem(verts + "3 0 2 1 1 2\n").message,
+              HasSubstr("unexpected text after the face"));
   Problem t = offProblem(verts + "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n7 7 7\n");
   EXPECT_THAT(t.message, HasSubstr("unexpected text after the last face"));
   EXPECT_EQ(t.line, 11u);
@@ -143,7 +159,8 @@ TEST(ObjReader, BadLinesNameTheirLine) {
   EXPECT_THAT(objProblem("v 0 0 zero\n").message, HasSubstr("not a number: 'zero'"));
   EXPECT_THAT(objProblem("v 0 0 0 2\n").message, HasSubstr("weight w other than 1"));
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-  EXPECT_THAT(objProblem(tri + "f 1 2\n").message, HasSubstr("a face needs at least 3 vertices, this one has 2"));
+  EXPECT_THAT(objProblem(tri + "f 1 2\n").message,
+              HasSubstr("a face needs at least 3 vertices, this one has 2"));
   EXPECT_THAT(objProblem(tri + "f 0 1 2\n").message, HasSubstr("OBJ numbers vertices from 1"));
   EXPECT_THAT(objProblem(tri + "f 1 a 2\n").message, HasSubstr("not a vertex reference: 'a'"));
   EXPECT_THAT(objProblem(tri + "f 1 2 -4\n").message, HasSubstr("points before the first vertex"));
@@ -158,8 +175,10 @@ TEST(MeshWriters, RoundTripTheSameDoubles) {
   for (int format = 0; format < 2; ++format) {
     std::FILE* f = std::tmpfile();
     ASSERT_NE(f, nullptr);
-    if (format == 0) writeOff(f, m);
-    else writeObj(f, m);
+    if (format == 0)
+      writeOff(f, m);
+    else
+      writeObj(f, m);
     std::rewind(f);
     MeshData back = format == 0 ? parseOff(f) : parseObj(f);
     std::fclose(f);

@@ -64,7 +64,8 @@ TEST(Polyhedron3D, CubeIsTriangulatedAndOutward) {
       const std::uint32_t a = p.triangles()[t][k], b = p.triangles()[t][(k + 1) % 3];
       bool back = false;
       for (int j = 0; j < 3; ++j)
-        back |= p.triangles()[u][j] == b && p.triangles()[u][(j + 1) % 3] == a && p.neighbours()[u][j] == t;
+        back |= p.triangles()[u][j] == b && p.triangles()[u][(j + 1) % 3] == a &&
+                p.neighbours()[u][j] == t;
       EXPECT_TRUE(back) << t << ' ' << k;
     }
 }
@@ -78,9 +79,9 @@ TEST(Polyhedron3D, InvertedMeshIsReversedSilently) {
 
 TEST(Polyhedron3D, EqualVerticesMergeAndUnusedOnesGo) {
   MeshData m = shapes3d::cube();
-  m.addVertex({5, 5, 5});               // unused
+  m.addVertex({5, 5, 5});                             // unused
   const std::uint32_t copy = m.addVertex({1, 1, 1});  // equal to vertex 7
-  m.indices[m.faceStart[5] + 2] = copy;  // the top face uses the copy
+  m.indices[m.faceStart[5] + 2] = copy;               // the top face uses the copy
   ConvexPolyhedron p(m);
   EXPECT_EQ(p.vertexCount(), 8u);
   EXPECT_EQ(p.mergedVertices(), 1u);
@@ -130,7 +131,8 @@ TEST(Polyhedron3D, ZeroAreaFanTrianglesAreFlippedAway) {
   }
   reftest::Reference ref(p);
   CubemapLocator cm(p);
-  for (Vec3 q : std::vector<Vec3>{{0, -1, 1}, {0.5, -1, 1}, {0, 0, 1}, {0, -1, 0.5}, {0, -0.5, 0.5}, {0, -1, 1.5}})
+  for (Vec3 q : std::vector<Vec3>{
+           {0, -1, 1}, {0.5, -1, 1}, {0, 0, 1}, {0, -1, 0.5}, {0, -0.5, 0.5}, {0, -1, 1.5}})
     EXPECT_EQ(cm.locate(q), ref.locate(q));
 }
 
@@ -142,8 +144,13 @@ TEST(Polyhedron3D, ThinnerThanTheDoubleGridHasNoCentreButValidates) {
   reftest::Reference ref(p);
   for (const Method3D m : kAllMethods3D) {
     Locator3D loc(p, m);
-    for (Vec3 q : std::vector<Vec3>{{0, 0, z}, {0.25, 0.25, z}, {0.25, 0.25, up}, {0.1, 0.1, std::nextafter(up, 2 * z)},
-                                    {-0.1, 0.1, z}, {0.6, 0.6, z}, {0, 0, up}})
+    for (Vec3 q : std::vector<Vec3>{{0, 0, z},
+                                    {0.25, 0.25, z},
+                                    {0.25, 0.25, up},
+                                    {0.1, 0.1, std::nextafter(up, 2 * z)},
+                                    {-0.1, 0.1, z},
+                                    {0.6, 0.6, z},
+                                    {0, 0, up}})
       EXPECT_EQ(loc.locate(q), ref.locate(q)) << toString(m);
     EXPECT_TRUE(loc.trace({0.25, 0.25, z}).fallback || m == Method3D::Halfspace);
   }
@@ -191,7 +198,8 @@ TEST(Polyhedron3DReject, FaceWithTooFewVertices) {
 TEST(Polyhedron3DReject, DegenerateFaces) {
   MeshData m = shapes3d::cube();
   m.addFace({0, 0, 1});
-  EXPECT_THAT(failureOf(m).message, HasSubstr("face 6 is degenerate: it has fewer than 3 distinct vertices"));
+  EXPECT_THAT(failureOf(m).message,
+              HasSubstr("face 6 is degenerate: it has fewer than 3 distinct vertices"));
   MeshData twice = shapes3d::cube();
   twice.addFace({0, 1, 0, 2});
   EXPECT_THAT(failureOf(twice).message, HasSubstr("face 6 visits vertex 0"));
@@ -327,7 +335,8 @@ TEST(Hull3D, NearlyCoplanarPointsAreRepairedToAnExactHull) {
     Vec3 p{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
     double* c = i % 3 == 0 ? &p.x : i % 3 == 1 ? &p.y : &p.z;
     *c = (i % 2 ? 1.0 : -1.0);
-    for (std::uint64_t k = rng.below(3); k > 0; --k) *c = std::nextafter(*c, rng.below(2) ? 2.0 : -2.0);
+    for (std::uint64_t k = rng.below(3); k > 0; --k)
+      *c = std::nextafter(*c, rng.below(2) ? 2.0 : -2.0);
     pts.push_back(p);
   }
   ConvexPolyhedron h = ConvexPolyhedron::hullOf(pts);  // validated exactly, or it throws
@@ -379,8 +388,10 @@ TEST(Generate3D, PlatonicSolidsHaveTheirFaces) {
 
 TEST(Generate3D, GeodesicSizes) {
   EXPECT_EQ(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 20, 1)).faceCount(), 20u);
-  EXPECT_EQ(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 2000, 1)).faceCount(), 2000u);
-  EXPECT_EQ(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 1280, 1)).faceCount(), 1280u);
+  EXPECT_EQ(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 2000, 1)).faceCount(),
+            2000u);
+  EXPECT_EQ(ConvexPolyhedron(generatePolyhedron(PolyhedronKind::Geodesic, 1280, 1)).faceCount(),
+            1280u);
 }
 
 TEST(Generate3D, DegeneratePresetsAreWhatTheySay) {

@@ -38,10 +38,10 @@ enum class PolyhedronKind : std::uint8_t {
 std::string_view toString(PolyhedronKind k);
 std::optional<PolyhedronKind> parsePolyhedronKind(std::string_view name);
 inline constexpr PolyhedronKind kAllPolyhedronKinds[] = {
-    PolyhedronKind::Tetrahedron, PolyhedronKind::Cube,       PolyhedronKind::Octahedron,
+    PolyhedronKind::Tetrahedron,  PolyhedronKind::Cube,        PolyhedronKind::Octahedron,
     PolyhedronKind::Dodecahedron, PolyhedronKind::Icosahedron, PolyhedronKind::Geodesic,
-    PolyhedronKind::SphereHull,  PolyhedronKind::CubeHull,   PolyhedronKind::EllipsoidHull,
-    PolyhedronKind::ThinSlab,    PolyhedronKind::Offset,     PolyhedronKind::TinyFaces,
+    PolyhedronKind::SphereHull,   PolyhedronKind::CubeHull,    PolyhedronKind::EllipsoidHull,
+    PolyhedronKind::ThinSlab,     PolyhedronKind::Offset,      PolyhedronKind::TinyFaces,
     PolyhedronKind::Coplanar};
 
 // A mesh of that kind with about `n` triangles (see each kind), faces counter-clockwise seen

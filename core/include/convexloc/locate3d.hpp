@@ -35,7 +35,8 @@ std::string_view toString(Method3D m);
 // the method with that name, if any
 std::optional<Method3D> parseMethod3D(std::string_view name);
 // every method, in order
-inline constexpr Method3D kAllMethods3D[] = {Method3D::Halfspace, Method3D::Walk, Method3D::Cubemap};
+inline constexpr Method3D kAllMethods3D[] = {Method3D::Halfspace, Method3D::Walk,
+                                             Method3D::Cubemap};
 
 // one plane test: sign of orient3d(a, b, c, p) for face (a, b, c); > 0 is the inner side
 struct FaceTest {
@@ -55,15 +56,15 @@ struct WalkTest {
 struct Trace3D {
   Method3D method = Method3D::Halfspace;
   Location result = Location::Outside;
-  bool nonFinite = false;   // the point has an infinite or NaN coordinate
-  bool atCentre = false;    // the point is the centre itself
-  bool fallback = false;    // answered by testing every face (no centre, overflow, walk cap)
-  bool crowded = false;     // cubemap: the cell held many faces and was searched by a walk
-  std::optional<Vec3> centre;    // walk, cubemap: the centre strictly inside
-  int cubeFace = -1;             // cubemap: 0..5 for +x, -x, +y, -y, +z, -z
-  int level = -1;                // cubemap: quadtree level of the cell (0: the base grid)
+  bool nonFinite = false;      // the point has an infinite or NaN coordinate
+  bool atCentre = false;       // the point is the centre itself
+  bool fallback = false;       // answered by testing every face (no centre, overflow, walk cap)
+  bool crowded = false;        // cubemap: the cell held many faces and was searched by a walk
+  std::optional<Vec3> centre;  // walk, cubemap: the centre strictly inside
+  int cubeFace = -1;           // cubemap: 0..5 for +x, -x, +y, -y, +z, -z
+  int level = -1;              // cubemap: quadtree level of the cell (0: the base grid)
   std::uint32_t cellI = 0, cellJ = 0;  // cubemap: the cell's column (s) and row (t) at that level
-  double s = 0.0, t = 0.0;       // cubemap: the point's coordinates on the cube face, in [-1, 1]
+  double s = 0.0, t = 0.0;          // cubemap: the point's coordinates on the cube face, in [-1, 1]
   std::vector<std::uint32_t> path;  // walk: the faces visited, in order
   std::vector<WalkTest> steps;      // walk: every edge test
   std::vector<FaceTest> faces;      // plane tests, in order
@@ -73,16 +74,16 @@ struct Trace3D {
 struct Stats3D {
   std::size_t faces = 0;
   std::size_t vertices = 0;
-  std::size_t cells = 0;         // cubemap: leaf cells over all levels
-  std::size_t nodes = 0;         // cubemap: quadtree nodes, leaves and inner ones
-  std::size_t entries = 0;       // sum over cells of the faces listed
+  std::size_t cells = 0;    // cubemap: leaf cells over all levels
+  std::size_t nodes = 0;    // cubemap: quadtree nodes, leaves and inner ones
+  std::size_t entries = 0;  // sum over cells of the faces listed
   std::size_t maxPerCell = 0;
   double meanPerCell = 0.0;
   std::size_t crowdedCells = 0;  // cells searched by a walk rather than tested face by face
   std::uint32_t resolution = 0;  // cubemap: G, the base grid is G x G on each cube face
   int maxLevel = 0;              // cubemap: the deepest quadtree level
-  bool centred = false;          // a centre strictly inside exists (else every query tests all faces)
-  std::size_t bytes = 0;         // memory the locator holds, vertices included
+  bool centred = false;   // a centre strictly inside exists (else every query tests all faces)
+  std::size_t bytes = 0;  // memory the locator holds, vertices included
   double bytesPerFace = 0.0;
   double buildSeconds = 0.0;
   std::vector<std::size_t> histogram;  // histogram[k]: cells holding k faces; the last bucket
@@ -92,14 +93,14 @@ struct Stats3D {
 // One cubemap cell, for drawing and teaching: a square on a cube face and the pyramid it
 // spans from the centre.
 struct Cell3D {
-  std::uint32_t index = 0;       // position in cells()
-  int cubeFace = 0;              // 0..5 for +x, -x, +y, -y, +z, -z
-  int level = 0;                 // quadtree level (0: the base grid)
-  std::uint32_t i = 0, j = 0;    // column and row among the (G * 2^level)^2 cells of the face
+  std::uint32_t index = 0;     // position in cells()
+  int cubeFace = 0;            // 0..5 for +x, -x, +y, -y, +z, -z
+  int level = 0;               // quadtree level (0: the base grid)
+  std::uint32_t i = 0, j = 0;  // column and row among the (G * 2^level)^2 cells of the face
   double s0 = 0, s1 = 0, t0 = 0, t1 = 0;  // the square in cube-face coordinates
-  Vec3 apex{};                   // the centre, apex of the cell's pyramid
-  std::array<Vec3, 4> corners{};  // the square's corners on the drawing cube around the centre,
-                                  // (s0,t0), (s1,t0), (s1,t1), (s0,t1)
+  Vec3 apex{};                            // the centre, apex of the cell's pyramid
+  std::array<Vec3, 4> corners{};     // the square's corners on the drawing cube around the centre,
+                                     // (s0,t0), (s1,t0), (s1,t1), (s0,t1)
   std::vector<std::uint32_t> faces;  // faces listed in the cell
 };
 
@@ -109,7 +110,7 @@ inline constexpr std::size_t kCrowdedCell3D = 8;
 // === halfspace, O(F): inside iff on the inner side of every face plane (eq. 2)
 
 class HalfspaceLocator {
-public:
+ public:
   explicit HalfspaceLocator(const ConvexPolyhedron& polyhedron);
   Location locate(Vec3 p) const noexcept;
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
@@ -117,7 +118,7 @@ public:
   Stats3D stats() const;
   std::vector<Cell3D> cells() const { return {}; }
 
-private:
+ private:
   std::vector<Vec3> v_;
   std::vector<ConvexPolyhedron::Triangle> tri_;
   double buildSeconds_ = 0.0;
@@ -127,7 +128,7 @@ private:
 // centre through the point leaves by (ref. [11]), then one plane test
 
 class WalkLocator {
-public:
+ public:
   explicit WalkLocator(const ConvexPolyhedron& polyhedron);
   Location locate(Vec3 p) const noexcept;
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
@@ -137,13 +138,13 @@ public:
   // the centre, when the polyhedron has one (else every query tests all faces)
   std::optional<Vec3> centre() const noexcept { return centre_; }
 
-private:
+ private:
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
   std::vector<Vec3> v_;
   std::vector<ConvexPolyhedron::Triangle> tri_;
   std::vector<ConvexPolyhedron::Triangle> nb_;
-  std::vector<std::uint32_t> starts_;         // faces a walk may start from
+  std::vector<std::uint32_t> starts_;           // faces a walk may start from
   std::vector<std::array<float, 3>> startDir_;  // their directions from the centre, unit length
   std::optional<Vec3> centre_;
   std::uint32_t cap_ = 0;
@@ -158,7 +159,7 @@ private:
 // projection meets it (built conservatively with the query's own index function); the query
 // tests p against those faces' planes. Memory stays within 128 bytes per face plus a constant.
 class CubemapLocator {
-public:
+ public:
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
@@ -177,7 +178,7 @@ public:
   // the polyhedron)
   double cubeHalfSize() const noexcept { return half_; }
 
-private:
+ private:
   struct Node {
     std::uint32_t first = 0;  // leaf: first entry; inner node: first of its 4 children
     std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
@@ -192,8 +193,8 @@ private:
   Vec3 c_{};
   bool centred_ = false;
   std::uint32_t g_ = 1;
-  int depth_ = 0;          // the deepest level a cell may have
-  double scale_ = 0.0;     // G * 2^(depth - 1): (s + 1) * scale_ is the index at the deepest level
+  int depth_ = 0;       // the deepest level a cell may have
+  double scale_ = 0.0;  // G * 2^(depth - 1): (s + 1) * scale_ is the index at the deepest level
   double half_ = 1.0;
   double buildSeconds_ = 0.0;
 };
@@ -201,7 +202,7 @@ private:
 // === Any of the three, chosen at run time
 
 class Locator3D {
-public:
+ public:
   // builds `method`; `resolution` is the cubemap's G (0 chooses), ignored by the others
   Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution = 0);
   Method3D method() const noexcept { return static_cast<Method3D>(impl_.index()); }
@@ -212,9 +213,11 @@ public:
   std::vector<Cell3D> cells() const;
   // the underlying locator, for method-specific introspection
   template <class T>
-  const T* get() const noexcept { return std::get_if<T>(&impl_); }
+  const T* get() const noexcept {
+    return std::get_if<T>(&impl_);
+  }
 
-private:
+ private:
   std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> impl_;
 };
 

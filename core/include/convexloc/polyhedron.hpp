@@ -66,7 +66,7 @@ struct MeshData {
 // A closed convex polyhedron with positive volume, as triangles counter-clockwise from
 // outside. Immutable once built.
 class ConvexPolyhedron {
-public:
+ public:
   using Triangle = std::array<std::uint32_t, 3>;
 
   // Validates `mesh` and normalises it, in O(F log F):
@@ -133,7 +133,7 @@ public:
   double volume() const noexcept;
   double area() const noexcept;
 
-private:
+ private:
   ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32_t>* suspects);
 
   std::vector<Vec3> vertices_;
