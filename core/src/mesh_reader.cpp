@@ -33,84 +33,6 @@ std::string quote(std::string_view s) {
   return out + "'";
 }
 
-// Lines from a file (buffered, constant memory) or from text in memory, numbered from 1,
-// without their line ending.
-class LineSource {
- public:
-  explicit LineSource(std::FILE* file) : file_(file), buf_(1 << 16) {}
-  explicit LineSource(std::string_view text) : text_(text) {}
-
-  // the next line; false at the end of the input
-  bool next(std::string_view& line) {
-    if (!file_) {
-      if (pos_ >= text_.size()) return false;
-      std::size_t nl = text_.find('\n', pos_);
-      std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
-      line = text_.substr(pos_, end - pos_);
-      pos_ = nl == std::string_view::npos ? text_.size() : nl + 1;
-      return finish(line);
-    }
-    for (;;) {
-      const char* base = buf_.data();
-      const void* nl = std::memchr(base + begin_, '\n', end_ - begin_);
-      if (nl) {
-        std::size_t len = static_cast<std::size_t>(static_cast<const char*>(nl) - (base + begin_));
-        line = {base + begin_, len};
-        begin_ += len + 1;
-        return finish(line);
-      }
-      if (fill()) continue;
-      if (begin_ == end_) return false;
-      // the last line has no newline; fill() may have grown (moved) the buffer: not `base`
-      line = {buf_.data() + begin_, end_ - begin_};
-      begin_ = end_;
-      return finish(line);
-    }
-  }
-  // the number of the line last returned
-  std::size_t line() const noexcept { return line_; }
-
- private:
-  bool finish(std::string_view& line) {
-    ++line_;
-    // the limit is on the text: a CRLF line's '\r' is not counted (as in text_reader.cpp)
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.size() > kMaxLineBytes)
-      throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
-    return true;
-  }
-  bool fill() {
-    if (eof_) return false;
-    if (begin_ > 0) {
-      std::memmove(buf_.data(), buf_.data() + begin_, end_ - begin_);
-      end_ -= begin_;
-      begin_ = 0;
-    }
-    if (end_ == buf_.size()) {
-      if (buf_.size() >= kMaxLineBytes + 2)
-        throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_ + 1);
-      buf_.resize(std::min(buf_.size() * 2, kMaxLineBytes + 2));
-    }
-    std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
-    end_ += got;
-    if (got == 0) {
-      if (std::ferror(file_))
-        throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
-      eof_ = true;
-      return false;
-    }
-    return true;
-  }
-
-  std::FILE* file_ = nullptr;
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::vector<char> buf_;
-  std::size_t begin_ = 0, end_ = 0;
-  std::size_t line_ = 0;
-  bool eof_ = false;
-};
-
 // the whitespace-separated tokens of a line, up to a '#' comment
 class Tokens {
  public:
@@ -180,7 +102,7 @@ std::size_t headerCount(std::string_view token, std::string_view what, std::size
 }
 
 // the next line holding a token; false at the end of the input
-bool nextContent(LineSource& src, std::string_view& line) {
+bool nextContent(LineReader& src, std::string_view& line) {
   while (src.next(line)) {
     Tokens t(line);
     std::string_view tok;
@@ -190,7 +112,7 @@ bool nextContent(LineSource& src, std::string_view& line) {
 }
 
 // the OFF grammar of the header comment, line by line
-MeshData parseOffFrom(LineSource& src) {
+MeshData parseOffFrom(LineReader& src) {
   MeshData mesh;
   std::string_view line, tok;
   if (!nextContent(src, line)) throw ParseError("empty OFF file: no header", src.line());
@@ -302,7 +224,7 @@ MeshData parseOffFrom(LineSource& src) {
 }
 
 // the OBJ subset of the header comment: v and f statements, the rest ignored
-MeshData parseObjFrom(LineSource& src) {
+MeshData parseObjFrom(LineReader& src) {
   MeshData mesh;
   std::string_view line, tok;
   std::vector<long long> raw;  // a face's references, resolved to 0-based (may be forward)
@@ -411,22 +333,22 @@ std::optional<MeshFormat> meshFormatOf(std::string_view path) {
 }
 
 MeshData parseOff(std::FILE* file) {
-  LineSource src(file);
+  LineReader src(file);
   return parseOffFrom(src);
 }
 
 MeshData parseOff(std::string_view text) {
-  LineSource src(text);
+  LineReader src(text);
   return parseOffFrom(src);
 }
 
 MeshData parseObj(std::FILE* file) {
-  LineSource src(file);
+  LineReader src(file);
   return parseObjFrom(src);
 }
 
 MeshData parseObj(std::string_view text) {
-  LineSource src(text);
+  LineReader src(text);
   return parseObjFrom(src);
 }
 

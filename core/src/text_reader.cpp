@@ -111,9 +111,48 @@ bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) 
                    lineNo);
 }
 
-RowReader::RowReader(std::FILE* file, int dims) : file_(file), dims_(dims), buf_(1 << 16) {}
+LineReader::LineReader(std::FILE* file) : file_(file), buf_(1 << 16) {}
 
-bool RowReader::fill() {
+LineReader::LineReader(std::string_view text) : text_(text) {}
+
+bool LineReader::next(std::string_view& line) {
+  if (!file_) {
+    if (pos_ >= text_.size()) return false;
+    std::size_t nl = text_.find('\n', pos_);
+    std::size_t end = nl == std::string_view::npos ? text_.size() : nl;
+    line = text_.substr(pos_, end - pos_);
+    pos_ = nl == std::string_view::npos ? text_.size() : nl + 1;
+    return finish(line);
+  }
+  for (;;) {
+    const char* base = buf_.data();
+    const void* nl = std::memchr(base + begin_, '\n', end_ - begin_);
+    if (nl) {
+      std::size_t len = static_cast<std::size_t>(static_cast<const char*>(nl) - (base + begin_));
+      line = {base + begin_, len};
+      begin_ += len + 1;
+      return finish(line);
+    }
+    if (fill()) continue;
+    if (begin_ == end_) return false;
+    // the last line has no newline; fill() may have grown (moved) the buffer: not `base`
+    line = {buf_.data() + begin_, end_ - begin_};
+    begin_ = end_;
+    return finish(line);
+  }
+}
+
+// counts the line, drops a CR before the LF, and applies the length limit to the text
+bool LineReader::finish(std::string_view& line) {
+  ++line_;
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  if (line.size() > kMaxLineBytes)
+    throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
+  return true;
+}
+
+// moves the unread bytes to the front and reads more; grows the buffer for a long line
+bool LineReader::fill() {
   if (eof_) return false;
   if (begin_ > 0) {
     std::memmove(buf_.data(), buf_.data() + begin_, end_ - begin_);
@@ -121,6 +160,7 @@ bool RowReader::fill() {
     begin_ = 0;
   }
   if (end_ == buf_.size()) {
+    // room for the longest line, its CR and its LF
     if (buf_.size() >= kMaxLineBytes + 2)
       throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_ + 1);
     buf_.resize(std::min(buf_.size() * 2, kMaxLineBytes + 2));
@@ -135,30 +175,13 @@ bool RowReader::fill() {
   return true;
 }
 
+RowReader::RowReader(std::FILE* file, int dims) : lines_(file), dims_(dims) {}
+
 bool RowReader::next(double* out) {
-  for (;;) {
-    const char* base = buf_.data();
-    const void* nl = std::memchr(base + begin_, '\n', end_ - begin_);
-    std::string_view line;
-    if (nl) {
-      std::size_t len = static_cast<std::size_t>(static_cast<const char*>(nl) - (base + begin_));
-      line = {base + begin_, len};
-      begin_ += len + 1;
-    } else if (fill()) {
-      continue;
-    } else if (begin_ < end_) {
-      // the last line has no newline; fill() may have grown (moved) the buffer: not `base`
-      line = {buf_.data() + begin_, end_ - begin_};
-      begin_ = end_;
-    } else {
-      return false;
-    }
-    ++line_;
-    // the limit is on the text: a CRLF line's '\r' is not counted (the buffer has room for it)
-    if (line.size() - (!line.empty() && line.back() == '\r') > kMaxLineBytes)
-      throw ParseError("line longer than " + std::to_string(kMaxLineBytes) + " bytes", line_);
-    if (parseRow(line, line_, dims_, out)) return true;
-  }
+  std::string_view line;
+  while (lines_.next(line))
+    if (parseRow(line, lines_.line(), dims_, out)) return true;
+  return false;
 }
 
 InputFile::InputFile(const std::string& path) {

@@ -21,6 +21,32 @@ inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 // Throws ParseError carrying `lineNo` with the problem: a bad number, too few or too many.
 bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out);
 
+// The lines of a file, read through a buffer in constant memory, or of text in memory;
+// numbered from 1 and handed out without their line ending (LF, or CRLF).
+class LineReader {
+public:
+  // reads from `file`, which stays owned by the caller
+  explicit LineReader(std::FILE* file);
+  // reads `text`, which must outlive the reader
+  explicit LineReader(std::string_view text);
+  // the next line, valid until the following call; false at the end of the input.
+  // Throws ParseError for a line longer than kMaxLineBytes, Error on a read failure.
+  bool next(std::string_view& line);
+  // the number of the line last returned (1-based)
+  std::size_t line() const noexcept { return line_; }
+
+private:
+  bool finish(std::string_view& line);
+  bool fill();
+  std::FILE* file_ = nullptr;
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::vector<char> buf_;
+  std::size_t begin_ = 0, end_ = 0;
+  std::size_t line_ = 0;
+  bool eof_ = false;
+};
+
 // Streams the data rows of a file in constant memory.
 class RowReader {
 public:
@@ -30,16 +56,11 @@ public:
   // Throws ParseError (with the line) on bad text, Error on a read failure.
   bool next(double* out);
   // the line number of the row last returned (1-based)
-  std::size_t line() const noexcept { return line_; }
+  std::size_t line() const noexcept { return lines_.line(); }
 
 private:
-  bool fill();
-  std::FILE* file_;
+  LineReader lines_;
   int dims_;
-  std::vector<char> buf_;
-  std::size_t begin_ = 0, end_ = 0;
-  std::size_t line_ = 0;
-  bool eof_ = false;
 };
 
 // An opened file, closed when it goes; "-" is standard input. Throws Error when it
