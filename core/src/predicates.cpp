@@ -78,16 +78,20 @@ int exactOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   int lo = commonLowBit(in);
   for (std::size_t i = 0; i < in.size(); ++i) scaled(z[i], in[i], lo);
   for (std::size_t i = 0; i < 9; ++i) z[i] -= z[9 + i % 3];
-  // rows: (z0 z1 z2), (z3 z4 z5), (z6 z7 z8)
-  t[0] = z[4] * z[8] - z[5] * z[7];
-  t[1] = z[5] * z[6] - z[3] * z[8];
-  t[2] = z[3] * z[7] - z[4] * z[6];
-  t[0] *= z[0];
-  t[1] *= z[1];
-  t[2] *= z[2];
-  t[0] += t[1];
-  t[0] += t[2];
-  return sign(t[0]);
+  // rows (z0 z1 z2), (z3 z4 z5), (z6 z7 z8), expanded along the first row; every step
+  // writes into a thread-local integer, so a warm fallback allocates nothing
+  auto m = [](mpz_class& v) { return v.get_mpz_t(); };
+  auto minor = [&](mpz_class& out, int p, int q, int r, int s) {
+    mpz_mul(m(out), m(z[p]), m(z[q]));
+    mpz_submul(m(out), m(z[r]), m(z[s]));
+  };
+  minor(t[0], 4, 8, 5, 7);
+  minor(t[1], 5, 6, 3, 8);
+  mpz_mul(m(t[2]), m(t[0]), m(z[0]));
+  mpz_addmul(m(t[2]), m(t[1]), m(z[1]));
+  minor(t[0], 3, 7, 4, 6);
+  mpz_addmul(m(t[2]), m(t[0]), m(z[2]));
+  return sign(t[2]);
 }
 
 // a difference whose products cannot underflow or overflow in the 3D filter
