@@ -75,8 +75,10 @@ template <class Pred>
 inline double firstTrue(double lo, double hi, Pred pred) {
   if (pred(lo)) return lo;
   std::int64_t a = ordered(lo), b = ordered(hi);  // pred false at a, true at b
-  while (b - a > 1) {
-    std::int64_t m = a + (b - a) / 2;
+  // the gap between two ordered images can exceed the int64 range: measure it unsigned
+  auto gap = [&] { return static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a); };
+  while (gap() > 1) {
+    std::int64_t m = static_cast<std::int64_t>(static_cast<std::uint64_t>(a) + gap() / 2);
     if (pred(fromOrdered(m)))
       b = m;
     else
