@@ -63,7 +63,8 @@ inline void checkPolyhedron(const ConvexPolyhedron& poly) {
       std::uint32_t a = tri[t][k], b = tri[t][(k + 1) % 3];
       if (a >= v.size() || b >= v.size()) fail("a triangle index past the vertices");
       if (!edges.emplace(std::pair{a, b}, static_cast<std::uint32_t>(t)).second)
-        fail("the directed edge " + std::to_string(a) + "->" + std::to_string(b) + " is used twice");
+        fail("the directed edge " + std::to_string(a) + "->" + std::to_string(b) +
+             " is used twice");
     }
   for (std::size_t t = 0; t < tri.size(); ++t)
     for (int k = 0; k < 3; ++k) {
@@ -103,17 +104,17 @@ inline void addHardPoints3d(std::vector<Vec3>& out, const ConvexPolyhedron& poly
     Vec3 a = v[t[0]], b = v[t[1]], c = v[t[2]];
     out.push_back({a.x / 2 + b.x / 2, a.y / 2 + b.y / 2, a.z / 2 + b.z / 2});
     // the centroid (a sum of thirds may round past the largest double: then infinite)
-    out.push_back({a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3,
-                   a.z / 3 + b.z / 3 + c.z / 3});
+    out.push_back(
+        {a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3, a.z / 3 + b.z / 3 + c.z / 3});
   }
   if (auto c = poly.centre()) {
     out.push_back(*c);
     addNeighbours3d(out, *c);
   }
   const double big = 1.7976931348623157e308, inf = HUGE_VAL;
-  for (Vec3 p : {Vec3{big, 0, 0}, Vec3{0, -big, 0}, Vec3{0, 0, big}, Vec3{big, big, big},
-                 Vec3{0, 0, 0}, Vec3{-0.0, -0.0, -0.0}, Vec3{inf, 0, 0}, Vec3{0, -inf, 0},
-                 Vec3{0, 0, std::nan("")}})
+  for (Vec3 p :
+       {Vec3{big, 0, 0}, Vec3{0, -big, 0}, Vec3{0, 0, big}, Vec3{big, big, big}, Vec3{0, 0, 0},
+        Vec3{-0.0, -0.0, -0.0}, Vec3{inf, 0, 0}, Vec3{0, -inf, 0}, Vec3{0, 0, std::nan("")}})
     out.push_back(p);
 }
 
@@ -130,7 +131,9 @@ inline void checkMethods3d(const ConvexPolyhedron& poly, std::span<const Vec3> q
   auto tri = poly.triangles();
   std::vector<Location> reference(queries.size());
   // a point with an infinite or NaN coordinate is Outside (locate3d.hpp's contract)
-  auto finite = [](Vec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+  auto finite = [](Vec3 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  };
   for (std::size_t k = 0; k < queries.size(); ++k)
     reference[k] = finite(queries[k]) ? exactLocate3d(v, tri, queries[k]) : Location::Outside;
   std::vector<Location> batch(queries.size());

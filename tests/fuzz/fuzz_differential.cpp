@@ -3,9 +3,10 @@
 // Byte 0 picks the dimension (high bit: 3D) and the coordinate encoding (see
 // fuzz_support.hpp), byte 1 the grid resolution and how the shape is made (2D: the points as
 // given or their convexHull; 3D: Qhull's hull, core's exact smallHull, or the box of two
-// points), byte 2 the point count; the next bytes are the points, the rest query points. The queries also include every vertex, every edge midpoint and the one-ulp
-// neighbours of both. A shape core rejects is fine; a shape it accepts must be exactly what
-// it promises, and every method must give the exact answer for every query.
+// points), byte 2 the point count; the next bytes are the points, the rest query points. The
+// queries also include every vertex, every edge midpoint and the one-ulp neighbours of both. A
+// shape core rejects is fine; a shape it accepts must be exactly what it promises, and every method
+// must give the exact answer for every query.
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -70,8 +71,12 @@ convexloc::MeshData box(Vec3 a, Vec3 b) {
   convexloc::MeshData m;
   for (int i = 0; i < 8; ++i)
     m.addVertex({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
-  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}})
+  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1},
+                 {4, 5, 7, 6},
+                 {0, 1, 5, 4},
+                 {2, 6, 7, 3},
+                 {0, 4, 6, 2},
+                 {1, 3, 7, 5}})
     m.addFace(std::span<const std::uint32_t>(f));
   return m;
 }

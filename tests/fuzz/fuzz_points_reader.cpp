@@ -23,8 +23,12 @@ namespace {
 
 using namespace fuzz;
 
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
-bool digit(char c) { return c >= '0' && c <= '9'; }
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+bool digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // length of the decimal at the start of s ([+-]? (d+ (. d*)? | . d+) ([eE] [+-]? d+)?), 0 if none
 std::size_t decimalLength(std::string_view s) {
@@ -133,8 +137,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (int k = 0; k < dims; ++k) {
         double w = want.values[static_cast<std::size_t>(k)];
         if (std::memcmp(&w, &row[k], sizeof w) != 0)
-          fail("line " + std::to_string(want.line) + " number " + std::to_string(k + 1) + ": read " +
-               show(row[k]) + ", strtod gives " + show(w));
+          fail("line " + std::to_string(want.line) + " number " + std::to_string(k + 1) +
+               ": read " + show(row[k]) + ", strtod gives " + show(w));
       }
       ++got;
     }

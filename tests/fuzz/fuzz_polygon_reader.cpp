@@ -21,7 +21,7 @@ using namespace fuzz;
 
 // The bytes as an anonymous in-memory file, named by a path readPoints2D can open.
 class MemPath {
-public:
+ public:
   MemPath(const std::uint8_t* data, std::size_t size) {
     fd_ = memfd_create("convexloc-fuzz", 0);
     if (fd_ < 0) fail("memfd_create failed");
@@ -37,7 +37,7 @@ public:
   MemPath& operator=(const MemPath&) = delete;
   const std::string& path() const noexcept { return path_; }
 
-private:
+ private:
   int fd_ = -1;
   std::string path_;
 };
@@ -63,8 +63,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
            "-line file: " + e.what());
     return 0;
   }
-  if (list.lastLine != lines) fail("readPoints2D counted " + std::to_string(list.lastLine) +
-                                   " lines, the file has " + std::to_string(lines));
+  if (list.lastLine != lines)
+    fail("readPoints2D counted " + std::to_string(list.lastLine) + " lines, the file has " +
+         std::to_string(lines));
   try {
     ConvexPolygon poly(list.points, list.lines);
     checkPolygon(poly, list.points);

@@ -69,7 +69,7 @@ inline std::string show(Vec3 p) {
 
 // The fuzzer's bytes as a read-only FILE (fmemopen on a copy; an empty input is a tmpfile).
 class MemFile {
-public:
+ public:
   MemFile(const std::uint8_t* data, std::size_t size) : copy_(data, data + size) {
     f_ = size ? fmemopen(copy_.data(), size, "rb") : std::tmpfile();
     if (!f_) fail("cannot open the input as a FILE");
@@ -79,7 +79,7 @@ public:
   MemFile& operator=(const MemFile&) = delete;
   std::FILE* get() const noexcept { return f_; }
 
-private:
+ private:
   std::vector<std::uint8_t> copy_;
   std::FILE* f_ = nullptr;
 };
@@ -88,7 +88,7 @@ private:
 
 // Reads the fuzzer's bytes front to back; past the end every read is zero.
 class ByteSource {
-public:
+ public:
   ByteSource(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
   bool empty() const noexcept { return pos_ >= size_; }
   std::size_t left() const noexcept { return pos_ < size_ ? size_ - pos_ : 0; }
@@ -110,7 +110,7 @@ public:
     return std::isfinite(v) ? v : std::copysign(0.0, v);
   }
 
-private:
+ private:
   const std::uint8_t* data_;
   std::size_t size_;
   std::size_t pos_ = 0;
@@ -119,18 +119,18 @@ private:
 // How the bytes of a coordinate are read, so that one input file exercises one family of
 // hard cases: exact lattices, huge offsets, wild scales, raw bit patterns.
 enum class Encoding : std::uint8_t {
-  SmallInt,     // integers in [-8, 7]
-  ScaledInt,    // integers in [-8, 7] times one power of two (2^-1074 .. 2^1019) per input
-  OffsetInt,    // a large common offset plus integers in [-8, 7] times a small step
-  MixedScale,   // integers in [-8, 7] each times its own power of two: scales 10^600 apart
-  Raw,          // any finite double
-  Circle,       // points on a circle of radius 2^k, angle from 16 bits
+  SmallInt,    // integers in [-8, 7]
+  ScaledInt,   // integers in [-8, 7] times one power of two (2^-1074 .. 2^1019) per input
+  OffsetInt,   // a large common offset plus integers in [-8, 7] times a small step
+  MixedScale,  // integers in [-8, 7] each times its own power of two: scales 10^600 apart
+  Raw,         // any finite double
+  Circle,      // points on a circle of radius 2^k, angle from 16 bits
 };
 inline constexpr int kEncodings = 6;
 
 // reads coordinates in one Encoding; the parameters of the encoding come from the bytes
 class CoordinateReader {
-public:
+ public:
   CoordinateReader(ByteSource& src, Encoding e) : src_(src), e_(e) {
     // one read per statement: the order of reads must not depend on the compiler
     scale_ = std::ldexp(1.0, static_cast<int>(src_.u16() % 2094) - 1074);
@@ -141,8 +141,7 @@ public:
   Vec2 point() noexcept {
     switch (e_) {
       case Encoding::SmallInt: return {double(src_.smallInt()), double(src_.smallInt())};
-      case Encoding::ScaledInt:
-        return {src_.smallInt() * scale_, src_.smallInt() * scale_};
+      case Encoding::ScaledInt: return {src_.smallInt() * scale_, src_.smallInt() * scale_};
       case Encoding::OffsetInt:
         return {offset_ + src_.smallInt() * step_, offset_ + src_.smallInt() * step_};
       case Encoding::MixedScale: return {mixed(), mixed()};
@@ -168,7 +167,7 @@ public:
     return {xy.x, xy.y, z.x};
   }
 
-private:
+ private:
   double mixed() noexcept {
     int k = src_.smallInt();
     int e = static_cast<int>(src_.u16() % 2094) - 1074;
@@ -188,8 +187,10 @@ private:
 inline int exactOrient(Vec2 a, Vec2 b, Vec2 c) {
   static_assert(std::numeric_limits<long double>::digits == 64, "x87 extended precision");
   {
-    long double dx1 = static_cast<long double>(b.x) - a.x, dy1 = static_cast<long double>(b.y) - a.y;
-    long double dx2 = static_cast<long double>(c.x) - a.x, dy2 = static_cast<long double>(c.y) - a.y;
+    long double dx1 = static_cast<long double>(b.x) - a.x,
+                dy1 = static_cast<long double>(b.y) - a.y;
+    long double dx2 = static_cast<long double>(c.x) - a.x,
+                dy2 = static_cast<long double>(c.y) - a.y;
     long double left = dx1 * dy2, right = dy1 * dx2;
     long double det = left - right;
     constexpr long double kEpsL = 0x1p-64L;
@@ -198,7 +199,8 @@ inline int exactOrient(Vec2 a, Vec2 b, Vec2 c) {
     if (-det > bound) return -1;
   }
   for (Vec2 p : {a, b, c})
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("exactOrient needs finite points, got " + show(p));
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      fail("exactOrient needs finite points, got " + show(p));
   // kept between calls: GMP reuses their storage instead of allocating each time
   thread_local mpq_class ax, ay, dx1, dy1, dx2, dy2;
   ax = a.x;

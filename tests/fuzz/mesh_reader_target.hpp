@@ -49,8 +49,8 @@ void meshReaderTarget(const std::uint8_t* data, std::size_t size, ReadText readT
       r.error = e.what();
       if (r.error.empty()) fail("a ParseError without a message");
       if (r.line > lines)
-        fail("ParseError names line " + std::to_string(r.line) + " of a " +
-             std::to_string(lines) + "-line file: " + r.error);
+        fail("ParseError names line " + std::to_string(r.line) + " of a " + std::to_string(lines) +
+             "-line file: " + r.error);
     }
     return r;
   };
@@ -60,7 +60,8 @@ void meshReaderTarget(const std::uint8_t* data, std::size_t size, ReadText readT
   if (fromText.mesh.has_value() != fromFile.mesh.has_value() || fromText.line != fromFile.line ||
       fromText.error != fromFile.error)
     fail("the text reader says '" + fromText.error + "' (line " + std::to_string(fromText.line) +
-         "), the FILE reader '" + fromFile.error + "' (line " + std::to_string(fromFile.line) + ")");
+         "), the FILE reader '" + fromFile.error + "' (line " + std::to_string(fromFile.line) +
+         ")");
   if (!fromText.mesh) return;
   const MeshData& mesh = *fromText.mesh;
   checkSameMesh(mesh, *fromFile.mesh);

@@ -53,9 +53,9 @@ TEST(HostileCore, ExtremeNumbersReadAsTheNearestDouble) {
   EXPECT_TRUE(same(parseOne("-1.7976931348623157e308"), -kMax));
   EXPECT_TRUE(same(parseOne("5e-324"), kTiny));
   EXPECT_TRUE(same(parseOne("4.9406564584124654e-324"), kTiny));
-  EXPECT_TRUE(same(parseOne("3e-324"), kTiny));                  // rounds up to the smallest
-  EXPECT_TRUE(same(parseOne("2.4703282292062328e-324"), kTiny)); // just above half of it
-  EXPECT_TRUE(same(parseOne("2.4703282292062327e-324"), 0.0));   // just below: zero
+  EXPECT_TRUE(same(parseOne("3e-324"), kTiny));                   // rounds up to the smallest
+  EXPECT_TRUE(same(parseOne("2.4703282292062328e-324"), kTiny));  // just above half of it
+  EXPECT_TRUE(same(parseOne("2.4703282292062327e-324"), 0.0));    // just below: zero
   EXPECT_TRUE(same(parseOne("-2e-324"), -0.0));
   EXPECT_TRUE(same(parseOne("1e-99999"), 0.0));
   EXPECT_TRUE(same(parseOne("-0.0"), -0.0));
@@ -177,7 +177,9 @@ TEST(HostileCore, ExtremePolygonsAreExactWithEveryMethod) {
   convexloc::Rng rng(300);
   // near the largest double: differences overflow
   checkEveryMethod({{-kMax, -kMax}, {kMax, -kMax}, {kMax, kMax}, {-kMax, kMax}}, n,
-                   [&](std::size_t) { return Vec2{spread(rng, 1000, 1023), spread(rng, 1000, 1023)}; });
+                   [&](std::size_t) {
+                     return Vec2{spread(rng, 1000, 1023), spread(rng, 1000, 1023)};
+                   });
   checkEveryMethod({{-kMax, -kMax}, {kMax, 0}, {0, kMax}}, n, [&](std::size_t) {
     return Vec2{spread(rng, -1074, 1023), spread(rng, -1074, 1023)};
   });

@@ -69,8 +69,8 @@ const std::string kTetraFaces = "3 0 1 2\n3 0 2 3\n3 0 3 1\n3 1 3 2\n";
 TEST(HostileMesh, AbsurdHeaderCountsFailFastWithoutAllocating) {
   const long before = peakKiB();
   auto t0 = std::chrono::steady_clock::now();
-  expectError(read("OFF\n4 1000000000000 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + kTetraFaces, true),
-              2, "announces 1000000000000 faces; at most 134217728 are supported");
+  expectError(read("OFF\n4 1000000000000 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + kTetraFaces, true), 2,
+              "announces 1000000000000 faces; at most 134217728 are supported");
   expectError(read("OFF 99999999999999999999999 4 0\n", true), 1, "");
   expectError(read("OFF\n1000000000000 4\n0 0 0\n", true), 2, "1000000000000 vertices");
   expectError(read("OFF\n-4 4\n", true), 2, "not a non-negative integer");
@@ -108,7 +108,8 @@ TEST(HostileMesh, TheLineLimitIsExact) {
     std::string rest = std::string("1 0 0") + end + "0 1 0" + end + "0 0 1" + end;
     Outcome at = read(head + vertexLine("0 0 0", kMaxLineBytes) + end + rest + kTetraFaces, true);
     EXPECT_TRUE(at.mesh.has_value()) << at.error;
-    Outcome past = read(head + vertexLine("0 0 0", kMaxLineBytes + 1) + end + rest + kTetraFaces, true);
+    Outcome past =
+        read(head + vertexLine("0 0 0", kMaxLineBytes + 1) + end + rest + kTetraFaces, true);
     expectError(past, 3, "line longer than 1048576 bytes");
     Outcome obj = read(vertexLine("v 0 0 0", kMaxLineBytes + 1) + end, false);
     expectError(obj, 1, "line longer than 1048576 bytes");

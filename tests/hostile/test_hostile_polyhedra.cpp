@@ -52,7 +52,9 @@ MeshData tetrahedron(double s, Vec3 at = {}) {
 std::vector<Vec3> spread(std::size_t n, int lo, int hi, std::uint64_t seed) {
   convexloc::Rng rng(seed);
   auto one = [&] {
-    double v = std::ldexp(1 + rng.uniform(), lo + static_cast<int>(rng.below(static_cast<std::uint64_t>(hi - lo + 1))));
+    double v =
+        std::ldexp(1 + rng.uniform(),
+                   lo + static_cast<int>(rng.below(static_cast<std::uint64_t>(hi - lo + 1))));
     return rng.below(2) ? -v : v;
   };
   std::vector<Vec3> out;
@@ -73,7 +75,11 @@ TEST(HostileMesh, ExtremePolyhedraAreExactWithEveryMethod) {
   for (Vec3 p : {Vec3{-1e150, -1e-150, 0}, Vec3{1e150, -1e-150, 0}, Vec3{0, 1e150, 0},
                  Vec3{0, 0, 1e-150}, Vec3{0, 0, -1e150}})
     cone.addVertex(p);
-  for (auto f : {std::array<std::uint32_t, 3>{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 4}, {2, 1, 4},
+  for (auto f : {std::array<std::uint32_t, 3>{0, 1, 3},
+                 {1, 2, 3},
+                 {2, 0, 3},
+                 {0, 2, 4},
+                 {2, 1, 4},
                  {1, 0, 4}})
     cone.addFace(std::span<const std::uint32_t>(f));
   checkEveryMethod(cone, spread(n, -500, 500, 4));
@@ -81,8 +87,12 @@ TEST(HostileMesh, ExtremePolyhedraAreExactWithEveryMethod) {
   MeshData slab;
   for (int i = 0; i < 8; ++i)
     slab.addVertex({i & 1 ? 1e150 : -1e150, i & 2 ? 1e150 : -1e150, i & 4 ? 1e-150 : 0});
-  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}})
+  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1},
+                 {4, 5, 7, 6},
+                 {0, 1, 5, 4},
+                 {2, 6, 7, 3},
+                 {0, 4, 6, 2},
+                 {1, 3, 7, 5}})
     slab.addFace(std::span<const std::uint32_t>(f));
   checkEveryMethod(slab, spread(n, -520, 520, 5));
 }
@@ -97,8 +107,12 @@ TEST(HostileMesh, ABoxThinAlongTwoAxesIsValid) {
   MeshData box;
   for (int i = 0; i < 8; ++i)
     box.addVertex({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
-  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                 {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}})
+  for (auto f : {std::array<std::uint32_t, 4>{0, 2, 3, 1},
+                 {4, 5, 7, 6},
+                 {0, 1, 5, 4},
+                 {2, 6, 7, 3},
+                 {0, 4, 6, 2},
+                 {1, 3, 7, 5}})
     box.addFace(std::span<const std::uint32_t>(f));
   checkEveryMethod(box, {{1e300, 1e150, -1e160}, {1e300, 1e161, -1e160}, {-1, 1e150, -1e160}});
 }
@@ -161,7 +175,9 @@ TEST(HostileCli3D, ExtremeCoordinatesEveryMethod) {
       for (auto& f : faces) std::swap(f[1], f[2]);
     std::string want;
     for (Vec3 p : q)
-      want += std::string(convexloc::toString(fuzz::exactLocate3d(std::span<const Vec3>(v), faces, p))) + "\n";
+      want += std::string(
+                  convexloc::toString(fuzz::exactLocate3d(std::span<const Vec3>(v), faces, p))) +
+              "\n";
     for (const char* m : kMethods3D) {
       ToolRun r = runTool({"classify", dir.file("t.off"), dir.file("q.txt"), "--method", m});
       EXPECT_EQ(r.status, 0) << m << ": " << r.err;
