@@ -70,8 +70,21 @@ double parseNumber(std::string_view s, std::size_t& pos, std::size_t lineNo) {
 
 }  // namespace
 
+namespace {
+
+// parseRow on a line whose line ending is already gone
+bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* out);
+
+}  // namespace
+
 bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  return parseFields(line, lineNo, dims, out);
+}
+
+namespace {
+
+bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* out) {
   std::size_t pos = 0;
   while (pos < line.size() && isBlank(line[pos])) ++pos;
   if (pos == line.size() || line[pos] == '#') return false;
@@ -110,6 +123,8 @@ bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) 
                        quote(line.substr(extra)),
                    lineNo);
 }
+
+}  // namespace
 
 LineReader::LineReader(std::FILE* file) : file_(file), buf_(1 << 16) {}
 
@@ -179,8 +194,9 @@ RowReader::RowReader(std::FILE* file, int dims) : lines_(file), dims_(dims) {}
 
 bool RowReader::next(double* out) {
   std::string_view line;
+  // the LineReader already dropped the line's one CR; another one is text
   while (lines_.next(line))
-    if (parseRow(line, lines_.line(), dims_, out)) return true;
+    if (parseFields(line, lines_.line(), dims_, out)) return true;
   return false;
 }
 

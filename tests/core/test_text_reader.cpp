@@ -282,3 +282,15 @@ TEST(ReadPoints2D, MissingFileIsAnError) {
 }
 
 }  // namespace
+
+// found by fuzz_points_reader: only the one CR before the LF is a line ending; a second CR
+// is text, as parseRow says for the same line (the corpus keeps the fuzzer's input)
+TEST(RowReader, OnlyOneCarriageReturnEndsALine) {
+  ParseError e = readError("0 3\r\r\n1 2\r\n");
+  EXPECT_EQ(e.line(), 1u);
+  double out[2];
+  EXPECT_THROW(parseRow("0 3\r\r", 1, 2, out), ParseError);
+  Rows rows = readAll("0 3\r\n1 2\r\n");
+  ASSERT_EQ(rows.values.size(), 2u);
+  EXPECT_EQ(rows.values[1], (std::pair<double, double>{1, 2}));
+}
