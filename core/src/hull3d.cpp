@@ -1,5 +1,6 @@
 // convexloc — convex hulls of point clouds through Qhull (reentrant API), made exactly
 // convex. Qhull's macros stay inside this file.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -110,6 +111,15 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
                           (points.size() < 4 ? " (a hull needs at least 4 points)" : ""));
   }
 
+  // Qhull works in doubles and overflows on coordinates near 1e190 (it squares them for its
+  // normals, and crashed on such input); it only decides which points form the hull, which
+  // is then checked exactly, so it gets the coordinates scaled by one power of two (exact
+  // but for points 2^1000 times smaller than the largest, which may become zero there).
+  double largest = 0.0;
+  for (Vec3 p : points)
+    largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  const int shift = -std::ilogb(largest);  // largest is > 0: the points span a volume
+
   std::vector<std::uint8_t> dropped(points.size(), 0);
   std::string lastProblem;
   for (int round = 0; round < kRepairRounds; ++round) {
@@ -119,7 +129,8 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       if (dropped[i]) continue;
       mesh.vertices.push_back(points[i]);
-      coords.insert(coords.end(), {points[i].x, points[i].y, points[i].z});
+      coords.insert(coords.end(), {std::ldexp(points[i].x, shift), std::ldexp(points[i].y, shift),
+                                   std::ldexp(points[i].z, shift)});
     }
     {
       QhullRun qhull;

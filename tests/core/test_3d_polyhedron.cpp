@@ -343,6 +343,25 @@ TEST(Hull3D, NearlyCoplanarPointsAreRepairedToAnExactHull) {
   EXPECT_NEAR(h.volume(), 8.0, 1e-9);
 }
 
+TEST(Hull3D, HugeAndTinyCoordinatesGiveTheirHull) {
+  // Qhull squares coordinates: near 2^628 it overflowed and crashed (found by the
+  // differential fuzz target); the hull must come out exact at any scale
+  for (int e : {628, 1000, -1000, -1060}) {
+    SCOPED_TRACE(e);
+    // an octahedron and a point inside it
+    std::vector<Vec3> pts = {{4, 0, 0}, {-4, 0, 0}, {0, 4, 0}, {0, -4, 0}, {0, 0, 4}, {0, 0, -4},
+                             {1, 1, 1}};
+    for (Vec3& p : pts) p = {std::ldexp(p.x, e - 2), std::ldexp(p.y, e - 2), std::ldexp(p.z, e - 2)};
+    ConvexPolyhedron h = ConvexPolyhedron::hullOf(pts);
+    EXPECT_EQ(h.vertexCount(), 6u);
+    EXPECT_EQ(h.faceCount(), 8u);
+    reftest::Reference ref(h);
+    ASSERT_TRUE(ref.sound());
+    EXPECT_EQ(ref.locate(pts[6]), Location::Inside);
+    for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(ref.locate(pts[i]), Location::Boundary);
+  }
+}
+
 TEST(Hull3D, Rejections) {
   std::vector<Vec3> flat = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}};
   try {
