@@ -9,6 +9,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "radii.hpp"
 
 namespace convexloc {
 namespace {
@@ -30,6 +31,7 @@ struct NoSink {
   void outsideBox() {}
   void atCentre() {}
   void apex(Vec2) {}
+  void radius(double, float, float, bool) {}
 };
 
 // records every step into a Trace2D
@@ -45,6 +47,12 @@ struct TraceSink {
   void outsideBox() { t.outsideBox = true; }
   void atCentre() { t.atCentre = true; }
   void apex(Vec2 a) { t.apex = a; }
+  void radius(double d2, float in2, float out2, bool decided) {
+    t.distance = std::sqrt(d2);
+    t.innerRadius = std::sqrt(static_cast<double>(in2));
+    t.outerRadius = std::sqrt(static_cast<double>(out2));
+    t.byRadius = decided;
+  }
 };
 
 // orient2d of p against edge e of the ring v
@@ -652,6 +660,7 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
     // keep an empty table and answer by bisection over the fan from vertex 0
     c_ = v_[0];
     offsets_.assign(cells + 1, 0);
+    radii_.assign(cells, {0.0f, std::numeric_limits<float>::infinity()});  // decide nothing
     pad();
     buildSeconds_ = secondsSince(t0);
     return;
@@ -703,8 +712,56 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
         break;
       }
   }
+  buildRadii();
   pad();
   buildSeconds_ = secondsSince(t0);
+}
+
+namespace {
+
+// A lower bound on the squared distance from c to the line through a and b, for c strictly
+// on its inner side (0 when the doubles cannot bound it: underflow, overflow). The cross
+// product's filter bound makes the numerator a lower bound; the rest is a few roundings,
+// which the radius slack covers.
+double lineDistance2Below(Vec2 a, Vec2 b, Vec2 c) {
+  using detail::kCcwBound;
+  const double ux = b.x - a.x, uy = b.y - a.y, wx = c.x - a.x, wy = c.y - a.y;
+  const double l = ux * wy, m = uy * wx;
+  const double permanent = std::fabs(l) + std::fabs(m);
+  const double num = (l - m) - (kCcwBound * permanent + detail::kUnderflowSlack);
+  const double len2 = ux * ux + uy * uy;
+  if (!(permanent >= detail::kTinyPermanent) || !(num > 0) || !(len2 >= 0x1p-900) ||
+      !(len2 <= std::numeric_limits<double>::max()))
+    return 0.0;
+  return num * num / len2;
+}
+
+// the squared distance of p from c, as the query computes it
+inline double distance2(Vec2 p, Vec2 c) {
+  const double dx = p.x - c.x, dy = p.y - c.y;
+  return dx * dx + dy * dy;
+}
+
+}  // namespace
+
+void PolarLocator::buildRadii() {
+  const std::uint32_t cells = 8 * q_;
+  std::vector<double> in2(n_), out2(n_);
+  for (std::uint32_t e = 0; e < n_; ++e) {
+    const Vec2 a = v_[e], b = v_[e + 1 == n_ ? 0 : e + 1];
+    in2[e] = lineDistance2Below(a, b, c_);
+    out2[e] = std::max(distance2(a, c_), distance2(b, c_));
+  }
+  radii_.resize(cells);
+  for (std::uint32_t c = 0; c < cells; ++c) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+      lo = std::min(lo, in2[entries_[k]]);
+      hi = std::max(hi, out2[entries_[k]]);
+    }
+    if (offsets_[c] == offsets_[c + 1]) lo = 0.0, hi = std::numeric_limits<double>::infinity();
+    radii_[c] = {detail::innerBound(lo), detail::outerBound(hi)};
+  }
 }
 
 std::int64_t PolarLocator::cellOf(Vec2 p) const noexcept {
@@ -751,6 +808,12 @@ Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
   }
   const std::uint32_t cell = static_cast<std::uint32_t>(c);
   sink.cell(c, static_cast<int>(cell / q_));
+  const Radii r = radii_[cell];
+  const double d2 = distance2(p, c_);
+  const bool nearer = d2 < r.in2, farther = d2 > r.out2;
+  sink.radius(d2, r.in2, r.out2, nearer || farther);
+  if (nearer) return Location::Inside;
+  if (farther) return Location::Outside;
   const std::uint32_t b = offsets_[cell], k = offsets_[cell + 1] - b;
   if (k <= kCrowdedCell) return testEdges(ring(), entries_.data() + b, entries_.data() + b + k, p, sink);
   sink.crowded();
@@ -782,6 +845,10 @@ inline bool twoEdges(const Vec2* r, Vec2 p, Location& out) noexcept {
 Location PolarLocator::locate(Vec2 p) const noexcept {
   const std::int64_t c = cellOf(p);
   if (c >= 0) {
+    const Radii r = radii_[static_cast<std::size_t>(c)];
+    const double d2 = distance2(p, c_);
+    if (d2 < r.in2) return Location::Inside;
+    if (d2 > r.out2) return Location::Outside;
     const std::uint32_t b = offsets_[static_cast<std::size_t>(c)];
     const std::uint32_t k = offsets_[static_cast<std::size_t>(c) + 1] - b;
     Location out;
@@ -792,21 +859,36 @@ Location PolarLocator::locate(Vec2 p) const noexcept {
 }
 
 void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  // Blocks of points go through the table in stages (cell, then its run, then its edges),
-  // prefetching each stage's memory for the whole block before the next stage reads it, so
-  // the cache misses of a large table overlap instead of following one another.
+  // Blocks of points go through the table in stages (cell radii, then for the points they do
+  // not decide the cell's run, then its edges), prefetching each stage's memory for the
+  // whole block before the next stage reads it, so that the cache misses of a large table
+  // overlap instead of following one another.
   constexpr std::size_t kBlock = 32;
   const std::size_t n = std::min(points.size(), out.size());
   std::int64_t cell[kBlock];
-  std::uint32_t first[kBlock], count[kBlock];
+  std::uint32_t first[kBlock], count[kBlock], pending[kBlock];
   for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - i0);
     const Vec2* p = points.data() + i0;
+    Location* o = out.data() + i0;
     for (std::size_t j = 0; j < m; ++j) {
       cell[j] = cellOf(p[j]);
-      if (cell[j] >= 0) __builtin_prefetch(offsets_.data() + cell[j]);
+      if (cell[j] >= 0) __builtin_prefetch(radii_.data() + cell[j]);
     }
+    std::size_t left = 0;
     for (std::size_t j = 0; j < m; ++j) {
+      if (cell[j] >= 0) {
+        const Radii r = radii_[static_cast<std::size_t>(cell[j])];
+        const double d2 = distance2(p[j], c_);
+        // branch-free on the answer: most points stop here, inside or outside at random
+        o[j] = d2 > r.out2 ? Location::Outside : Location::Inside;
+        if ((d2 < r.in2) | (d2 > r.out2)) continue;
+        __builtin_prefetch(offsets_.data() + cell[j]);
+      }
+      pending[left++] = static_cast<std::uint32_t>(j);
+    }
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
       first[j] = 0;
       count[j] = 0;
       if (cell[j] < 0) continue;
@@ -814,19 +896,21 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
       count[j] = offsets_[static_cast<std::size_t>(cell[j]) + 1] - first[j];
       __builtin_prefetch(entries_.data() + first[j]);
     }
-    for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
       if (count[j] - 1 >= 2) continue;
       first[j] = entries_[first[j]];  // now the first edge
       __builtin_prefetch(v_.data() + first[j]);
       __builtin_prefetch(v_.data() + first[j] + 2);
     }
-    for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
       Location r;
       if (count[j] - 1 < 2 && twoEdges(v_.data() + first[j], p[j], r)) {
-        out[i0 + j] = r;
+        o[j] = r;
       } else {
         NoSink sink;
-        out[i0 + j] = run(p[j], sink);
+        o[j] = run(p[j], sink);
       }
     }
   }
@@ -843,7 +927,9 @@ Trace2D PolarLocator::trace(Vec2 p) const {
 
 Stats2D PolarLocator::stats() const {
   return csrStats(n_, offsets_,
-                  sizeof(*this) + bytesOf(v_) + bytesOf(offsets_) + bytesOf(entries_), buildSeconds_);
+                  sizeof(*this) + bytesOf(v_) + bytesOf(offsets_) + bytesOf(entries_) +
+                      bytesOf(radii_),
+                  buildSeconds_);
 }
 
 std::vector<Cell2D> PolarLocator::cells() const {

@@ -10,6 +10,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "radii.hpp"
 
 namespace convexloc {
 namespace {
@@ -36,6 +37,7 @@ struct NoSink {
   void fallback() {}
   void nonFinite() {}
   void atCentre() {}
+  void radius(double, float, float, bool) {}
 };
 
 // records every step into a Trace3D
@@ -53,6 +55,12 @@ struct TraceSink {
     t.t = tt;
   }
   void crowded() { t.crowded = true; }
+  void radius(double d2, float in2, float out2, bool decided) {
+    t.distance = std::sqrt(d2);
+    t.innerRadius = std::sqrt(static_cast<double>(in2));
+    t.outerRadius = std::sqrt(static_cast<double>(out2));
+    t.byRadius = decided;
+  }
   void fallback() { t.fallback = true; }
   void nonFinite() { t.nonFinite = true; }
   void atCentre() { t.atCentre = true; }
@@ -597,7 +605,8 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   half_ = extent;
   const PowerOfTwo scale(-std::ilogb(extent));  // extent scaled into [1, 2)
 
-  // the memory budget for the cells: 120 bytes per face in all, plus 32 KiB
+  // the memory budget for the cells: 120 bytes per face in all, plus 32 KiB (so that small
+  // polyhedra, the ones a lecturer draws, still get a grid worth showing)
   const std::size_t fixed = sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_);
   const std::size_t total = 120 * nf + 32768;
   const std::size_t budget = total > fixed ? total - fixed : 0;
@@ -816,7 +825,68 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   compact();
   nodes_.shrink_to_fit();
   entries_.shrink_to_fit();
+  buildRadii();
   buildSeconds_ = secondsSince(t0);
+}
+
+namespace {
+
+// A lower bound on the squared distance from c to the plane of face (a, b, d), for c strictly
+// on its inner side (0 when it cannot be bounded). In long double (64-bit significand, an
+// exponent range no product of doubles leaves): the triple product's rounding error is at
+// most 8 units of its permanent, the normal's length is bounded above component by
+// component; what rounding remains, the radius slack covers.
+double planeDistance2Below(Vec3 a, Vec3 b, Vec3 d, Vec3 c) {
+  using L = long double;
+  constexpr L eps = std::numeric_limits<L>::epsilon();  // 2^-63: twice the unit roundoff
+  const L ux = L(b.x) - a.x, uy = L(b.y) - a.y, uz = L(b.z) - a.z;
+  const L vx = L(d.x) - a.x, vy = L(d.y) - a.y, vz = L(d.z) - a.z;
+  const L wx = L(c.x) - a.x, wy = L(c.y) - a.y, wz = L(c.z) - a.z;
+  const L nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+  const L px = std::fabs(uy * vz) + std::fabs(uz * vy),
+          py = std::fabs(uz * vx) + std::fabs(ux * vz),
+          pz = std::fabs(ux * vy) + std::fabs(uy * vx);
+  // orient3d(a, b, d, c) > 0 on the inner side is the triple product (b-a)x(d-a).(c-a) < 0
+  const L det = -(nx * wx + ny * wy + nz * wz);
+  const L permanent = px * std::fabs(wx) + py * std::fabs(wy) + pz * std::fabs(wz);
+  const L num = det - 8 * eps * permanent;
+  if (!(num > 0)) return 0.0;
+  const L mx = std::fabs(nx) + 4 * eps * px, my = std::fabs(ny) + 4 * eps * py,
+          mz = std::fabs(nz) + 4 * eps * pz;
+  const L len2 = mx * mx + my * my + mz * mz;
+  if (!(len2 > 0)) return 0.0;
+  return static_cast<double>(num / len2 * num);
+}
+
+// the squared distance of p from c in long double, rounded to double
+double distance2Long(Vec3 p, Vec3 c) {
+  using L = long double;
+  const L dx = L(p.x) - c.x, dy = L(p.y) - c.y, dz = L(p.z) - c.z;
+  return static_cast<double>(dx * dx + dy * dy + dz * dz);
+}
+
+}  // namespace
+
+void CubemapLocator::buildRadii() {
+  const std::size_t nf = tri_.size();
+  std::vector<double> in2(nf), out2(nf);
+  std::vector<double> vertex2(v_.size());
+  for (std::size_t i = 0; i < v_.size(); ++i) vertex2[i] = distance2Long(v_[i], c_);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Triangle& t = tri_[f];
+    in2[f] = planeDistance2Below(v_[t[0]], v_[t[1]], v_[t[2]], c_);
+    out2[f] = std::max({vertex2[t[0]], vertex2[t[1]], vertex2[t[2]]});
+  }
+  for (Node& nd : nodes_) {
+    if (nd.count == kInner) continue;
+    double lo = nd.count ? HUGE_VAL : 0.0, hi = nd.count ? 0.0 : HUGE_VAL;
+    for (std::uint32_t e = nd.first; e < nd.first + nd.count; ++e) {
+      lo = std::min(lo, in2[entries_[e]]);
+      hi = std::max(hi, out2[entries_[e]]);
+    }
+    nd.in2 = detail::innerBound(lo);
+    nd.out2 = detail::outerBound(hi);
+  }
 }
 
 std::optional<Vec3> CubemapLocator::centre() const noexcept {
@@ -824,53 +894,68 @@ std::optional<Vec3> CubemapLocator::centre() const noexcept {
   return c_;
 }
 
-template <class Sink>
-Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
-  if (!finite(p)) {
-    sink.nonFinite();
-    return Location::Outside;
-  }
-  if (!centred_) {
-    sink.fallback();
-    return testAll(v_, tri_, p, sink);
-  }
-  const double dx = p.x - c_.x, dy = p.y - c_.y, dz = p.z - c_.z;
-  const double ax = std::fabs(dx), ay = std::fabs(dy), az = std::fabs(dz);
+int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
+  if (!centred_ || !finite(p)) return -1;
+  const double d[3] = {p.x - c_.x, p.y - c_.y, p.z - c_.z};
+  const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
   if (!(ax <= std::numeric_limits<double>::max() && ay <= std::numeric_limits<double>::max() &&
-        az <= std::numeric_limits<double>::max())) {
-    sink.fallback();  // the direction overflows
-    return testAll(v_, tri_, p, sink);
-  }
-  int a;
-  double major, du, dv;
-  if (ax >= ay && ax >= az) {
-    a = 0, major = dx, du = dy, dv = dz;
-  } else if (ay >= az) {
-    a = 1, major = dy, du = dz, dv = dx;
-  } else {
-    a = 2, major = dz, du = dx, dv = dy;
-  }
-  if (major == 0) {
-    sink.atCentre();  // d = 0: p is the centre, strictly inside
-    return Location::Inside;
-  }
-  const int face = 2 * a + (major < 0 ? 1 : 0);
+        az <= std::numeric_limits<double>::max()))
+    return -1;  // the direction overflows
+  // the dominant axis (x before y before z on ties), without a branch: random directions
+  // would mispredict one
+  constexpr int kU[3] = {1, 2, 0}, kV[3] = {2, 0, 1};
+  const int axis = ((ax >= ay) & (ax >= az)) ? 0 : 1 + static_cast<int>(!(ay >= az));
+  const double major = d[axis], du = d[kU[axis]], dv = d[kV[axis]];
+  if (major == 0) return 0;  // d = 0: p is the centre
+  a.face = 2 * axis + (major < 0 ? 1 : 0);
   const double m = std::fabs(major);
-  const double s = du / m, t = dv / m;
+  a.s = du / m;
+  a.t = dv / m;
+  a.d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   const std::uint64_t last = (static_cast<std::uint64_t>(g_) << depth_) - 1;
-  const std::uint64_t X = std::min(static_cast<std::uint64_t>((s + 1) * scale_), last);
-  const std::uint64_t Y = std::min(static_cast<std::uint64_t>((t + 1) * scale_), last);
-  std::uint32_t node = static_cast<std::uint32_t>(
-      (static_cast<std::uint64_t>(face) * g_ + (Y >> depth_)) * g_ + (X >> depth_));
-  int level = 0;
+  a.X = std::min(static_cast<std::uint64_t>((a.s + 1) * scale_), last);
+  a.Y = std::min(static_cast<std::uint64_t>((a.t + 1) * scale_), last);
+  a.node = static_cast<std::uint32_t>(
+      (static_cast<std::uint64_t>(a.face) * g_ + (a.Y >> depth_)) * g_ + (a.X >> depth_));
+  return 1;
+}
+
+std::uint32_t CubemapLocator::leafOf(const Aim& a, int& level) const noexcept {
+  std::uint32_t node = a.node;
+  level = 0;
   while (nodes_[node].count == kInner) {
     ++level;
     const int shift = depth_ - level;
     node = nodes_[node].first +
-           static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
+           static_cast<std::uint32_t>(((a.Y >> shift) & 1) * 2 + ((a.X >> shift) & 1));
   }
-  sink.cell(face, level, X >> (depth_ - level), Y >> (depth_ - level), s, t);
+  return node;
+}
+
+template <class Sink>
+Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
+  Aim a;
+  const int aimed = aim(p, a);
+  if (aimed == 0) {
+    sink.atCentre();  // strictly inside
+    return Location::Inside;
+  }
+  if (aimed < 0) {
+    if (!finite(p)) {
+      sink.nonFinite();
+      return Location::Outside;
+    }
+    sink.fallback();  // no centre, or the direction overflows
+    return testAll(v_, tri_, p, sink);
+  }
+  int level = 0;
+  const std::uint32_t node = leafOf(a, level);
+  sink.cell(a.face, level, a.X >> (depth_ - level), a.Y >> (depth_ - level), a.s, a.t);
   const Node leaf = nodes_[node];
+  const bool nearer = a.d2<leaf.in2, farther = a.d2> leaf.out2;
+  sink.radius(a.d2, leaf.in2, leaf.out2, nearer || farther);
+  if (nearer) return Location::Inside;
+  if (farther) return Location::Outside;
   const std::uint32_t* first = entries_.data() + leaf.first;
   if (leaf.count == 0) {
     sink.fallback();  // cannot happen (every direction leaves through some face); be safe
@@ -893,7 +978,46 @@ Location CubemapLocator::locate(Vec3 p) const noexcept {
 }
 
 void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  if (!centred_) {
+    locateAll(*this, points, out);
+    return;
+  }
+  // Blocks of points in stages: aim each and prefetch its base cell, then find each leaf
+  // and let its radii decide, prefetching the lists of the points they leave open, then the
+  // face tests; the cache misses of a large table overlap instead of following one another.
+  constexpr std::size_t kBlock = 32;
+  const std::size_t n = std::min(points.size(), out.size());
+  Aim aims[kBlock];
+  std::uint32_t leaf[kBlock], pending[kBlock];
+  for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - i0);
+    const Vec3* p = points.data() + i0;
+    Location* o = out.data() + i0;
+    std::size_t left = 0;
+    for (std::size_t j = 0; j < m; ++j) {
+      if (aim(p[j], aims[j]) > 0) {
+        __builtin_prefetch(nodes_.data() + aims[j].node);
+      } else {
+        aims[j].node = kNone;
+        pending[left++] = static_cast<std::uint32_t>(j);
+      }
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      if (aims[j].node == kNone) continue;
+      int level = 0;
+      leaf[j] = leafOf(aims[j], level);
+      const Node& nd = nodes_[leaf[j]];
+      const double d2 = aims[j].d2;
+      o[j] = d2 > nd.out2 ? Location::Outside : Location::Inside;
+      if ((d2 < nd.in2) | (d2 > nd.out2)) continue;
+      __builtin_prefetch(entries_.data() + nd.first);
+      pending[left++] = static_cast<std::uint32_t>(j);
+    }
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
+      o[j] = locate(p[j]);
+    }
+  }
 }
 
 Trace3D CubemapLocator::trace(Vec3 p) const {

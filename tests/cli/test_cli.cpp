@@ -852,7 +852,9 @@ TEST_F(Cli, Info3dAtMost128BytesPerFace) {
     ASSERT_EQ(r.code, 0) << r.err;
     auto b = bytesPerFace(r.out);
     ASSERT_EQ(b.size(), 3u) << r.out;
-    for (double v : b) EXPECT_LE(v, 128.0) << r.out;
+    // 128 bytes per face plus 32 KiB, the bound README gives; per face alone from 1000 faces
+    const double faces = std::stod(n) < 1000 ? std::stod(n) : 0.0;
+    for (double v : b) EXPECT_LE(v, faces > 0 ? 128.0 + 32768.0 / faces : 128.0) << r.out;
   }
 }
 

@@ -162,8 +162,10 @@ inline std::vector<Vec2> boundaryPoints(const convexloc::ConvexPolygon& polygon,
   return out;
 }
 
-// the polar locator's hard cases: its centre, its cell borders, axes and diagonals
-inline std::vector<Vec2> polarPoints(const convexloc::PolarLocator& polar) {
+// the polar locator's hard cases: its centre, its cell borders, axes and diagonals, and
+// the points of the polygon's edge lines nearest the centre
+inline std::vector<Vec2> polarPoints(const convexloc::PolarLocator& polar,
+                                     const convexloc::ConvexPolygon& polygon) {
   std::vector<Vec2> out;
   const Vec2 c = polar.centre();
   const Box2 box = polar.box();
@@ -179,6 +181,22 @@ inline std::vector<Vec2> polarPoints(const convexloc::PolarLocator& polar) {
       if (std::isfinite(p.x) && std::isfinite(p.y)) addUlpRing(out, p);
     }
   for (Vec2 d : dirs) out.push_back({c.x + d.x * kDenorm, c.y + d.y * kDenorm});
+  // the feet of the perpendiculars from the centre to sampled edge lines, where an edge lies
+  // nearest the centre and the cells' inner radii must not reach past it; a hair either side
+  {
+    const std::span<const Vec2> v = polygon.vertices();
+    for (std::size_t e : spread(v.size(), 96)) {
+      using L = long double;
+      const Vec2 a = v[e], b = v[(e + 1) % v.size()];
+      const L ux = L(b.x) - a.x, uy = L(b.y) - a.y;
+      const L k = ((L(c.x) - a.x) * ux + (L(c.y) - a.y) * uy) / (ux * ux + uy * uy);
+      const L fx = a.x + k * ux, fy = a.y + k * uy;
+      for (long double f : {1.0L - 1e-12L, 1.0L, 1.0L + 1e-12L}) {
+        Vec2 p{static_cast<double>(c.x + f * (fx - c.x)), static_cast<double>(c.y + f * (fy - c.y))};
+        if (std::isfinite(p.x) && std::isfinite(p.y)) addUlpRing(out, p);
+      }
+    }
+  }
   // cell borders: along each sampled cell's lower ray, at several distances
   std::vector<convexloc::Cell2D> cells = polar.cells();
   for (std::size_t i : spread(cells.size(), 96)) {

@@ -117,6 +117,23 @@ inline std::vector<Vec3> cubemapPoints(const convexloc::ConvexPolyhedron& p,
     for (int y = -1; y <= 1; ++y)
       for (int z = -1; z <= 1; ++z)
         if (x || y || z) alongRay(out, p, c, {double(x), double(y), double(z)});
+  // the feet of the perpendiculars from the centre to sampled face planes: there the face
+  // lies nearest the centre, where the cells' inner radii must not reach past it
+  auto v = p.vertices();
+  auto tri = p.triangles();
+  const std::size_t step = std::max<std::size_t>(1, tri.size() / 150);
+  for (std::size_t f = 0; f < tri.size(); f += step) {
+    using L = long double;
+    const Vec3 a = v[tri[f][0]], b = v[tri[f][1]], d = v[tri[f][2]];
+    const L ux = L(b.x) - a.x, uy = L(b.y) - a.y, uz = L(b.z) - a.z;
+    const L vx = L(d.x) - a.x, vy = L(d.y) - a.y, vz = L(d.z) - a.z;
+    const L nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const L k = (nx * (L(a.x) - c.x) + ny * (L(a.y) - c.y) + nz * (L(a.z) - c.z)) /
+                (nx * nx + ny * ny + nz * nz);
+    const Vec3 w{static_cast<double>(k * nx), static_cast<double>(k * ny),
+                 static_cast<double>(k * nz)};
+    if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) alongRay(out, p, c, w);
+  }
   // cell borders: s = -1 + i / K exactly, on random cube faces
   const double K = cm.resolution() / 2.0;
   for (int k = 0; k < 60; ++k) {

@@ -135,6 +135,58 @@ TEST(Cubemap3D, EveryDirectionFindsItsExitFaceInItsCell) {
   }
 }
 
+TEST(Cubemap3D, RadiusDecisionsAreSound) {
+  // Inside by the inner radius must mean: on the inner side of every face the cell lists;
+  // Outside by the outer radius: farther than every vertex of them. Checked exactly (or
+  // with a wide margin) on random and adversarial points, independently of core's filter.
+  for (auto [kind, n] : {std::pair{PolyhedronKind::Geodesic, std::size_t{1280}},
+                         std::pair{PolyhedronKind::Cube, std::size_t{12}},
+                         std::pair{PolyhedronKind::TinyFaces, std::size_t{2000}},
+                         std::pair{PolyhedronKind::ThinSlab, std::size_t{400}},
+                         std::pair{PolyhedronKind::Offset, std::size_t{500}}}) {
+    SCOPED_TRACE(std::string(toString(kind)));
+    const ConvexPolyhedron p(generatePolyhedron(kind, n, 3));
+    const CubemapLocator cm(p);
+    const Vec3 c = *cm.centre();
+    std::map<std::tuple<int, int, std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> lists;
+    for (const Cell3D& cell : cm.cells())
+      lists[{cell.cubeFace, cell.level, cell.i, cell.j}] = cell.faces;
+    Rng rng(12);
+    std::vector<Vec3> pts = generatePoints3D(p, 4000, 13, true);
+    auto more = adversarial3d::cubemapPoints(p, cm, rng);
+    pts.insert(pts.end(), more.begin(), more.end());
+    auto v = p.vertices();
+    auto d2 = [&](Vec3 q) {
+      const long double x = static_cast<long double>(q.x) - c.x,
+                        y = static_cast<long double>(q.y) - c.y,
+                        z = static_cast<long double>(q.z) - c.z;
+      return x * x + y * y + z * z;
+    };
+    std::size_t inner = 0, outer = 0;
+    for (Vec3 x : pts) {
+      const Trace3D t = cm.trace(x);
+      if (!t.byRadius) continue;
+      const std::string at =
+          std::to_string(x.x) + " " + std::to_string(x.y) + " " + std::to_string(x.z);
+      EXPECT_TRUE(t.faces.empty()) << at;
+      const auto it = lists.find({t.cubeFace, t.level, t.cellI, t.cellJ});
+      ASSERT_NE(it, lists.end()) << at;
+      for (std::uint32_t f : it->second) {
+        const auto& tri = p.triangles()[f];
+        if (t.result == Location::Inside) {
+          EXPECT_GT(reftest::orient(v[tri[0]], v[tri[1]], v[tri[2]], x), 0) << at << " face " << f;
+        } else {
+          ASSERT_EQ(t.result, Location::Outside) << at;
+          for (int k = 0; k < 3; ++k) EXPECT_GT(d2(x) * (1 + 1e-9L), d2(v[tri[k]])) << at;
+        }
+      }
+      (t.result == Location::Inside ? inner : outer) += 1;
+    }
+    EXPECT_GT(inner, 0u);
+    EXPECT_GT(outer, 0u);
+  }
+}
+
 TEST(Cubemap3D, StatsAndCellsAgree) {
   const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::TinyFaces, 3000, 4));
   const CubemapLocator cm(p);
@@ -196,12 +248,27 @@ TEST(Trace3D, CubemapTellsFaceCellAndTests) {
   EXPECT_DOUBLE_EQ(out.s, 1.0 / 5);
   EXPECT_DOUBLE_EQ(out.t, -2.0 / 5);
   EXPECT_GE(out.level, 0);
-  ASSERT_FALSE(out.faces.empty());
-  EXPECT_EQ(out.faces.back().sign, -1);
+  // far beyond every corner: the cell's outer radius decides, no face is tested
+  EXPECT_TRUE(out.byRadius);
+  EXPECT_GT(out.distance, out.outerRadius);
+  EXPECT_TRUE(out.faces.empty());
+  // nearer than every face plane: the inner radius decides
   const Trace3D neg = cm.trace({c.x, c.y, c.z - 0.5});
   EXPECT_EQ(neg.cubeFace, 5);  // -z
   EXPECT_EQ(neg.result, Location::Inside);
-  for (const FaceTest& f : neg.faces) EXPECT_EQ(f.sign, 1);
+  EXPECT_TRUE(neg.byRadius);
+  EXPECT_LT(neg.distance, neg.innerRadius);
+  // between the radii (the cube's half side 1 and half diagonal sqrt 3): plane tests decide
+  const Trace3D in = cm.trace({c.x + 0.9, c.y + 0.5, c.z + 0.1});
+  EXPECT_FALSE(in.byRadius);
+  EXPECT_EQ(in.result, Location::Inside);
+  ASSERT_FALSE(in.faces.empty());
+  for (const FaceTest& f : in.faces) EXPECT_EQ(f.sign, 1);
+  const Trace3D beyond = cm.trace({c.x + 1.2, c.y + 0.9, c.z + 0.5});
+  EXPECT_FALSE(beyond.byRadius);
+  EXPECT_EQ(beyond.result, Location::Outside);
+  ASSERT_FALSE(beyond.faces.empty());
+  EXPECT_EQ(beyond.faces.back().sign, -1);
   const Trace3D at = cm.trace(c);
   EXPECT_TRUE(at.atCentre);
   EXPECT_EQ(at.result, Location::Inside);

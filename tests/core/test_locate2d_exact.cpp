@@ -59,8 +59,8 @@ std::vector<Vec2> queryPoints(const shapes::ShapeCase& shape, const ConvexPolygo
     points.insert(points.end(), more.begin(), more.end());
   };
   append(adversarial::boundaryPoints(polygon, shape.input, rng));
-  append(adversarial::polarPoints(polar));
-  append(adversarial::polarPoints(PolarLocator(polygon, 37)));
+  append(adversarial::polarPoints(polar, polygon));
+  append(adversarial::polarPoints(PolarLocator(polygon, 37), polygon));
   append(adversarial::uniformPoints(UniformLocator(polygon), polygon, rng));
   append(adversarial::uniformPoints(UniformLocator(polygon, 1000), polygon, rng));
   return points;

@@ -38,7 +38,7 @@ std::vector<Vec2> tracePoints(const shapes::ShapeCase& shape, const ConvexPolygo
   std::vector<Vec2> pts = adversarial::randomPoints(polygon.bounds(), polar.centre(), 2000, rng);
   std::vector<Vec2> near = generatePoints(polygon, 1000, 3, true);
   pts.insert(pts.end(), near.begin(), near.end());
-  std::vector<Vec2> hard = adversarial::polarPoints(polar);
+  std::vector<Vec2> hard = adversarial::polarPoints(polar, polygon);
   for (std::size_t i : adversarial::spread(hard.size(), 2000)) pts.push_back(hard[i]);
   std::vector<Vec2> edges = adversarial::boundaryPoints(polygon, shape.input, rng);
   for (std::size_t i : adversarial::spread(edges.size(), 2000)) pts.push_back(edges[i]);
@@ -86,7 +86,7 @@ bool checkTrace(const std::string& where, const Locator2D& locator, const Convex
     EXPECT_EQ(r.sign, ref::cross(t.apex, v[r.vertex], p)) << at << ": ray " << r.vertex;
   }
   // an inside answer rests on strictly positive edge tests
-  if (t.result == Location::Inside && !t.atCentre) {
+  if (t.result == Location::Inside && !t.atCentre && !t.byRadius) {
     EXPECT_FALSE(t.edges.empty()) << at;
     EXPECT_TRUE(allPositive) << at;
   }
@@ -159,7 +159,34 @@ bool checkTrace(const std::string& where, const Locator2D& locator, const Convex
       EXPECT_EQ(t.apex, polar->centre()) << at;
       EXPECT_LT(c, static_cast<std::int64_t>(polar->cellCount())) << at;
       EXPECT_EQ(t.octant, static_cast<int>(c / polar->slabsPerOctant())) << at;
-      EXPECT_EQ(t.crowded, cells[static_cast<std::size_t>(c)].edges.size() > kCrowdedCell) << at;
+      const Cell2D& cell = cells[static_cast<std::size_t>(c)];
+      if (t.byRadius) {
+        // decided by the cell's radii, before any edge test
+        EXPECT_TRUE(t.edges.empty() && t.rays.empty()) << at;
+        EXPECT_FALSE(t.crowded) << at;
+        if (t.result == Location::Inside) {
+          // nearer than every listed edge's line: on the inner side of each (exact check)
+          EXPECT_LT(t.distance, t.innerRadius) << at;
+          for (std::uint32_t e : cell.edges) EXPECT_GT(ref::edgeSign(v, e, p), 0) << at << " edge " << e;
+        } else {
+          // farther than every endpoint of the listed edges
+          EXPECT_EQ(t.result, Location::Outside) << at;
+          EXPECT_GT(t.distance, t.outerRadius) << at;
+          const Vec2 o = polar->centre();
+          auto d2 = [&](Vec2 q) {
+            const long double dx = static_cast<long double>(q.x) - o.x;
+            const long double dy = static_cast<long double>(q.y) - o.y;
+            return dx * dx + dy * dy;
+          };
+          for (std::uint32_t e : cell.edges)
+            for (std::uint32_t k : {e, e + 1 == n ? 0 : e + 1})
+              EXPECT_GT(d2(p) * (1 + 1e-9L), d2(v[k])) << at << " vertex " << k;
+        }
+        break;
+      }
+      EXPECT_LE(t.innerRadius, t.distance * (1 + 1e-9)) << at;
+      EXPECT_GE(t.outerRadius, t.distance * (1 - 1e-9)) << at;
+      EXPECT_EQ(t.crowded, cell.edges.size() > kCrowdedCell) << at;
       for (const EdgeTest& e : t.edges) EXPECT_TRUE(listed(cells, c, e.edge)) << at;
       for (const RayTest& r : t.rays) EXPECT_TRUE(listed(cells, c, r.vertex)) << at;
       if (!t.crowded) {

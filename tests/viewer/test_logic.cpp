@@ -206,9 +206,15 @@ TEST(Text, TraceIsToldStepByStep) {
   EXPECT_EQ(lines.front().kind, cv::TraceLine::Heading);
   EXPECT_EQ(lines.back().kind, cv::TraceLine::Result);
   EXPECT_NE(lines.back().text.find("INSIDE"), std::string::npos);
-  bool octant = false;
-  for (const auto& l : lines) octant |= l.text.find("octant") != std::string::npos;
+  bool octant = false, radii = false;
+  for (const auto& l : lines) {
+    octant |= l.text.find("octant") != std::string::npos;
+    // (1, 1) is nearer the centre (2, 1.5) than the box's sides: the radius decides
+    radii |= l.text.find("cell radii") != std::string::npos &&
+             l.text.find("inside with no test") != std::string::npos;
+  }
   EXPECT_TRUE(octant);
+  EXPECT_TRUE(radii);
 }
 
 // === Gestures

@@ -94,6 +94,17 @@ std::string bytesText(std::size_t bytes) {
   return approx(b / (1024.0 * 1024.0), 3) + " MB";
 }
 
+namespace {
+// the radius filter's step: where |p - c| falls against the cell's two radii
+std::string radiusLine(double distance, double inner, double outer, const char* what) {
+  std::string s = "|p - x_T| = " + approx(distance, 6) + "; cell radii " + approx(inner, 6) + " .. " +
+                  approx(outer, 6);
+  if (distance < inner) return s + ": nearer than every " + what + ", inside with no test";
+  if (distance > outer) return s + ": beyond every vertex, outside with no test";
+  return s + ": between them, the tests below decide";
+}
+}  // namespace
+
 std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolygon& polygon,
                                      std::uint32_t q) {
   std::vector<TraceLine> out;
@@ -126,6 +137,8 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
           add(TraceLine::Step, "polar slab " + std::to_string(t.cell % q) + " of " +
                                    std::to_string(q) + " in the octant: cell " +
                                    std::to_string(t.cell));
+        if (t.outerRadius > 0)
+          add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "line"));
       } else {
         add(TraceLine::Step,
             "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
@@ -169,6 +182,7 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
     std::string cell = "cell (" + std::to_string(t.cellI) + ", " + std::to_string(t.cellJ) + ")";
     if (t.level > 0) cell += " at quadtree level " + std::to_string(t.level);
     add(TraceLine::Step, cell);
+    if (t.outerRadius > 0) add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "plane"));
   }
   if (t.crowded) add(TraceLine::Step, "the cell lists many faces: a walk among them");
   if (t.fallback) add(TraceLine::Step, "no cell could be used: every face is tested");

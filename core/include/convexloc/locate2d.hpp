@@ -58,6 +58,10 @@ struct Trace2D {
   int octant = -1;               // polar: 0..7 counter-clockwise from +x, else -1
   bool crowded = false;          // the cell held many edges and was searched by bisection
   bool atCentre = false;         // polar: the point is the centre itself
+  bool byRadius = false;         // polar: decided by the cell's radii, before any edge test
+  double distance = 0.0;         // polar: |p - centre| (approximate, for display)
+  double innerRadius = 0.0;      // polar: nearer than this to the centre, a point of the cell
+  double outerRadius = 0.0;      //   is inside; farther than outerRadius, outside
   Vec2 apex{};                   // wedge: vertex 0; polar: the centre (vertex 0 on the fan)
   std::vector<RayTest> rays;     // bisection steps (wedge, crowded polar cells)
   std::vector<EdgeTest> edges;   // edges tested, in order
@@ -203,11 +207,21 @@ private:
   Location run(Vec2 p, Sink& sink) const noexcept;
   template <class Sink>
   Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count, Sink& sink) const noexcept;
+  void buildRadii();
   // the n_ vertices (v_ repeats the first two at its end)
   std::span<const Vec2> ring() const noexcept { return {v_.data(), n_}; }
+  // Squared distances from the centre, per cell, rounded outward: a point of the cell nearer
+  // than sqrt(in2) is inside (nearer than every edge line it may exit through), one farther
+  // than sqrt(out2) is outside (farther than every endpoint of those edges). Most points of
+  // a large polygon are decided by these 8 bytes, without touching an edge.
+  struct Radii {
+    float in2 = 0.0f;
+    float out2 = 0.0f;
+  };
   std::vector<Vec2> v_;
   std::vector<std::uint32_t> offsets_;  // CSR over 8 * q_ cells
   std::vector<std::uint32_t> entries_;  // each cell's edges in counter-clockwise order
+  std::vector<Radii> radii_;            // per cell
   std::int64_t cellBase_[8] = {};       // per octant index: its first cell, or its last
   std::int64_t cellStep_[8] = {};       // +1 or -1: how the cell follows the ratio
   Box2 box_{};

@@ -60,6 +60,10 @@ struct Trace3D {
   bool atCentre = false;       // the point is the centre itself
   bool fallback = false;       // answered by testing every face (no centre, overflow, walk cap)
   bool crowded = false;        // cubemap: the cell held many faces and was searched by a walk
+  bool byRadius = false;       // cubemap: decided by the cell's radii, before any face test
+  double distance = 0.0;       // cubemap: |p - centre| (approximate, for display)
+  double innerRadius = 0.0;    // cubemap: nearer than this to the centre, a point of the cell
+  double outerRadius = 0.0;    //   is inside; farther than outerRadius, outside
   std::optional<Vec3> centre;  // walk, cubemap: the centre strictly inside
   int cubeFace = -1;           // cubemap: 0..5 for +x, -x, +y, -y, +z, -z
   int level = -1;              // cubemap: quadtree level of the cell (0: the base grid)
@@ -157,7 +161,9 @@ class WalkLocator {
 // and a point (s, t) = (d_u, d_v) / |d_major| in [-1, 1]^2 on it; a G x G grid per cube face,
 // refined as a quadtree where cells are crowded, lists in each cell every face whose central
 // projection meets it (built conservatively with the query's own index function); the query
-// tests p against those faces' planes. Memory stays within 128 bytes per face plus a constant.
+// tests p against those faces' planes, unless the cell's two radii decide first (most points
+// of a large polyhedron). Memory stays within 128 bytes per face plus 32 KiB (the constant
+// lets a small polyhedron have a grid worth drawing).
 class CubemapLocator {
  public:
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
@@ -179,10 +185,28 @@ class CubemapLocator {
   double cubeHalfSize() const noexcept { return half_; }
 
  private:
+  // A leaf also keeps two squared distances from the centre, rounded outward: a point of the
+  // cell nearer than sqrt(in2) is inside (nearer than every listed face's plane), one farther
+  // than sqrt(out2) outside (farther than every vertex of the listed faces). Most points of
+  // a large polyhedron are decided by these 16 bytes, without a face test.
   struct Node {
     std::uint32_t first = 0;  // leaf: first entry; inner node: first of its 4 children
     std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
+    float in2 = 0.0f;
+    float out2 = 0.0f;
   };
+  // where a query's direction points: cube face, coordinates on it, deepest-level cell
+  struct Aim {
+    int face = 0;
+    double s = 0.0, t = 0.0, d2 = 0.0;
+    std::uint64_t X = 0, Y = 0;
+    std::uint32_t node = 0;  // the base cell
+  };
+  // 1: aimed; 0: p is the centre; -1: no cell (not finite, no centre, direction overflows)
+  int aim(Vec3 p, Aim& a) const noexcept;
+  // the leaf holding the aimed cell, and its level
+  std::uint32_t leafOf(const Aim& a, int& level) const noexcept;
+  void buildRadii();
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
   std::vector<Vec3> v_;

@@ -1,0 +1,49 @@
+// convexloc (internal) — the radius filter shared by the polar and cubemap locators.
+//
+// A cell of a centred subdivision lists every edge (face) that a point mapped to it can exit
+// through. If p is nearer to the centre than each listed edge's line (face's plane), its ray
+// leaves the shape beyond p: p is inside. If p is farther than every endpoint (vertex) of
+// the listed edges, it is beyond the exit point: p is outside. Each cell stores those two
+// squared distances as floats, rounded outward with a relative slack far above the few
+// ulps of error of the query's d^2 and of the build's estimates; a point between them goes on
+// to the exact tests. The answer is therefore exact, and most points of a large shape are
+// decided by one 8-byte load.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace convexloc::detail {
+
+// relative slack on every squared radius (the errors it covers are below 2^-48)
+inline constexpr double kRadiusSlack = 0x1p-30;
+
+// the largest float not above x (0 for x <= 0 or NaN)
+inline float floatBelow(double x) noexcept {
+  if (!(x > 0)) return 0.0f;
+  if (x >= static_cast<double>(std::numeric_limits<float>::max()))
+    return std::numeric_limits<float>::max();
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) > x) f = std::nextafter(f, 0.0f);
+  return f;
+}
+
+// the smallest float not below x (infinity for larger values and NaN)
+inline float floatAbove(double x) noexcept {
+  if (!(x <= static_cast<double>(std::numeric_limits<float>::max())))
+    return std::numeric_limits<float>::infinity();
+  float f = static_cast<float>(x);
+  if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+// the stored inner bound for a cell whose nearest line (plane) lies at squared distance x
+inline float innerBound(double x) noexcept {
+  return floatBelow(x * (1.0 - kRadiusSlack));
+}
+// the stored outer bound for a cell whose farthest endpoint lies at squared distance x
+inline float outerBound(double x) noexcept {
+  return floatAbove(x * (1.0 + kRadiusSlack));
+}
+
+}  // namespace convexloc::detail
