@@ -1,18 +1,33 @@
 #!/usr/bin/env bash
 # Installs what convexloc needs from Debian's packages (only what is missing), then
 # configures and builds one build folder.
-# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz]
+# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench]
 #   (default)   build/       Release, g++: the tools, the viewer, the tests
 #   --sanitize  build-asan/  g++ -O1 with AddressSanitizer + UBSan: everything but the bench
 #   --fuzz      build-fuzz/  clang-14 -O1 with libFuzzer + ASan + UBSan: the core and the
 #                            fuzz targets of tests/fuzz only (warnings are not errors here:
 #                            the g++ builds hold that line, clang's warnings differ)
+#   --bench     build-bench/ Release, g++: convexloc-bench with GEOS and CGAL beside it
+#                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+werror=OFF
+variant=plain
+for arg in "$@"; do
+  case $arg in
+    --werror) werror=ON ;;
+    --sanitize) variant=sanitize ;;
+    --fuzz) variant=fuzz ;;
+    --bench) variant=bench ;;
+    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench]" >&2; exit 2 ;;
+  esac
+done
 
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libqhull-dev libcli11-dev libgtest-dev
           libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
           xvfb xauth libgl1-mesa-dri clang-14 libclang-rt-14-dev)
+if [[ $variant == bench ]]; then packages+=(libgeos-dev libcgal-dev gnuplot-nox); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -27,16 +42,6 @@ else
   echo "convexloc: all Debian packages present"
 fi
 
-werror=OFF
-variant=plain
-for arg in "$@"; do
-  case $arg in
-    --werror) werror=ON ;;
-    --sanitize) variant=sanitize ;;
-    --fuzz) variant=fuzz ;;
-    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz]" >&2; exit 2 ;;
-  esac
-done
 if [[ -n "${CI:-}" ]]; then werror=ON; fi
 
 # -O1 keeps sanitized code fast enough to test and its reports readable; -g1 gives lines
@@ -56,6 +61,11 @@ case $variant in
     options=("${sanitized_flags[@]}" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_C_COMPILER=clang-14
              -DCONVEXLOC_FUZZ=ON -DCONVEXLOC_BUILD_TESTS=OFF -DCONVEXLOC_BUILD_CLI=OFF
              -DCONVEXLOC_BUILD_VIEWER=OFF -DCONVEXLOC_BUILD_BENCH=OFF) ;;
+  bench)
+    dir=build-bench
+    what="Release, the benchmarks with GEOS and CGAL"
+    options=(-DCMAKE_BUILD_TYPE=Release -DCONVEXLOC_BENCH_PEERS=ON -DCONVEXLOC_BUILD_TESTS=OFF
+             -DCONVEXLOC_BUILD_CLI=OFF -DCONVEXLOC_BUILD_VIEWER=OFF) ;;
 esac
 # clang warns where g++ does not; warnings are errors in the g++ builds, not in the fuzz one
 if [[ $variant == fuzz ]]; then werror=OFF; fi

@@ -764,7 +764,9 @@ void PolarLocator::buildRadii() {
   }
 }
 
-std::int64_t PolarLocator::cellOf(Vec2 p) const noexcept {
+std::int64_t PolarLocator::cellOf(Vec2 p) const noexcept { return cellIndex(p); }
+
+inline std::int64_t PolarLocator::cellIndex(Vec2 p) const noexcept {
   const double dx = p.x - c_.x, dy = p.y - c_.y;
   const double ax = std::fabs(dx), ay = std::fabs(dy);
   const double hi = std::max(ax, ay), lo = std::min(ax, ay);  // maxsd / minsd, no branch
@@ -872,20 +874,23 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
     const Vec2* p = points.data() + i0;
     Location* o = out.data() + i0;
     for (std::size_t j = 0; j < m; ++j) {
-      cell[j] = cellOf(p[j]);
+      cell[j] = cellIndex(p[j]);
       if (cell[j] >= 0) __builtin_prefetch(radii_.data() + cell[j]);
     }
+    // Without a branch on the answer (inside or outside come at random): every point writes
+    // its radius verdict and its index, and only the open ones (between the radii, or with
+    // no cell) advance the list of those left for the next stages.
     std::size_t left = 0;
     for (std::size_t j = 0; j < m; ++j) {
-      if (cell[j] >= 0) {
-        const Radii r = radii_[static_cast<std::size_t>(cell[j])];
-        const double d2 = distance2(p[j], c_);
-        // branch-free on the answer: most points stop here, inside or outside at random
-        o[j] = d2 > r.out2 ? Location::Outside : Location::Inside;
-        if ((d2 < r.in2) | (d2 > r.out2)) continue;
-        __builtin_prefetch(offsets_.data() + cell[j]);
-      }
-      pending[left++] = static_cast<std::uint32_t>(j);
+      const std::size_t c = cell[j] >= 0 ? static_cast<std::size_t>(cell[j]) : 0;
+      const Radii r = radii_[c];
+      const double d2 = distance2(p[j], c_);
+      const bool nearer = d2 < static_cast<double>(r.in2), farther = d2 > static_cast<double>(r.out2);
+      o[j] = detail::insideOrOutside(farther);
+      const bool open = (cell[j] < 0) | !(nearer | farther);
+      pending[left] = static_cast<std::uint32_t>(j);
+      left += open;
+      __builtin_prefetch(offsets_.data() + (open ? c : 0));
     }
     for (std::size_t k = 0; k < left; ++k) {
       const std::size_t j = pending[k];

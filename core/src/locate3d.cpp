@@ -327,8 +327,9 @@ Stats3D WalkLocator::stats() const {
 //
 // Coordinates. For d = p - c, the major axis a is the first of x, y, z with the largest
 // |d_a|; the cube face is 2a (d_a > 0) or 2a + 1 (d_a < 0); with (u, v) = (a + 1, a + 2)
-// mod 3, the face coordinates are s = d_u / |d_a| and t = d_v / |d_a|, in [-1, 1] exactly
-// (division is monotone). At level k a face has n_k = G 2^k cells per side; cell (i, j) is
+// mod 3, the face coordinates are s = d_u / |d_a| and t = d_v / |d_a| in [-1, 1], computed
+// as d_u * (1 / |d_a|): within 2 ulps of the quotient, perhaps 1 + 1 ulp in size (indices are
+// clamped to the grid). At level k a face has n_k = G 2^k cells per side; cell (i, j) is
 // s in [-1 + i / K_k, -1 + (i + 1) / K_k], t likewise, with K_k = n_k / 2, and the index
 // of a coordinate is floor((s + 1) K_k) clamped to n_k - 1. The query computes it once at
 // the deepest level D, as floor((s + 1) K_D) with K_D = K_k 2^(D - k); scaling by a power of
@@ -894,7 +895,7 @@ std::optional<Vec3> CubemapLocator::centre() const noexcept {
   return c_;
 }
 
-int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
+inline int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
   if (!centred_ || !finite(p)) return -1;
   const double d[3] = {p.x - c_.x, p.y - c_.y, p.z - c_.z};
   const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
@@ -904,23 +905,32 @@ int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
   // the dominant axis (x before y before z on ties), without a branch: random directions
   // would mispredict one
   constexpr int kU[3] = {1, 2, 0}, kV[3] = {2, 0, 1};
-  const int axis = ((ax >= ay) & (ax >= az)) ? 0 : 1 + static_cast<int>(!(ay >= az));
+  const int xWins = static_cast<int>(ax >= ay) & static_cast<int>(ax >= az);
+  const int axis = (1 - xWins) * (1 + static_cast<int>(!(ay >= az)));  // arithmetic, no jump
   const double major = d[axis], du = d[kU[axis]], dv = d[kV[axis]];
   if (major == 0) return 0;  // d = 0: p is the centre
   a.face = 2 * axis + (major < 0 ? 1 : 0);
-  const double m = std::fabs(major);
-  a.s = du / m;
-  a.t = dv / m;
+  // one division and two products, within 2 ulps of the quotients; below 2^-1023 the
+  // reciprocal overflows, and the quotients are taken as they are
+  const double m = std::fabs(major), inv = 1.0 / m;
+  if (inv <= std::numeric_limits<double>::max()) {
+    a.s = du * inv;
+    a.t = dv * inv;
+  } else {
+    a.s = du / m;
+    a.t = dv / m;
+  }
   a.d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   const std::uint64_t last = (static_cast<std::uint64_t>(g_) << depth_) - 1;
-  a.X = std::min(static_cast<std::uint64_t>((a.s + 1) * scale_), last);
-  a.Y = std::min(static_cast<std::uint64_t>((a.t + 1) * scale_), last);
+  // (s + 1) * scale_ lies in [0, 2^31]: the signed conversion is exact and needs no branch
+  a.X = std::min(static_cast<std::uint64_t>(static_cast<std::int64_t>((a.s + 1) * scale_)), last);
+  a.Y = std::min(static_cast<std::uint64_t>(static_cast<std::int64_t>((a.t + 1) * scale_)), last);
   a.node = static_cast<std::uint32_t>(
       (static_cast<std::uint64_t>(a.face) * g_ + (a.Y >> depth_)) * g_ + (a.X >> depth_));
   return 1;
 }
 
-std::uint32_t CubemapLocator::leafOf(const Aim& a, int& level) const noexcept {
+inline std::uint32_t CubemapLocator::leafOf(const Aim& a, int& level) const noexcept {
   std::uint32_t node = a.node;
   level = 0;
   while (nodes_[node].count == kInner) {
@@ -988,7 +998,7 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
   constexpr std::size_t kBlock = 32;
   const std::size_t n = std::min(points.size(), out.size());
   Aim aims[kBlock];
-  std::uint32_t leaf[kBlock], pending[kBlock];
+  std::uint32_t pending[kBlock];
   for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - i0);
     const Vec3* p = points.data() + i0;
@@ -1002,16 +1012,19 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
         pending[left++] = static_cast<std::uint32_t>(j);
       }
     }
+    // without a branch on the answer, as in the polar batch
     for (std::size_t j = 0; j < m; ++j) {
       if (aims[j].node == kNone) continue;
       int level = 0;
-      leaf[j] = leafOf(aims[j], level);
-      const Node& nd = nodes_[leaf[j]];
+      const Node& nd = nodes_[leafOf(aims[j], level)];
       const double d2 = aims[j].d2;
-      o[j] = d2 > nd.out2 ? Location::Outside : Location::Inside;
-      if ((d2 < nd.in2) | (d2 > nd.out2)) continue;
-      __builtin_prefetch(entries_.data() + nd.first);
-      pending[left++] = static_cast<std::uint32_t>(j);
+      const bool nearer =
+          d2<static_cast<double>(nd.in2), farther = d2> static_cast<double>(nd.out2);
+      o[j] = detail::insideOrOutside(farther);
+      const bool open = !(nearer | farther);
+      pending[left] = static_cast<std::uint32_t>(j);
+      left += open;
+      __builtin_prefetch(entries_.data() + (open ? nd.first : 0));
     }
     for (std::size_t k = 0; k < left; ++k) {
       const std::size_t j = pending[k];

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <limits>
 
+#include "convexloc/geometry.hpp"
+
 namespace convexloc::detail {
 
 // relative slack on every squared radius (the errors it covers are below 2^-48)
@@ -44,6 +46,13 @@ inline float innerBound(double x) noexcept {
 // the stored outer bound for a cell whose farthest endpoint lies at squared distance x
 inline float outerBound(double x) noexcept {
   return floatAbove(x * (1.0 + kRadiusSlack));
+}
+
+// Outside when `farther`, else Inside, without a branch (the two come at random)
+inline Location insideOrOutside(bool farther) noexcept {
+  static_assert(static_cast<int>(Location::Inside) == 0 &&
+                static_cast<int>(Location::Outside) == 2);
+  return static_cast<Location>(2 * static_cast<int>(farther));
 }
 
 }  // namespace convexloc::detail

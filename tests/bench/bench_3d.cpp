@@ -64,7 +64,7 @@ void registerMethod(const std::string& name, std::int64_t maxBatchF) {
 
 [[maybe_unused]] const bool registered = [] {
   registerMethod<HalfspaceLocator>("halfspace", 100);
-  registerMethod<WalkLocator>("walk", 10000);
+  registerMethod<WalkLocator>("walk", 100);
   registerMethod<CubemapLocator>("cubemap", 1000000);
   return true;
 }();

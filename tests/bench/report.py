@@ -1,57 +1,131 @@
-"""Turns convexloc-bench JSON into a Markdown table and gnuplot data (ns per point)."""
+"""Turns convexloc-bench JSON into a Markdown report (the issue's floors checked, then every
+family as a table of ns per point) and gnuplot data for the log-log plots."""
 import collections
 import json
 import platform
 import sys
 
 
-def main(path, out):
+def load(path):
+    """(family, method) -> {size: ns per item}, and the run's context."""
     data = json.load(open(path))
-    ctx = data.get("context", {})
-    rows = collections.defaultdict(dict)  # (family, method) -> size -> ns
+    rows = collections.defaultdict(dict)
     for b in data["benchmarks"]:
-        if b.get("run_type") == "aggregate":
+        if b.get("run_type") == "aggregate" or not b.get("items_per_second"):
             continue
         parts = b["name"].split("/")
-        ips = b.get("items_per_second")
-        if not ips:
-            continue
-        ns = 1e9 / ips
+        threads = next((p.split(":")[1] for p in parts if p.startswith("threads:")), None)
         if parts[0] == "Stream":
-            rows[("Stream", "stream")][int(parts[1])] = ns
-            continue
-        family, method, size = parts[0], parts[1], int(parts[2])
-        threads = next((p.split(":")[1] for p in parts[3:] if p.startswith("threads:")), None)
+            family, method, size = "Stream", "stream", int(parts[1])
+        else:
+            family, method, size = parts[0], parts[1], int(parts[2])
         if threads:
             method = f"{method} ({threads} thr)"
-        rows[(family, method)][size] = ns
-    lines = [f"Run {ctx.get('date', '?')} on {ctx.get('host_name', platform.node())}: "
-             f"{ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, "
-             f"ns per point (lower is better).", ""]
+        rows[(family, method)][size] = 1e9 / b["items_per_second"]
+    return rows, data.get("context", {})
+
+
+def cpu_model():
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown CPU"
+
+
+def floors(rows):
+    """The issue's floors, each as (what, measured text, verdict)."""
+    def ns(family, method, size):
+        return rows.get((family, method), {}).get(size)
+
+    out = []
+
+    def ratio_at_most(what, a, b, limit):
+        if a is None or b is None:
+            out.append((what, "not measured", "—"))
+            return
+        r = a / b
+        out.append((what, f"{a:.3g} / {b:.3g} ns = {r:.2f}x (at most {limit}x)",
+                    "holds" if r <= limit else "FAILS"))
+
+    def ratio_at_least(what, slow, fast, limit):
+        if slow is None or fast is None:
+            out.append((what, "not measured", "—"))
+            return
+        r = slow / fast
+        out.append((what, f"{slow:.3g} / {fast:.3g} ns = {r:.1f}x (at least {limit}x)",
+                    "holds" if r >= limit else "FAILS"))
+
+    big, small = 1 << 20, 8
+    ratio_at_most("polar, batch 1 thread: N = 2^20 against N = 8",
+                  ns("Batch2D", "polar (1 thr)", big), ns("Batch2D", "polar (1 thr)", small), 4)
+    ratio_at_most("polar, one point per call: N = 2^20 against N = 8",
+                  ns("Locate2D", "polar", big), ns("Locate2D", "polar", small), 4)
+    ratio_at_least("polar against wedge at N = 16384 (one point per call)",
+                   ns("Locate2D", "wedge", 16384), ns("Locate2D", "polar", 16384), 5)
+    ratio_at_least("polar against GEOS prepared contains at N = 16384",
+                   ns("Locate2D", "geos", 16384), ns("Locate2D", "polar", 16384), 30)
+    ratio_at_most("cubemap, batch 1 thread: F = 10^6 against F = 100",
+                  ns("Batch3D", "cubemap (1 thr)", 1000000), ns("Batch3D", "cubemap (1 thr)", 100), 4)
+    ratio_at_most("cubemap, one point per call: F = 10^6 against F = 100",
+                  ns("Locate3D", "cubemap", 1000000), ns("Locate3D", "cubemap", 100), 4)
+    for f in (100000, 1000000):
+        ratio_at_least(f"cubemap against CGAL Side_of_triangle_mesh at F = {f:g}",
+                       ns("Locate3D", "cgal", f), ns("Locate3D", "cubemap", f), 50)
+    stream = ns("Stream", "stream (2 thr)", 10000000)
+    for family, method, sizes in (("Batch2D", "polar", (8, 64, 1024, 4096)),
+                                  ("Batch3D", "cubemap", (100, 1000, 10000))):
+        worst = max(((ns(family, f"{method} (2 thr)", s) or 0, s) for s in sizes))
+        ratio_at_most(f"{method}, batch 2 threads, worst size up to {sizes[-1]} ({worst[1]}) "
+                      "against the streaming limit (2 threads, 10^7 points)",
+                      worst[0] or None, stream, 4)
+    for family, method, size, label in (("Build2D", "polar", big, "polar build at N = 2^20"),
+                                        ("Build3D", "cubemap", 1000000, "cubemap build at F = 10^6")):
+        per = ns(family, method, size)
+        if per is None:
+            out.append((label, "not measured", "—"))
+        else:
+            seconds = per * size / 1e9
+            out.append((label, f"{seconds:.3f} s (under 1 s)", "holds" if seconds < 1 else "FAILS"))
+    return out
+
+
+def main(path, out):
+    rows, ctx = load(path)
+    lines = [f"Run of {ctx.get('date', '?')} on {ctx.get('host_name', platform.node())}: "
+             f"{cpu_model()}, {ctx.get('num_cpus', '?')} CPUs, load average at the start "
+             f"{', '.join(f'{x:.2f}' for x in ctx.get('load_avg', [])) or '?'}; "
+             "ns per point (lower is better), one run of `tests/bench/report`.", ""]
+    lines += ["### The issue's floors, from this run", "",
+              "| floor | measured | verdict |", "|---|---|---|"]
+    lines += [f"| {w} | {m} | {v} |" for w, m, v in floors(rows)]
+    lines.append("")
     for family in ["Locate2D", "Batch2D", "Build2D", "Locate3D", "Batch3D", "Build3D", "Stream"]:
         methods = [m for (f, m) in rows if f == family]
         if not methods:
             continue
         sizes = sorted({s for m in methods for s in rows[(family, m)]})
-        lines.append(f"### {family}")
-        lines.append("")
-        lines.append("| method | " + " | ".join(str(s) for s in sizes) + " |")
-        lines.append("|---|" + "--:|" * len(sizes))
+        lines += [f"### {family}", "", "| method | " + " | ".join(str(s) for s in sizes) + " |",
+                  "|---|" + "--:|" * len(sizes)]
         for m in methods:
             cells = [f"{rows[(family, m)][s]:.3g}" if s in rows[(family, m)] else "—" for s in sizes]
             lines.append(f"| {m} | " + " | ".join(cells) + " |")
         lines.append("")
     open(f"{out}/report.md", "w").write("\n".join(lines))
-    for dim in ["2D", "3D"]:
-        family = f"Locate{dim}"
-        methods = [m for (f, m) in rows if f == family]
-        if not methods:
+    # the plots: one point per call for every method, and the 1-thread batch of the O(1) ones
+    for dim, batch in (("2D", "polar (1 thr)"), ("3D", "cubemap (1 thr)")):
+        series = [(m, rows[(f, m)]) for (f, m) in rows if f == f"Locate{dim}"]
+        if (f"Batch{dim}", batch) in rows:
+            series.append((batch.replace("(1 thr)", "batch"), rows[(f"Batch{dim}", batch)]))
+        if not series:
             continue
         with open(f"{out}/locate_{dim}.dat", "w") as f:
-            for m in methods:
-                f.write(f'"{m}"\n')
-                for s in sorted(rows[(family, m)]):
-                    f.write(f"{s} {rows[(family, m)][s]}\n")
+            for name, values in series:
+                f.write(f'"{name}"\n')
+                for s in sorted(values):
+                    f.write(f"{s} {values[s]}\n")
                 f.write("\n\n")
     print("\n".join(lines))
 

@@ -208,6 +208,7 @@ private:
   template <class Sink>
   Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count, Sink& sink) const noexcept;
   void buildRadii();
+  [[gnu::always_inline]] std::int64_t cellIndex(Vec2 p) const noexcept;
   // the n_ vertices (v_ repeats the first two at its end)
   std::span<const Vec2> ring() const noexcept { return {v_.data(), n_}; }
   // Squared distances from the centre, per cell, rounded outward: a point of the cell nearer

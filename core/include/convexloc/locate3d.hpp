@@ -203,9 +203,9 @@ class CubemapLocator {
     std::uint32_t node = 0;  // the base cell
   };
   // 1: aimed; 0: p is the centre; -1: no cell (not finite, no centre, direction overflows)
-  int aim(Vec3 p, Aim& a) const noexcept;
+  [[gnu::always_inline]] int aim(Vec3 p, Aim& a) const noexcept;
   // the leaf holding the aimed cell, and its level
-  std::uint32_t leafOf(const Aim& a, int& level) const noexcept;
+  [[gnu::always_inline]] std::uint32_t leafOf(const Aim& a, int& level) const noexcept;
   void buildRadii();
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
