@@ -6,7 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
+#include "convexloc/batch.hpp"
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
 #include "radii.hpp"
@@ -639,7 +643,9 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
   box_ = polygon.bounds();
   const std::uint32_t n = static_cast<std::uint32_t>(v_.size());
   if (slabsPerOctant > (1u << 23)) throw UsageError("polar: at most 2^23 slabs per octant");
-  q_ = slabsPerOctant ? slabsPerOctant : std::max<std::uint32_t>(1, (n + 3) / 4);
+  // by default about 2 cells per edge, and at least 64 cells: small polygons get cells
+  // narrow enough for their radii to decide most points
+  q_ = slabsPerOctant ? slabsPerOctant : std::max<std::uint32_t>(8, (n + 3) / 4);
   qd_ = static_cast<double>(q_);
   n_ = n;
   const std::uint32_t cells = 8 * q_;
@@ -744,6 +750,50 @@ inline double distance2(Vec2 p, Vec2 c) {
 
 }  // namespace
 
+namespace {
+
+// Tighter bounds for one cell and one of its edges: the points of edge (a, b) that rays from
+// c with pseudo-angles in [angleLo, angleHi] (a cell's range, widened) can meet form a piece
+// of it, from where the lower ray meets the edge's line to where the upper one does (the
+// edge runs counter-clockwise around c). Its ends are computed in long double, moved out by
+// 2^-20 of the edge, and fall back to the edge's ends where a ray misses the line or runs
+// nearly along it. Over that piece the squared distance from c lies in [in2, out2]; each
+// is also bounded by the whole edge's (edgeIn2, edgeOut2), and the tighter one is kept.
+void pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, double& in2,
+                 double& out2) {
+  using L = long double;
+  const L ux = L(b.x) - a.x, uy = L(b.y) - a.y, wx = L(a.x) - c.x, wy = L(a.y) - c.y;
+  const L size = std::fabs(ux) + std::fabs(uy);
+  auto along = [&](double angle, L fallback) {
+    const Vec2 d = directionOf(angle < 0 ? angle + 8 : (angle >= 8 ? angle - 8 : angle));
+    const L den = L(d.x) * uy - L(d.y) * ux;  // > 0: the ray meets the line ahead of c
+    if (!(den > 0x1p-30L * (std::fabs(L(d.x)) + std::fabs(L(d.y))) * size)) return fallback;
+    return -(L(d.x) * wy - L(d.y) * wx) / den;
+  };
+  constexpr L kWiden = 0x1p-20L;
+  const L t0 = std::clamp(along(angleLo, 0) - kWiden, L(0), L(1));
+  const L t1 = std::clamp(along(angleHi, 1) + kWiden, L(0), L(1));
+  if (!(t0 <= t1)) return;  // keep the whole edge's bounds
+  auto dist = [&](L t) {
+    const L x = wx + t * ux, y = wy + t * uy;
+    return std::sqrt(x * x + y * y);
+  };
+  // rounding in the ends and distances stays far below this
+  const L slack = 0x1p-50L * (std::fabs(wx) + std::fabs(wy) + size);
+  const L d0 = dist(t0), d1 = dist(t1);
+  const L far = std::max(d0, d1) + slack;
+  out2 = std::min(out2, static_cast<double>(far * far));
+  // the nearest point: the foot of the perpendicular if the piece holds it (then the line's
+  // bound stands), else the nearer end
+  const L foot = -(wx * ux + wy * uy) / (ux * ux + uy * uy);
+  if (!(foot >= t0 - kWiden && foot <= t1 + kWiden)) {
+    const L near = std::min(d0, d1) - slack;
+    if (near > 0) in2 = std::max(in2, static_cast<double>(near * near));
+  }
+}
+
+}  // namespace
+
 void PolarLocator::buildRadii() {
   const std::uint32_t cells = 8 * q_;
   std::vector<double> in2(n_), out2(n_);
@@ -752,12 +802,19 @@ void PolarLocator::buildRadii() {
     in2[e] = lineDistance2Below(a, b, c_);
     out2[e] = std::max(distance2(a, c_), distance2(b, c_));
   }
+  // a cell's range in pseudo-angle, widened far beyond the query's index error (2^-50) and
+  // the rounding of the directions drawn from it
+  constexpr double kWidenAngle = 0x1p-30;
   radii_.resize(cells);
   for (std::uint32_t c = 0; c < cells; ++c) {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    const double angleLo = c / qd_ - kWidenAngle, angleHi = (c + 1) / qd_ + kWidenAngle;
     for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
-      lo = std::min(lo, in2[entries_[k]]);
-      hi = std::max(hi, out2[entries_[k]]);
+      const std::uint32_t e = entries_[k];
+      double edgeIn2 = in2[e], edgeOut2 = out2[e];
+      pieceBounds(v_[e], v_[e + 1 == n_ ? 0 : e + 1], c_, angleLo, angleHi, edgeIn2, edgeOut2);
+      lo = std::min(lo, edgeIn2);
+      hi = std::max(hi, edgeOut2);
     }
     if (offsets_[c] == offsets_[c + 1]) lo = 0.0, hi = std::numeric_limits<double>::infinity();
     radii_[c] = {detail::innerBound(lo), detail::outerBound(hi)};
@@ -849,8 +906,9 @@ Location PolarLocator::locate(Vec2 p) const noexcept {
   if (c >= 0) {
     const Radii r = radii_[static_cast<std::size_t>(c)];
     const double d2 = distance2(p, c_);
-    if (d2 < r.in2) return Location::Inside;
-    if (d2 > r.out2) return Location::Outside;
+    // one branch, taken by most points, then the answer without one
+    const bool nearer = d2 < static_cast<double>(r.in2), farther = d2 > static_cast<double>(r.out2);
+    if (static_cast<int>(nearer) | static_cast<int>(farther)) return detail::insideOrOutside(farther);
     const std::uint32_t b = offsets_[static_cast<std::size_t>(c)];
     const std::uint32_t k = offsets_[static_cast<std::size_t>(c) + 1] - b;
     Location out;
@@ -860,6 +918,68 @@ Location PolarLocator::locate(Vec2 p) const noexcept {
   return run(p, sink);
 }
 
+namespace {
+
+// what the vector cell index needs of the locator
+struct PolarParams {
+  Vec2 c;
+  double qd, lastSlab;
+  std::int32_t base[8], step[8];
+};
+
+#if defined(__x86_64__)
+// PolarLocator::cellIndex and the squared distance for 4 points at a time, in AVX2 (no FMA:
+// every operation rounds as the scalar code does, so the cells are the scalar ones; lanes
+// the scalar code gives -1 get -1). Returns how many points it did (a multiple of 4).
+__attribute__((target("avx2"))) std::size_t polarAimAvx2(const Vec2* p, std::size_t m,
+                                                         const PolarParams& a, std::int64_t* cell,
+                                                         double* d2) noexcept {
+  const __m256d cx = _mm256_set1_pd(a.c.x), cy = _mm256_set1_pd(a.c.y);
+  const __m256d sign = _mm256_set1_pd(-0.0), inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  const __m256d qd = _mm256_set1_pd(a.qd), last = _mm256_set1_pd(a.lastSlab);
+  const __m256i base = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a.base));
+  const __m256i step = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a.step));
+  const __m256i low32 = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);  // int64 lanes to int32
+  std::size_t j = 0;
+  for (; j + 4 <= m; j += 4) {
+    const Vec2* q = p + j;
+    const __m256d dx = _mm256_sub_pd(_mm256_setr_pd(q[0].x, q[1].x, q[2].x, q[3].x), cx);
+    const __m256d dy = _mm256_sub_pd(_mm256_setr_pd(q[0].y, q[1].y, q[2].y, q[3].y), cy);
+    const __m256d ax = _mm256_andnot_pd(sign, dx), ay = _mm256_andnot_pd(sign, dy);
+    const __m256d hi = _mm256_max_pd(ax, ay), lo = _mm256_min_pd(ax, ay);
+    const __m256d good = _mm256_and_pd(_mm256_cmp_pd(_mm256_add_pd(ax, ay), inf, _CMP_LT_OQ),
+                                       _mm256_cmp_pd(hi, zero, _CMP_NEQ_OQ));
+    // lanes that are not good may divide 0 by 0: masked to 0 before converting
+    const __m256d k = _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_div_pd(lo, hi), qd), last));
+    const __m128i slab = _mm256_cvttpd_epi32(k);
+    // sign bits of dx and dy as 0 / 1 in 32-bit lanes (a lambda would lose the target)
+    const __m128i sx = _mm256_castsi256_si128(
+        _mm256_permutevar8x32_epi32(_mm256_srli_epi64(_mm256_castpd_si256(dx), 63), low32));
+    const __m128i sy = _mm256_castsi256_si128(
+        _mm256_permutevar8x32_epi32(_mm256_srli_epi64(_mm256_castpd_si256(dy), 63), low32));
+    const __m128i steep = _mm256_cvttpd_epi32(_mm256_and_pd(_mm256_cmp_pd(ay, ax, _CMP_GT_OQ), one));
+    const __m128i octant =
+        _mm_or_si128(_mm_or_si128(_mm_slli_epi32(sx, 2), _mm_slli_epi32(sy, 1)), steep);
+    const __m256i index = _mm256_castsi128_si256(octant);
+    const __m128i b = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(base, index));
+    const __m128i st = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(step, index));
+    __m128i c = _mm_add_epi32(b, _mm_mullo_epi32(st, slab));
+    const __m128i bad = _mm256_cvtpd_epi32(_mm256_andnot_pd(good, one));  // 1 where not good
+    c = _mm_or_si128(c, _mm_sub_epi32(_mm_setzero_si128(), bad));        // -1 there
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(cell + j), _mm256_cvtepi32_epi64(c));
+    _mm256_storeu_pd(d2 + j, _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
+  }
+  return j;
+}
+#else
+std::size_t polarAimAvx2(const Vec2*, std::size_t, const PolarParams&, std::int64_t*, double*) noexcept {
+  return 0;
+}
+#endif
+
+}  // namespace
+
 void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
   // Blocks of points go through the table in stages (cell radii, then for the points they do
   // not decide the cell's run, then its edges), prefetching each stage's memory for the
@@ -868,15 +988,24 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
   constexpr std::size_t kBlock = 32;
   const std::size_t n = std::min(points.size(), out.size());
   std::int64_t cell[kBlock];
+  double dist2[kBlock];
   std::uint32_t first[kBlock], count[kBlock], pending[kBlock];
+  const bool vector = vectorBatches();
+  PolarParams params{c_, qd_, static_cast<double>(q_ - 1), {}, {}};
+  for (int i = 0; i < 8; ++i) {
+    params.base[i] = static_cast<std::int32_t>(cellBase_[i]);
+    params.step[i] = static_cast<std::int32_t>(cellStep_[i]);
+  }
   for (std::size_t i0 = 0; i0 < n; i0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - i0);
     const Vec2* p = points.data() + i0;
     Location* o = out.data() + i0;
-    for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t j = vector ? polarAimAvx2(p, m, params, cell, dist2) : 0; j < m; ++j) {
       cell[j] = cellIndex(p[j]);
-      if (cell[j] >= 0) __builtin_prefetch(radii_.data() + cell[j]);
+      dist2[j] = distance2(p[j], c_);
     }
+    for (std::size_t j = 0; j < m; ++j)
+      if (cell[j] >= 0) __builtin_prefetch(radii_.data() + cell[j]);
     // Without a branch on the answer (inside or outside come at random): every point writes
     // its radius verdict and its index, and only the open ones (between the radii, or with
     // no cell) advance the list of those left for the next stages.
@@ -884,7 +1013,7 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
     for (std::size_t j = 0; j < m; ++j) {
       const std::size_t c = cell[j] >= 0 ? static_cast<std::size_t>(cell[j]) : 0;
       const Radii r = radii_[c];
-      const double d2 = distance2(p[j], c_);
+      const double d2 = dist2[j];
       const bool nearer = d2 < static_cast<double>(r.in2), farther = d2 > static_cast<double>(r.out2);
       o[j] = detail::insideOrOutside(farther);
       const bool open = (cell[j] < 0) | !(nearer | farther);

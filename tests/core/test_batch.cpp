@@ -2,6 +2,9 @@
 // batch size (small batches, sizes that are not multiples of the 64-point runs).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "convexloc/batch.hpp"
@@ -9,6 +12,8 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
+#include "adversarial.hpp"
+#include "adversarial3d.hpp"
 
 using namespace convexloc;
 
@@ -52,4 +57,69 @@ TEST(Batch, Polyhedron3DMatchesOneByOne) {
   const std::vector<Vec3> pts = generatePoints3D(p, 3 * kMinPointsPerThread + 77, 5, true);
   expectSameAsOneByOne(CubemapLocator(p), pts);
   expectSameAsOneByOne(Locator3D(p, Method3D::Cubemap), pts);
+}
+
+TEST(Batch, CubemapVectorAndScalarCodeAgree) {
+  // the AVX2 aim (where the CPU has it) and the scalar one give the same answers, on random
+  // points, hard ones (cell borders, cube edges, the centre and its ulp neighbours) and
+  // points no cell takes (infinite, NaN, far beyond the double range of the directions)
+  for (auto [kind, n] : {std::pair{PolyhedronKind::Geodesic, std::size_t{20000}},
+                         std::pair{PolyhedronKind::Cube, std::size_t{12}},
+                         std::pair{PolyhedronKind::TinyFaces, std::size_t{3000}},
+                         std::pair{PolyhedronKind::ThinSlab, std::size_t{400}}}) {
+    SCOPED_TRACE(std::string(toString(kind)));
+    const ConvexPolyhedron p(generatePolyhedron(kind, n, 7));
+    const CubemapLocator cm(p);
+    Rng rng(3);
+    std::vector<Vec3> pts = generatePoints3D(p, 50000, 9, true);
+    auto hard = adversarial3d::cubemapPoints(p, cm, rng);
+    pts.insert(pts.end(), hard.begin(), hard.end());
+    const double inf = std::numeric_limits<double>::infinity(), big = std::numeric_limits<double>::max();
+    for (Vec3 q : {Vec3{inf, 0, 0}, Vec3{0, std::nan(""), 0}, Vec3{big, -big, big},
+                   Vec3{-big, 0, 0}, Vec3{0, 0, -inf}})
+      pts.push_back(q);
+    std::vector<Location> want(pts.size()), vec(pts.size()), scalar(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) want[i] = cm.locate(pts[i]);
+    setVectorBatches(true);
+    cm.locate(std::span<const Vec3>(pts), std::span<Location>(vec));
+    setVectorBatches(false);
+    cm.locate(std::span<const Vec3>(pts), std::span<Location>(scalar));
+    setVectorBatches(true);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      ASSERT_EQ(vec[i], want[i]) << "point " << i;
+      ASSERT_EQ(scalar[i], want[i]) << "point " << i;
+    }
+  }
+  std::printf("[ info     ] AVX2 batch code %s on this CPU\n", vectorBatches() ? "used" : "not available");
+}
+
+TEST(Batch, PolarVectorAndScalarCodeAgree) {
+  // as above for the polar cell index: random points, the locator's hard points (its centre,
+  // axes, diagonals and cell borders with their ulp neighbours), tiny and huge offsets
+  for (auto [kind, n] : {std::pair{PolygonKind::Regular, std::size_t{4096}},
+                         std::pair{PolygonKind::Regular, std::size_t{8}},
+                         std::pair{PolygonKind::Random, std::size_t{300}},
+                         std::pair{PolygonKind::TinyEdges, std::size_t{500}},
+                         std::pair{PolygonKind::Sliver, std::size_t{100}}}) {
+    SCOPED_TRACE(std::string(toString(kind)) + " " + std::to_string(n));
+    const ConvexPolygon polygon(generatePolygon(kind, n, 5));
+    const PolarLocator polar(polygon);
+    std::vector<Vec2> pts = generatePoints(polygon, 50000, 4, true);
+    auto hard = adversarial::polarPoints(polar, polygon);
+    pts.insert(pts.end(), hard.begin(), hard.end());
+    const double inf = std::numeric_limits<double>::infinity(), big = std::numeric_limits<double>::max();
+    for (Vec2 q : {Vec2{inf, 0}, Vec2{0, std::nan("")}, Vec2{big, -big}, Vec2{-big, 0}, polar.centre()})
+      pts.push_back(q);
+    std::vector<Location> want(pts.size()), vec(pts.size()), scalar(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) want[i] = polar.locate(pts[i]);
+    setVectorBatches(true);
+    polar.locate(std::span<const Vec2>(pts), std::span<Location>(vec));
+    setVectorBatches(false);
+    polar.locate(std::span<const Vec2>(pts), std::span<Location>(scalar));
+    setVectorBatches(true);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      ASSERT_EQ(vec[i], want[i]) << "point " << i << ": " << adversarial::show(pts[i]);
+      ASSERT_EQ(scalar[i], want[i]) << "point " << i;
+    }
+  }
 }

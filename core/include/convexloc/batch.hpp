@@ -18,6 +18,13 @@
 
 namespace convexloc {
 
+// Batches use AVX2 code where the CPU has it, chosen at run time (what ships is built for
+// baseline x86-64); the answers are the same either way. Off, every batch runs the scalar
+// code (for tests and comparisons).
+void setVectorBatches(bool enabled) noexcept;
+// whether batches use the AVX2 code: enabled, and the CPU has it
+bool vectorBatches() noexcept;
+
 // below this many points per thread, starting a thread costs more than it saves
 inline constexpr std::size_t kMinPointsPerThread = std::size_t{1} << 15;
 

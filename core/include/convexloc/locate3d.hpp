@@ -204,8 +204,9 @@ class CubemapLocator {
   };
   // 1: aimed; 0: p is the centre; -1: no cell (not finite, no centre, direction overflows)
   [[gnu::always_inline]] int aim(Vec3 p, Aim& a) const noexcept;
-  // the leaf holding the aimed cell, and its level
-  [[gnu::always_inline]] std::uint32_t leafOf(const Aim& a, int& level) const noexcept;
+  // the leaf holding cell (X, Y) of the deepest level, from its base cell; and its level
+  [[gnu::always_inline]] std::uint32_t leafAt(std::uint64_t X, std::uint64_t Y, std::uint32_t node,
+                                              int& level) const noexcept;
   void buildRadii();
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
