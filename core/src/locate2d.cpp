@@ -869,10 +869,9 @@ Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
   sink.cell(c, static_cast<int>(cell / q_));
   const Radii r = radii_[cell];
   const double d2 = distance2(p, c_);
-  const bool nearer = d2 < r.in2, farther = d2 > r.out2;
-  sink.radius(d2, r.in2, r.out2, nearer || farther);
-  if (nearer) return Location::Inside;
-  if (farther) return Location::Outside;
+  const bool decided = detail::radiiDecide(d2, r.in2, r.out2);
+  sink.radius(d2, r.in2, r.out2, decided);
+  if (decided) return detail::insideOrOutside(d2 > static_cast<double>(r.out2));
   const std::uint32_t b = offsets_[cell], k = offsets_[cell + 1] - b;
   if (k <= kCrowdedCell) return testEdges(ring(), entries_.data() + b, entries_.data() + b + k, p, sink);
   sink.crowded();
@@ -902,13 +901,12 @@ inline bool twoEdges(const Vec2* r, Vec2 p, Location& out) noexcept {
 }  // namespace
 
 Location PolarLocator::locate(Vec2 p) const noexcept {
-  const std::int64_t c = cellOf(p);
+  const std::int64_t c = cellIndex(p);
   if (c >= 0) {
     const Radii r = radii_[static_cast<std::size_t>(c)];
     const double d2 = distance2(p, c_);
     // one branch, taken by most points, then the answer without one
-    const bool nearer = d2 < static_cast<double>(r.in2), farther = d2 > static_cast<double>(r.out2);
-    if (static_cast<int>(nearer) | static_cast<int>(farther)) return detail::insideOrOutside(farther);
+    if (detail::radiiDecide(d2, r.in2, r.out2)) return detail::insideOrOutside(d2 > static_cast<double>(r.out2));
     const std::uint32_t b = offsets_[static_cast<std::size_t>(c)];
     const std::uint32_t k = offsets_[static_cast<std::size_t>(c) + 1] - b;
     Location out;
@@ -943,9 +941,13 @@ __attribute__((target("avx2"))) std::size_t polarAimAvx2(const Vec2* p, std::siz
   const __m256i low32 = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);  // int64 lanes to int32
   std::size_t j = 0;
   for (; j + 4 <= m; j += 4) {
-    const Vec2* q = p + j;
-    const __m256d dx = _mm256_sub_pd(_mm256_setr_pd(q[0].x, q[1].x, q[2].x, q[3].x), cx);
-    const __m256d dy = _mm256_sub_pd(_mm256_setr_pd(q[0].y, q[1].y, q[2].y, q[3].y), cy);
+    // 4 points as 2 loads (x0 y0 x1 y1 | x2 y2 x3 y3), regrouped by coordinate
+    const double* q = &p[j].x;
+    static_assert(sizeof(Vec2) == 2 * sizeof(double));
+    const __m256d v0 = _mm256_loadu_pd(q), v1 = _mm256_loadu_pd(q + 4);
+    const __m256d xs = _mm256_permute4x64_pd(_mm256_unpacklo_pd(v0, v1), _MM_SHUFFLE(3, 1, 2, 0));
+    const __m256d ys = _mm256_permute4x64_pd(_mm256_unpackhi_pd(v0, v1), _MM_SHUFFLE(3, 1, 2, 0));
+    const __m256d dx = _mm256_sub_pd(xs, cx), dy = _mm256_sub_pd(ys, cy);
     const __m256d ax = _mm256_andnot_pd(sign, dx), ay = _mm256_andnot_pd(sign, dy);
     const __m256d hi = _mm256_max_pd(ax, ay), lo = _mm256_min_pd(ax, ay);
     const __m256d good = _mm256_and_pd(_mm256_cmp_pd(_mm256_add_pd(ax, ay), inf, _CMP_LT_OQ),
@@ -1014,9 +1016,8 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
       const std::size_t c = cell[j] >= 0 ? static_cast<std::size_t>(cell[j]) : 0;
       const Radii r = radii_[c];
       const double d2 = dist2[j];
-      const bool nearer = d2 < static_cast<double>(r.in2), farther = d2 > static_cast<double>(r.out2);
-      o[j] = detail::insideOrOutside(farther);
-      const bool open = (cell[j] < 0) | !(nearer | farther);
+      o[j] = detail::insideOrOutside(d2 > static_cast<double>(r.out2));
+      const bool open = (cell[j] < 0) | !detail::radiiDecide(d2, r.in2, r.out2);
       pending[left] = static_cast<std::uint32_t>(j);
       left += open;
       __builtin_prefetch(offsets_.data() + (open ? c : 0));

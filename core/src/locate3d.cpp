@@ -3,10 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <chrono>
 #include <cmath>
-#include <atomic>
 #include <limits>
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -941,7 +941,8 @@ inline std::uint32_t CubemapLocator::leafAt(std::uint64_t X, std::uint64_t Y, st
   while (nodes_[node].count == kInner) {
     ++level;
     const int shift = depth_ - level;
-    node = nodes_[node].first + static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
+    node = nodes_[node].first +
+           static_cast<std::uint32_t>(((Y >> shift) & 1) * 2 + ((X >> shift) & 1));
   }
   return node;
 }
@@ -966,10 +967,9 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   const std::uint32_t node = leafAt(a.X, a.Y, a.node, level);
   sink.cell(a.face, level, a.X >> (depth_ - level), a.Y >> (depth_ - level), a.s, a.t);
   const Node leaf = nodes_[node];
-  const bool nearer = a.d2<leaf.in2, farther = a.d2> leaf.out2;
-  sink.radius(a.d2, leaf.in2, leaf.out2, nearer || farther);
-  if (nearer) return Location::Inside;
-  if (farther) return Location::Outside;
+  const bool decided = detail::radiiDecide(a.d2, leaf.in2, leaf.out2);
+  sink.radius(a.d2, leaf.in2, leaf.out2, decided);
+  if (decided) return detail::insideOrOutside(a.d2 > static_cast<double>(leaf.out2));
   const std::uint32_t* first = entries_.data() + leaf.first;
   if (leaf.count == 0) {
     sink.fallback();  // cannot happen (every direction leaves through some face); be safe
@@ -1015,23 +1015,31 @@ struct AimParams {
 // get node kNone and go the scalar way. Returns how many points it did (a multiple of 4).
 __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m,
                                                     const AimParams& a, AimBlock& b) noexcept {
-  const __m256d cx = _mm256_set1_pd(a.c.x), cy = _mm256_set1_pd(a.c.y),
-                cz = _mm256_set1_pd(a.c.z);
-  const __m256d sign = _mm256_set1_pd(-0.0), big = _mm256_set1_pd(std::numeric_limits<double>::max());
+  const __m256d cx = _mm256_set1_pd(a.c.x), cy = _mm256_set1_pd(a.c.y), cz = _mm256_set1_pd(a.c.z);
+  const __m256d sign = _mm256_set1_pd(-0.0),
+                big = _mm256_set1_pd(std::numeric_limits<double>::max());
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0), two = _mm256_set1_pd(2.0);
   const __m256d scale = _mm256_set1_pd(a.scale), last = _mm256_set1_pd(a.last);
   const __m128i g = _mm_set1_epi32(static_cast<int>(a.g)), shift = _mm_cvtsi32_si128(a.depth);
   std::size_t j = 0;
   for (; j + 4 <= m; j += 4) {
-    const Vec3* q = p + j;
-    const __m256d dx = _mm256_sub_pd(_mm256_setr_pd(q[0].x, q[1].x, q[2].x, q[3].x), cx);
-    const __m256d dy = _mm256_sub_pd(_mm256_setr_pd(q[0].y, q[1].y, q[2].y, q[3].y), cy);
-    const __m256d dz = _mm256_sub_pd(_mm256_setr_pd(q[0].z, q[1].z, q[2].z, q[3].z), cz);
+    // 4 points as 3 loads (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3), regrouped by coordinate
+    const double* q = &p[j].x;
+    static_assert(sizeof(Vec3) == 3 * sizeof(double));
+    const __m256d v0 = _mm256_loadu_pd(q), v1 = _mm256_loadu_pd(q + 4), v2 = _mm256_loadu_pd(q + 8);
+    const __m256d xs = _mm256_permute4x64_pd(
+        _mm256_blend_pd(_mm256_blend_pd(v0, v1, 0b0100), v2, 0b0010), _MM_SHUFFLE(1, 2, 3, 0));
+    const __m256d ys = _mm256_permute4x64_pd(
+        _mm256_blend_pd(_mm256_blend_pd(v0, v1, 0b1001), v2, 0b0100), _MM_SHUFFLE(2, 3, 0, 1));
+    const __m256d zs = _mm256_permute4x64_pd(
+        _mm256_blend_pd(_mm256_blend_pd(v0, v1, 0b0010), v2, 0b1001), _MM_SHUFFLE(3, 0, 1, 2));
+    const __m256d dx = _mm256_sub_pd(xs, cx), dy = _mm256_sub_pd(ys, cy),
+                  dz = _mm256_sub_pd(zs, cz);
     const __m256d ax = _mm256_andnot_pd(sign, dx), ay = _mm256_andnot_pd(sign, dy),
                   az = _mm256_andnot_pd(sign, dz);
-    const __m256d finite =
-        _mm256_cmp_pd(_mm256_add_pd(_mm256_add_pd(ax, ay), az), big, _CMP_LE_OQ);
-    const __m256d xw = _mm256_and_pd(_mm256_cmp_pd(ax, ay, _CMP_GE_OQ), _mm256_cmp_pd(ax, az, _CMP_GE_OQ));
+    const __m256d finite = _mm256_cmp_pd(_mm256_add_pd(_mm256_add_pd(ax, ay), az), big, _CMP_LE_OQ);
+    const __m256d xw =
+        _mm256_and_pd(_mm256_cmp_pd(ax, ay, _CMP_GE_OQ), _mm256_cmp_pd(ax, az, _CMP_GE_OQ));
     const __m256d yw = _mm256_andnot_pd(xw, _mm256_cmp_pd(ay, az, _CMP_GE_OQ));
     const __m256d major = _mm256_blendv_pd(_mm256_blendv_pd(dz, dy, yw), dx, xw);
     const __m256d du = _mm256_blendv_pd(_mm256_blendv_pd(dx, dz, yw), dy, xw);
@@ -1043,8 +1051,10 @@ __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m
                                      _mm256_mul_pd(dz, dz));
     // (s + 1) * scale clamped to the last index, then truncated: as the scalar min after
     // truncation, for values >= 0 (and for the tiny negatives of s = -1 - 1 ulp alike)
-    const __m256d fx = _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_add_pd(s, one), scale), last));
-    const __m256d fy = _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_add_pd(t, one), scale), last));
+    const __m256d fx =
+        _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_add_pd(s, one), scale), last));
+    const __m256d fy =
+        _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_add_pd(t, one), scale), last));
     const __m128i X = _mm256_cvttpd_epi32(fx), Y = _mm256_cvttpd_epi32(fy);
     const __m256d axis = _mm256_blendv_pd(_mm256_blendv_pd(two, one, yw), zero, xw);
     const __m256d negative = _mm256_and_pd(_mm256_cmp_pd(major, zero, _CMP_LT_OQ), one);
@@ -1067,16 +1077,24 @@ bool cpuHasAvx2() noexcept {
   return yes;
 }
 #else
-std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&) noexcept { return 0; }
-bool cpuHasAvx2() noexcept { return false; }
+std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&) noexcept {
+  return 0;
+}
+bool cpuHasAvx2() noexcept {
+  return false;
+}
 #endif
 
 std::atomic<bool> gVectorBatches{true};
 
 }  // namespace
 
-void setVectorBatches(bool enabled) noexcept { gVectorBatches.store(enabled); }
-bool vectorBatches() noexcept { return gVectorBatches.load(std::memory_order_relaxed) && cpuHasAvx2(); }
+void setVectorBatches(bool enabled) noexcept {
+  gVectorBatches.store(enabled);
+}
+bool vectorBatches() noexcept {
+  return gVectorBatches.load(std::memory_order_relaxed) && cpuHasAvx2();
+}
 
 void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
   if (!centred_) {
@@ -1089,8 +1107,8 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
   // table overlap instead of following one another.
   const std::size_t n = std::min(points.size(), out.size());
   const bool vector = vectorBatches();
-  const AimParams params{c_, scale_, static_cast<double>((static_cast<std::uint64_t>(g_) << depth_) - 1),
-                         g_, depth_};
+  const AimParams params{
+      c_, scale_, static_cast<double>((static_cast<std::uint64_t>(g_) << depth_) - 1), g_, depth_};
   AimBlock b;
   std::uint32_t pending[kAimBlock];
   for (std::size_t i0 = 0; i0 < n; i0 += kAimBlock) {
@@ -1105,7 +1123,8 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
       b.node[j] = aimed ? a.node : kNone;
       b.d2[j] = a.d2;
     }
-    for (std::size_t j = 0; j < m; ++j) __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
+    for (std::size_t j = 0; j < m; ++j)
+      __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
     // without a branch on the answer, as in the polar batch
     std::size_t left = 0;
     for (std::size_t j = 0; j < m; ++j) {
@@ -1115,10 +1134,8 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
       }
       int level = 0;
       const Node& nd = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
-      const bool nearer = b.d2[j] < static_cast<double>(nd.in2);
-      const bool farther = b.d2[j] > static_cast<double>(nd.out2);
-      o[j] = detail::insideOrOutside(farther);
-      const bool open = !(nearer | farther);
+      o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(nd.out2));
+      const bool open = !detail::radiiDecide(b.d2[j], nd.in2, nd.out2);
       pending[left] = static_cast<std::uint32_t>(j);
       left += open;
       __builtin_prefetch(entries_.data() + (open ? nd.first : 0));

@@ -10,6 +10,7 @@
 // decided by one 8-byte load.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -43,9 +44,22 @@ inline float floatAbove(double x) noexcept {
 inline float innerBound(double x) noexcept {
   return floatBelow(x * (1.0 - kRadiusSlack));
 }
+// below this, squared distances computed in doubles may have underflowed (to 0 even); an
+// outer bound is never stored smaller, and a point is decided outside only when its own d^2,
+// then computed without underflow, exceeds it
+inline constexpr double kSmallestOuterBound = 0x1p-140;
+
 // the stored outer bound for a cell whose farthest endpoint lies at squared distance x
 inline float outerBound(double x) noexcept {
-  return floatAbove(x * (1.0 + kRadiusSlack));
+  return floatAbove(std::max(x * (1.0 + kRadiusSlack), kSmallestOuterBound));
+}
+
+// Whether the radii decide a point at squared distance d2: nearer than in2 or farther than
+// out2. As one comparison of a product, so that the compiler emits one branch, which most
+// points take, rather than two that random points mispredict: the signs of the two
+// differences are exact, and a product that underflows to 0 only leaves a point undecided.
+inline bool radiiDecide(double d2, float in2, float out2) noexcept {
+  return (d2 - static_cast<double>(in2)) * (d2 - static_cast<double>(out2)) > 0;
 }
 
 // Outside when `farther`, else Inside, without a branch (the two come at random)
