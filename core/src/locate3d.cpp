@@ -937,7 +937,6 @@ inline int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
 
 inline std::uint32_t CubemapLocator::leafAt(std::uint64_t X, std::uint64_t Y, std::uint32_t node,
                                             int& level) const noexcept {
-  level = 0;
   while (nodes_[node].count == kInner) {
     ++level;
     const int shift = depth_ - level;
@@ -998,6 +997,7 @@ constexpr std::size_t kAimBlock = 32;
 struct AimBlock {
   std::uint32_t X[kAimBlock], Y[kAimBlock], node[kAimBlock];
   double d2[kAimBlock];
+  int level[kAimBlock];  // node's quadtree level
 };
 
 // what the vector aim needs of the locator
@@ -1115,6 +1115,7 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
     const std::size_t m = std::min(kAimBlock, n - i0);
     const Vec3* p = points.data() + i0;
     Location* o = out.data() + i0;
+    std::fill_n(b.level, m, 0);
     for (std::size_t j = vector ? aimAvx2(p, m, params, b) : 0; j < m; ++j) {
       Aim a;
       const bool aimed = aim(p[j], a) > 0;
@@ -1125,6 +1126,16 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
     }
     for (std::size_t j = 0; j < m; ++j)
       __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
+    // a refined base cell: step down one level and prefetch that child too (a quadtree's
+    // second miss would otherwise follow the first)
+    for (std::size_t j = 0; j < m; ++j) {
+      if (b.node[j] == kNone || nodes_[b.node[j]].count != kInner) continue;
+      const int shift = depth_ - 1;
+      b.node[j] = nodes_[b.node[j]].first +
+                  static_cast<std::uint32_t>(((b.Y[j] >> shift) & 1) * 2 + ((b.X[j] >> shift) & 1));
+      b.level[j] = 1;
+      __builtin_prefetch(nodes_.data() + b.node[j]);
+    }
     // without a branch on the answer, as in the polar batch
     std::size_t left = 0;
     for (std::size_t j = 0; j < m; ++j) {
@@ -1132,7 +1143,7 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
         pending[left++] = static_cast<std::uint32_t>(j);
         continue;
       }
-      int level = 0;
+      int level = b.level[j];
       const Node& nd = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
       o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(nd.out2));
       const bool open = !detail::radiiDecide(b.d2[j], nd.in2, nd.out2);

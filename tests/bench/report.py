@@ -65,15 +65,21 @@ def floors(rows):
                   ns("Locate2D", "polar", big), ns("Locate2D", "polar", small), 4)
     ratio_at_least("polar against wedge at N = 16384 (one point per call)",
                    ns("Locate2D", "wedge", 16384), ns("Locate2D", "polar", 16384), 5)
-    ratio_at_least("polar against GEOS prepared contains at N = 16384",
+    ratio_at_least("polar against GEOS prepared contains at N = 16384 (one point per call)",
                    ns("Locate2D", "geos", 16384), ns("Locate2D", "polar", 16384), 30)
+    ratio_at_least("polar batch, 1 thread, against GEOS prepared contains at N = 16384",
+                   ns("Locate2D", "geos", 16384), ns("Batch2D", "polar (1 thr)", 16384), 30)
     ratio_at_most("cubemap, batch 1 thread: F = 10^6 against F = 100",
                   ns("Batch3D", "cubemap (1 thr)", 1000000), ns("Batch3D", "cubemap (1 thr)", 100), 4)
     ratio_at_most("cubemap, one point per call: F = 10^6 against F = 100",
                   ns("Locate3D", "cubemap", 1000000), ns("Locate3D", "cubemap", 100), 4)
     for f in (100000, 1000000):
-        ratio_at_least(f"cubemap against CGAL Side_of_triangle_mesh at F = {f:g}",
+        ratio_at_least(f"cubemap against CGAL Side_of_triangle_mesh at F = 10^{len(str(f)) - 1} "
+                       "(one point per call)",
                        ns("Locate3D", "cgal", f), ns("Locate3D", "cubemap", f), 50)
+        ratio_at_least(f"cubemap batch, 1 thread, against CGAL Side_of_triangle_mesh at "
+                       f"F = 10^{len(str(f)) - 1}",
+                       ns("Locate3D", "cgal", f), ns("Batch3D", "cubemap (1 thr)", f), 50)
     stream = ns("Stream", "stream (2 thr)", 10000000)
     for family, method, sizes in (("Batch2D", "polar", (8, 64, 1024, 4096)),
                                   ("Batch3D", "cubemap", (100, 1000, 10000))):

@@ -204,7 +204,8 @@ class CubemapLocator {
   };
   // 1: aimed; 0: p is the centre; -1: no cell (not finite, no centre, direction overflows)
   [[gnu::always_inline]] int aim(Vec3 p, Aim& a) const noexcept;
-  // the leaf holding cell (X, Y) of the deepest level, from its base cell; and its level
+  // the leaf holding cell (X, Y) of the deepest level, down from `node` at `level` (which
+  // becomes the leaf's level)
   [[gnu::always_inline]] std::uint32_t leafAt(std::uint64_t X, std::uint64_t Y, std::uint32_t node,
                                               int& level) const noexcept;
   void buildRadii();
