@@ -661,9 +661,20 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
     v_.push_back(v_[1]);
     v_.shrink_to_fit();
   };
-  if (!centre) {
-    // no double point lies strictly inside (a sliver thinner than the double grid):
-    // keep an empty table and answer by bisection over the fan from vertex 0
+  // A vertex whose direction from the centre overflows (a polygon wider than the double
+  // range, from near -DBL_MAX to near DBL_MAX) has no pseudo-angle; found by the
+  // differential fuzz target, where the build converted a NaN to an index.
+  auto directionsFinite = [&] {
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (!(std::fabs(v_[i].x - centre->x) + std::fabs(v_[i].y - centre->y) <
+            std::numeric_limits<double>::infinity()))
+        return false;
+    return true;
+  };
+  if (!centre || !directionsFinite()) {
+    // no double point lies strictly inside (a sliver thinner than the double grid), or the
+    // directions overflow: keep an empty table and answer by bisection over the fan from
+    // vertex 0
     c_ = v_[0];
     offsets_.assign(cells + 1, 0);
     radii_.assign(cells, {0.0f, std::numeric_limits<float>::infinity()});  // decide nothing

@@ -191,6 +191,26 @@ TEST(LocateNonFinite, IsOutsideForEveryMethod) {
   }
 }
 
+// A polygon wider than the double range: directions from any centre overflow, so polar has
+// no table and bisects the fan (the differential fuzz target found its build converting a
+// NaN angle to a cell index); every method stays exact.
+TEST(LocateExtreme, PolygonWiderThanTheDoubleRange) {
+  const double M = std::numeric_limits<double>::max();
+  const ConvexPolygon polygon(std::vector<Vec2>{{-M, -M}, {M, -M}, {M, M}, {-M, M}});
+  const std::vector<std::pair<Vec2, Location>> cases = {
+      {{0, 0}, Location::Inside},          {{M, 0}, Location::Boundary},
+      {{M, M}, Location::Boundary},        {{-M, 1}, Location::Boundary},
+      {{1e308, -1e308}, Location::Inside}, {{-1e308, 1.5e308}, Location::Inside},
+      {{0, -M}, Location::Boundary},       {{1, std::numeric_limits<double>::infinity()}, Location::Outside}};
+  for (Method2D m : kAllMethods2D) {
+    const Locator2D locator(polygon, m);
+    for (const auto& [p, want] : cases) {
+      EXPECT_EQ(locator.locate(p), want) << toString(m) << " at " << adversarial::show(p);
+      EXPECT_EQ(locator.trace(p).result, want) << toString(m) << " at " << adversarial::show(p);
+    }
+  }
+}
+
 // method names round-trip
 TEST(Method2DNames, RoundTrip) {
   for (Method2D m : kAllMethods2D) EXPECT_EQ(parseMethod2D(toString(m)), m);
