@@ -130,13 +130,13 @@ Location fanLocate(std::span<const Vec2> v, Vec2 p, Sink& sink) {
 }
 
 // rough bytes held by a vector
-template <class T>
-std::size_t bytesOf(const std::vector<T>& v) {
+template <class T, class A>
+std::size_t bytesOf(const std::vector<T, A>& v) {
   return v.capacity() * sizeof(T);
 }
 
 // statistics of a CSR table
-Stats2D csrStats(std::size_t edges, const std::vector<std::uint32_t>& offsets, std::size_t bytes,
+Stats2D csrStats(std::size_t edges, std::span<const std::uint32_t> offsets, std::size_t bytes,
                  double buildSeconds) {
   Stats2D s;
   s.edges = edges;

@@ -150,8 +150,8 @@ std::uint32_t walkToExit(const std::vector<Vec3>& v, const std::vector<Triangle>
 }
 
 // rough bytes held by a vector
-template <class T>
-std::size_t bytesOf(const std::vector<T>& v) {
+template <class T, class A>
+std::size_t bytesOf(const std::vector<T, A>& v) {
   return v.capacity() * sizeof(T);
 }
 
@@ -696,7 +696,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   std::size_t liveEntries = entries_.size();
   // rewrites entries_ with the leaves' lists only
   auto compact = [&]() {
-    std::vector<std::uint32_t> kept;
+    Table<std::uint32_t> kept;
     kept.reserve(liveEntries);
     for (Node& nd : nodes_) {
       if (nd.count == kInner) continue;

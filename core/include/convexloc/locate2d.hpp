@@ -20,6 +20,7 @@
 
 #include "convexloc/geometry.hpp"
 #include "convexloc/polygon.hpp"
+#include "convexloc/table.hpp"
 
 namespace convexloc {
 
@@ -220,9 +221,9 @@ private:
     float out2 = 0.0f;
   };
   std::vector<Vec2> v_;
-  std::vector<std::uint32_t> offsets_;  // CSR over 8 * q_ cells
-  std::vector<std::uint32_t> entries_;  // each cell's edges in counter-clockwise order
-  std::vector<Radii> radii_;            // per cell
+  Table<std::uint32_t> offsets_;  // CSR over 8 * q_ cells
+  Table<std::uint32_t> entries_;  // each cell's edges in counter-clockwise order
+  Table<Radii> radii_;            // per cell
   std::int64_t cellBase_[8] = {};       // per octant index: its first cell, or its last
   std::int64_t cellStep_[8] = {};       // +1 or -1: how the cell follows the ratio
   Box2 box_{};

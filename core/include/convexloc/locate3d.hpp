@@ -22,6 +22,7 @@
 
 #include "convexloc/geometry.hpp"
 #include "convexloc/polyhedron.hpp"
+#include "convexloc/table.hpp"
 
 namespace convexloc {
 
@@ -214,8 +215,8 @@ class CubemapLocator {
   std::vector<Vec3> v_;
   std::vector<ConvexPolyhedron::Triangle> tri_;
   std::vector<ConvexPolyhedron::Triangle> nb_;
-  std::vector<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
-  std::vector<std::uint32_t> entries_;  // each leaf's faces
+  Table<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
+  Table<std::uint32_t> entries_;  // each leaf's faces
   Vec3 c_{};
   bool centred_ = false;
   std::uint32_t g_ = 1;
