@@ -9,12 +9,15 @@
 namespace convexloc::detail {
 
 void* allocateHuge(std::size_t bytes) {
-  const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-  void* p = std::aligned_alloc(kHugePage, rounded);
+  // whole small pages from a huge-page boundary; only the whole huge pages inside the
+  // buffer get the advice, so the tail never takes a huge page the table does not fill
+  // (memory stays what the locator reports)
+  constexpr std::size_t kPage = 4096;
+  void* p = std::aligned_alloc(kHugePage, (bytes + kPage - 1) / kPage * kPage);
   if (!p) throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
   // advice only: where the kernel declines, the buffer keeps small pages
-  madvise(p, rounded, MADV_HUGEPAGE);
+  madvise(p, bytes / kHugePage * kHugePage, MADV_HUGEPAGE);
 #endif
   return p;
 }

@@ -1,7 +1,7 @@
 // convexloc — storage for a locator's large tables.
 //
-// Table<T> is a std::vector whose buffers of 2 MiB and more are aligned to 2 MiB and
-// marked for transparent huge pages before they are first touched (Linux: madvise
+// Table<T> is a std::vector whose buffers of 2 MiB and more are aligned to 2 MiB, and whose
+// whole 2 MiB pages are marked for transparent huge pages before they are first touched (Linux: madvise
 // MADV_HUGEPAGE, which Debian's default THP setting honours). A query reads a random cell
 // of a table of many megabytes; with 4 KiB pages nearly every such read also misses the
 // TLB, which the batches' prefetching cannot hide. Smaller buffers come from the usual
@@ -18,7 +18,7 @@ namespace convexloc {
 namespace detail {
 // buffers at least this large get huge pages
 inline constexpr std::size_t kHugePage = std::size_t{1} << 21;
-// bytes rounded up to whole huge pages, aligned to one; throws std::bad_alloc
+// a buffer of `bytes` starting on a huge-page boundary; throws std::bad_alloc
 void* allocateHuge(std::size_t bytes);
 void freeHuge(void* p) noexcept;
 }  // namespace detail
