@@ -12,9 +12,10 @@ void* allocateHuge(std::size_t bytes) {
   // whole small pages from a huge-page boundary; only the whole huge pages inside the
   // buffer get the advice, so the tail never takes a huge page the table does not fill
   // (memory stays what the locator reports)
+  // (posix_memalign: C's aligned_alloc wants the size to be a multiple of the alignment)
   constexpr std::size_t kPage = 4096;
-  void* p = std::aligned_alloc(kHugePage, (bytes + kPage - 1) / kPage * kPage);
-  if (!p) throw std::bad_alloc();
+  void* p = nullptr;
+  if (posix_memalign(&p, kHugePage, (bytes + kPage - 1) / kPage * kPage) != 0) throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
   // advice only: where the kernel declines, the buffer keeps small pages
   madvise(p, bytes / kHugePage * kHugePage, MADV_HUGEPAGE);
