@@ -729,6 +729,11 @@ PolarLocator::PolarLocator(const ConvexPolygon& polygon, std::uint32_t slabsPerO
         break;
       }
   }
+  // the per-edge arrays go before the radii are built: the build's peak is the table's
+  first = {};
+  last = {};
+  angle = {};
+  count = {};
   buildRadii();
   pad();
   buildSeconds_ = secondsSince(t0);
@@ -807,12 +812,6 @@ void pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, double&
 
 void PolarLocator::buildRadii() {
   const std::uint32_t cells = 8 * q_;
-  std::vector<double> in2(n_), out2(n_);
-  for (std::uint32_t e = 0; e < n_; ++e) {
-    const Vec2 a = v_[e], b = v_[e + 1 == n_ ? 0 : e + 1];
-    in2[e] = lineDistance2Below(a, b, c_);
-    out2[e] = std::max(distance2(a, c_), distance2(b, c_));
-  }
   // a cell's range in pseudo-angle, widened far beyond the query's index error (2^-50) and
   // the rounding of the directions drawn from it
   constexpr double kWidenAngle = 0x1p-30;
@@ -821,9 +820,13 @@ void PolarLocator::buildRadii() {
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     const double angleLo = c / qd_ - kWidenAngle, angleHi = (c + 1) / qd_ + kWidenAngle;
     for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+      // the whole edge's bounds, then its piece's (computed per entry: no array per edge,
+      // so the build's peak memory stays that of the table)
       const std::uint32_t e = entries_[k];
-      double edgeIn2 = in2[e], edgeOut2 = out2[e];
-      pieceBounds(v_[e], v_[e + 1 == n_ ? 0 : e + 1], c_, angleLo, angleHi, edgeIn2, edgeOut2);
+      const Vec2 a = v_[e], b = v_[e + 1 == n_ ? 0 : e + 1];
+      double edgeIn2 = lineDistance2Below(a, b, c_);
+      double edgeOut2 = std::max(distance2(a, c_), distance2(b, c_));
+      pieceBounds(a, b, c_, angleLo, angleHi, edgeIn2, edgeOut2);
       lo = std::min(lo, edgeIn2);
       hi = std::max(hi, edgeOut2);
     }
