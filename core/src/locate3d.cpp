@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -1071,30 +1070,13 @@ __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m
   }
   return j;
 }
-
-bool cpuHasAvx2() noexcept {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
 #else
 std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&) noexcept {
   return 0;
 }
-bool cpuHasAvx2() noexcept {
-  return false;
-}
 #endif
 
-std::atomic<bool> gVectorBatches{true};
-
 }  // namespace
-
-void setVectorBatches(bool enabled) noexcept {
-  gVectorBatches.store(enabled);
-}
-bool vectorBatches() noexcept {
-  return gVectorBatches.load(std::memory_order_relaxed) && cpuHasAvx2();
-}
 
 void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
   if (!centred_) {

@@ -20,36 +20,6 @@ namespace {
 
 const std::int64_t kSizes[] = {8, 64, 1024, 16384, 262144, 1048576};
 
-// one point per call
-template <class L>
-void locateOne(benchmark::State& state) {
-  const L loc(polygon(state.range(0)));
-  timeEachPoint(state, points<Vec2>(state.range(0), kLocatePoints),
-                [&](Vec2 p) { return loc.locate(p); });
-}
-
-// the batch path over 10^7 points, on the library's own threads (locateParallel)
-template <class L>
-void locateBatch(benchmark::State& state) {
-  const std::int64_t n = state.range(0);
-  const unsigned threads = static_cast<unsigned>(state.range(1));
-  const L loc(polygon(n));
-  const std::vector<Vec2>& pts = points<Vec2>(n, kBatchPoints);
-  std::vector<Location> out(kBatchPoints);
-  for (auto _ : state) {
-    locateParallel(loc, std::span(pts), std::span(out), threads);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kBatchPoints));
-}
-
-template <class L>
-void build(benchmark::State& state) {
-  const ConvexPolygon& p = polygon(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(L(p));
-  state.SetItemsProcessed(state.iterations() * state.range(0));
-}
-
 // The streaming limit: read two doubles, write one byte per point, split over T threads
 // the way locateParallel splits a batch.
 void stream(benchmark::State& state) {
@@ -79,13 +49,13 @@ template <class L>
 void registerMethod(const std::string& name, std::int64_t maxLocateN, std::int64_t maxBatchN) {
   for (std::int64_t n : kSizes) {
     if (n > maxLocateN) continue;
-    benchmark::RegisterBenchmark(("Locate2D/" + name).c_str(), locateOne<L>)->Arg(n);
-    benchmark::RegisterBenchmark(("Build2D/" + name).c_str(), build<L>)->Arg(n);
+    benchmark::RegisterBenchmark(("Locate2D/" + name).c_str(), locateOne<L, Vec2>)->Arg(n);
+    benchmark::RegisterBenchmark(("Build2D/" + name).c_str(), build<L, Vec2>)->Arg(n);
   }
   for (std::int64_t n : {8, 64, 1024, 4096, 16384, 262144, 1048576}) {
     if (n > maxBatchN) continue;
     for (int t : {1, 2})
-      benchmark::RegisterBenchmark(("Batch2D/" + name).c_str(), locateBatch<L>)
+      benchmark::RegisterBenchmark(("Batch2D/" + name).c_str(), locateBatch<L, Vec2>)
           ->Args({n, t})
           ->ArgNames({"", "threads"})
           ->UseRealTime();

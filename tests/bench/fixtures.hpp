@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "convexloc/batch.hpp"
 #include "convexloc/generate2d.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/polyhedron.hpp"
@@ -70,6 +71,49 @@ void timeEachPoint(benchmark::State& state, const std::vector<P>& pts, Locate&& 
     i = (i + 1) & (kLocatePoints - 1);
   }
   state.SetItemsProcessed(state.iterations());
+}
+
+// the shape of that size for points of type P: polygon(size) or polyhedron(size)
+template <class P>
+const auto& shape(std::int64_t size) {
+  if constexpr (sizeof(P) == sizeof(Vec2))
+    return polygon(size);
+  else
+    return polyhedron(size);
+}
+
+// locator L, one point per call; range(0) is the size
+template <class L, class P>
+void locateOne(benchmark::State& state) {
+  const L loc(shape<P>(state.range(0)));
+  timeEachPoint(state, points<P>(state.range(0), kLocatePoints),
+                [&](P p) { return loc.locate(p); });
+  if constexpr (sizeof(P) != sizeof(Vec2))
+    state.counters["faces"] = static_cast<double>(polyhedron(state.range(0)).faceCount());
+}
+
+// locator L's batch path over 10^7 points, on the library's own threads (locateParallel);
+// range(0) is the size, range(1) the threads
+template <class L, class P>
+void locateBatch(benchmark::State& state) {
+  const std::int64_t n = state.range(0);
+  const unsigned threads = static_cast<unsigned>(state.range(1));
+  const L loc(shape<P>(n));
+  const std::vector<P>& pts = points<P>(n, kBatchPoints);
+  std::vector<Location> out(kBatchPoints);
+  for (auto _ : state) {
+    locateParallel(loc, std::span(pts), std::span(out), threads);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kBatchPoints));
+}
+
+// building locator L on the shape of size range(0)
+template <class L, class P>
+void build(benchmark::State& state) {
+  const auto& s = shape<P>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(L(s));
+  state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
 }  // namespace bench

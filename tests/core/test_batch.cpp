@@ -4,16 +4,19 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
+#include <string>
+#include <type_traits>
 #include <vector>
 
+#include "adversarial.hpp"
+#include "adversarial3d.hpp"
 #include "convexloc/batch.hpp"
 #include "convexloc/generate2d.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
-#include "adversarial.hpp"
-#include "adversarial3d.hpp"
 
 using namespace convexloc;
 
@@ -33,6 +36,31 @@ void expectSameAsOneByOne(const Locator& loc, const std::vector<Point>& pts) {
     }
   }
 }
+
+// Appends points no cell takes (infinite, NaN, far beyond the double range of directions),
+// then checks that the batch gives the one-point answers with the AVX2 code (where the CPU
+// has it) and with the scalar code.
+template <class Locator, class Point>
+void expectVectorAndScalarAgree(const Locator& loc, std::vector<Point> pts,
+                                std::initializer_list<Point> extreme) {
+  pts.insert(pts.end(), extreme);
+  std::vector<Location> want(pts.size()), vec(pts.size()), scalar(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) want[i] = loc.locate(pts[i]);
+  setVectorBatches(true);
+  loc.locate(std::span<const Point>(pts), std::span<Location>(vec));
+  setVectorBatches(false);
+  loc.locate(std::span<const Point>(pts), std::span<Location>(scalar));
+  setVectorBatches(true);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    std::string at = "point " + std::to_string(i);
+    if constexpr (std::is_same_v<Point, Vec2>) at += ": " + adversarial::show(pts[i]);
+    ASSERT_EQ(vec[i], want[i]) << at;
+    ASSERT_EQ(scalar[i], want[i]) << at;
+  }
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kBig = std::numeric_limits<double>::max();
 
 }  // namespace
 
@@ -74,23 +102,12 @@ TEST(Batch, CubemapVectorAndScalarCodeAgree) {
     std::vector<Vec3> pts = generatePoints3D(p, 50000, 9, true);
     auto hard = adversarial3d::cubemapPoints(p, cm, rng);
     pts.insert(pts.end(), hard.begin(), hard.end());
-    const double inf = std::numeric_limits<double>::infinity(), big = std::numeric_limits<double>::max();
-    for (Vec3 q : {Vec3{inf, 0, 0}, Vec3{0, std::nan(""), 0}, Vec3{big, -big, big},
-                   Vec3{-big, 0, 0}, Vec3{0, 0, -inf}})
-      pts.push_back(q);
-    std::vector<Location> want(pts.size()), vec(pts.size()), scalar(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) want[i] = cm.locate(pts[i]);
-    setVectorBatches(true);
-    cm.locate(std::span<const Vec3>(pts), std::span<Location>(vec));
-    setVectorBatches(false);
-    cm.locate(std::span<const Vec3>(pts), std::span<Location>(scalar));
-    setVectorBatches(true);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      ASSERT_EQ(vec[i], want[i]) << "point " << i;
-      ASSERT_EQ(scalar[i], want[i]) << "point " << i;
-    }
+    expectVectorAndScalarAgree(cm, std::move(pts),
+                               {Vec3{kInf, 0, 0}, Vec3{0, std::nan(""), 0}, Vec3{kBig, -kBig, kBig},
+                                Vec3{-kBig, 0, 0}, Vec3{0, 0, -kInf}});
   }
-  std::printf("[ info     ] AVX2 batch code %s on this CPU\n", vectorBatches() ? "used" : "not available");
+  std::printf("[ info     ] AVX2 batch code %s on this CPU\n",
+              vectorBatches() ? "used" : "not available");
 }
 
 TEST(Batch, PolarVectorAndScalarCodeAgree) {
@@ -107,19 +124,8 @@ TEST(Batch, PolarVectorAndScalarCodeAgree) {
     std::vector<Vec2> pts = generatePoints(polygon, 50000, 4, true);
     auto hard = adversarial::polarPoints(polar, polygon);
     pts.insert(pts.end(), hard.begin(), hard.end());
-    const double inf = std::numeric_limits<double>::infinity(), big = std::numeric_limits<double>::max();
-    for (Vec2 q : {Vec2{inf, 0}, Vec2{0, std::nan("")}, Vec2{big, -big}, Vec2{-big, 0}, polar.centre()})
-      pts.push_back(q);
-    std::vector<Location> want(pts.size()), vec(pts.size()), scalar(pts.size());
-    for (std::size_t i = 0; i < pts.size(); ++i) want[i] = polar.locate(pts[i]);
-    setVectorBatches(true);
-    polar.locate(std::span<const Vec2>(pts), std::span<Location>(vec));
-    setVectorBatches(false);
-    polar.locate(std::span<const Vec2>(pts), std::span<Location>(scalar));
-    setVectorBatches(true);
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      ASSERT_EQ(vec[i], want[i]) << "point " << i << ": " << adversarial::show(pts[i]);
-      ASSERT_EQ(scalar[i], want[i]) << "point " << i;
-    }
+    expectVectorAndScalarAgree(
+        polar, std::move(pts),
+        {Vec2{kInf, 0}, Vec2{0, std::nan("")}, Vec2{kBig, -kBig}, Vec2{-kBig, 0}, polar.centre()});
   }
 }
