@@ -42,21 +42,21 @@ def floors(rows):
 
     out = []
 
-    def ratio_at_most(what, a, b, limit):
+    def ratio(what, a, b, limit, at_most):
+        """a / b against the limit: at most it (growth), or at least it (a speed-up)"""
         if a is None or b is None:
             out.append((what, "not measured", "—"))
             return
         r = a / b
-        out.append((what, f"{a:.3g} / {b:.3g} ns = {r:.2f}x (at most {limit}x)",
-                    "holds" if r <= limit else "FAILS"))
+        shown = f"{r:.2f}x (at most {limit}x)" if at_most else f"{r:.1f}x (at least {limit}x)"
+        holds = r <= limit if at_most else r >= limit
+        out.append((what, f"{a:.3g} / {b:.3g} ns = {shown}", "holds" if holds else "FAILS"))
+
+    def ratio_at_most(what, a, b, limit):
+        ratio(what, a, b, limit, True)
 
     def ratio_at_least(what, slow, fast, limit):
-        if slow is None or fast is None:
-            out.append((what, "not measured", "—"))
-            return
-        r = slow / fast
-        out.append((what, f"{slow:.3g} / {fast:.3g} ns = {r:.1f}x (at least {limit}x)",
-                    "holds" if r >= limit else "FAILS"))
+        ratio(what, slow, fast, limit, False)
 
     big, small = 1 << 20, 8
     ratio_at_most("polar, batch 1 thread: N = 2^20 against N = 8",
