@@ -744,7 +744,10 @@ namespace {
 // A lower bound on the squared distance from c to the line through a and b, for c strictly
 // on its inner side (0 when the doubles cannot bound it: underflow, overflow). The cross
 // product's filter bound makes the numerator a lower bound; the rest is a few roundings,
-// which the radius slack covers.
+// which the radius slack covers. The distance is formed before it is squared: the cross
+// product squared overflows long before the distance does (a triangle 10^150 long and
+// 10^12 wide, found by the polygon reader's fuzz target, where the squared numerator
+// became infinity and the cell claimed every point inside).
 double lineDistance2Below(Vec2 a, Vec2 b, Vec2 c) {
   using detail::kCcwBound;
   const double ux = b.x - a.x, uy = b.y - a.y, wx = c.x - a.x, wy = c.y - a.y;
@@ -755,7 +758,8 @@ double lineDistance2Below(Vec2 a, Vec2 b, Vec2 c) {
   if (!(permanent >= detail::kTinyPermanent) || !(num > 0) || !(len2 >= 0x1p-900) ||
       !(len2 <= std::numeric_limits<double>::max()))
     return 0.0;
-  return num * num / len2;
+  const double d = num / std::sqrt(len2);  // at most |c - a|, which is finite
+  return d * d;  // infinity only where the true square exceeds the double range
 }
 
 // the squared distance of p from c, as the query computes it

@@ -104,6 +104,11 @@ inline std::vector<ShapeCase> buildCases() {
   add("huge_1e300", scaled(regular(17), 997), fewer);
   add("huge_near_max", scaled(regular(17), 1022), fewer);
   add("span_1e_150_1e150", {{0, 0}, {1e-150, 0}, {1e150, 1e150}, {0, 1e-150}});
+  // needles 10^150 long and 10^12 wide: the distance from the centre to a long edge fits in
+  // a double, its cross product squared does not (the polygon reader's fuzz target found the
+  // polar radii taking that overflow for an infinite inner radius)
+  add("needle_1e150_by_1e12", {{4e-150, 1e-150}, {115e10, 1e150}, {75, 2e150}}, fewer);
+  add("needle_1e154_by_1e3_tilted", {{0, 0}, {3e154, 1e154 + 1e138}, {1.5e154, 5e153}}, fewer);
   // no double point lies strictly inside: the polar locator has no centre and falls back
   add("ulp_sliver", {{0, 0}, {1, 1}, {1, 1 - ulp1}});
   add("two_ulp_sliver", {{0, 0}, {1, 1}, {0.5, 0.5 + ulp1}});

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <sstream>
@@ -178,6 +179,43 @@ TEST(Locate3D, ExtremeScalesAndPoints) {
                                     {1.25e308, 1.25e308, 1.25e308},
                                     {1.05e308, 1.05e308, 1.05e308}})
       EXPECT_EQ(loc.locate(q), ref.locate(q)) << toString(config.method) << show(q);
+  }
+}
+
+// Needles 10^150 and 10^154 long, 10^12 and 10^138 wide: a face's distance from the centre
+// fits in a double while its cross products squared do not (the 2D radii overflowed there).
+TEST(Locate3D, NeedlesAcrossTheDoubleRange) {
+  const std::vector<std::array<Vec3, 4>> needles = {
+      {{{4e-150, 1e-150, 0}, {115e10, 1e150, 3e11}, {75, 2e150, -1e12}, {-2e12, 1.5e150, 1e11}}},
+      {{{0, 0, 0}, {3e154, 1e154 + 1e138, 2e138}, {1.5e154, 5e153, -3e138}, {2e154, 7e153, 5e138}}}};
+  for (const auto& n : needles) {
+    MeshData m = shapes3d::tetrahedron(n[0], n[1], n[2], n[3]);
+    if (!shapes3d::failureOf(m).message.empty()) m = shapes3d::reversed(m);
+    const ConvexPolyhedron p(m);
+    const reftest::Reference ref(p);
+    Rng rng(0x7e3d);
+    std::vector<Vec3> points = generatePoints3D(p, 3000, 5, false);
+    for (const auto& more : {generatePoints3D(p, 3000, 6, true),
+                             adversarial3d::surfacePoints(p, 1500, rng),
+                             adversarial3d::cubemapPoints(p, CubemapLocator(p), rng),
+                             adversarial3d::cubemapPoints(p, CubemapLocator(p, 48), rng)})
+      points.insert(points.end(), more.begin(), more.end());
+    points.insert(points.end(), n.begin(), n.end());
+    std::size_t wrong = 0, inside = 0;
+    for (const Config& config : kConfigs) {
+      const Locator3D loc(p, config.method, config.resolution);
+      std::vector<Location> batch(points.size(), Location::Boundary);
+      loc.locate(points, batch);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Location want = ref.locate(points[i]);
+        inside += want == Location::Inside;
+        for (Location got : {loc.locate(points[i]), batch[i]})
+          if (got != want && ++wrong <= 5)
+            ADD_FAILURE() << mismatch("needle", config, "locate/batch", points[i], got, want);
+      }
+    }
+    EXPECT_EQ(wrong, 0u);
+    EXPECT_GT(inside, 0u);
   }
 }
 
