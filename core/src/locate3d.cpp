@@ -6,6 +6,8 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -387,6 +389,13 @@ constexpr int kMaxLevel = 30;
 constexpr int kMaxSideBits = 31;
 // the largest G accepted
 constexpr std::uint32_t kMaxResolution = 8192;
+// The default G is at least this: where the faces are few, each cell's radii then bound
+// only the part of a face the cell sees, and a thinner shell is left to the face tests (on
+// an 80-face geodesic sphere, 2.3% of random points against 5.4% at G = 3); the grid still
+// fits the constant part of the memory budget.
+constexpr std::uint32_t kSmallestDefault = 16;
+// the part of the memory budget that does not grow with the faces
+constexpr std::size_t kFixedBudget = 32 * 1024;
 
 // a convex polygon in (s, t) with at most 4 + 3 vertices
 struct Poly {
@@ -591,7 +600,8 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   const std::size_t nf = tri_.size();
   g_ = resolution ? resolution
                   : static_cast<std::uint32_t>(std::clamp<double>(
-                        std::round(std::sqrt(static_cast<double>(nf) / 8)), 1, kMaxResolution));
+                        std::round(std::sqrt(static_cast<double>(nf) / 8)), kSmallestDefault,
+                        kMaxResolution));
   std::optional<Vec3> centre = polyhedron.centre();
   double extent = 0;
   if (centre) {
@@ -611,9 +621,9 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   const PowerOfTwo scale(-std::ilogb(extent));  // extent scaled into [1, 2)
 
   // the memory budget for the cells: 120 bytes per face in all, plus 32 KiB (so that small
-  // polyhedra, the ones a lecturer draws, still get a grid worth showing)
+  // polyhedra, the ones a lecturer draws, still get a grid worth showing, and fast radii)
   const std::size_t fixed = sizeof(*this) + bytesOf(v_) + bytesOf(tri_) + bytesOf(nb_);
-  const std::size_t total = 120 * nf + 32768;
+  const std::size_t total = 120 * nf + kFixedBudget;
   const std::size_t budget = total > fixed ? total - fixed : 0;
 
   // calls visit(face index, cube face, polygon) for every cube face a face's cone meets
@@ -870,6 +880,87 @@ double distance2Long(Vec3 p, Vec3 c) {
   return static_cast<double>(dx * dx + dy * dy + dz * dz);
 }
 
+// Tighter bounds for one cell and one face listed in it. The rays from c whose directions
+// the query maps to the cell form a pyramid: the cone over the cell's square on its cube
+// face, widened far beyond the query's rounding. Where all four corner rays meet the face's
+// plane ahead of c, the plane's part inside the pyramid is the quadrilateral Q of the four
+// hits, and every exit point through this face of a point mapped to the cell lies in Q. Over
+// Q the distance from c is largest at a corner, and smallest at the foot of the
+// perpendicular from c if Q holds it, else on one of Q's sides. All in long double; the ends
+// are bounded with the products' error bounds (the edge normal to 4 units of its
+// permanent, the triple product to 8), and a face whose normal or corner rays are too badly
+// conditioned for that keeps its whole-face bounds. Lowers out2 and raises in2 only where
+// the tighter bound is sure.
+struct CellPyramid {
+  long double d[4][3];  // the corner directions, widened, counter-clockwise around the cell
+  long double len[4];   // their lengths
+  int a, u, w;          // the cube face's major and minor axes
+  long double sigma;
+  long double s0, s1, t0, t1;  // the widened square
+};
+
+void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, double& in2,
+                   double& out2) {
+  using L = long double;
+  constexpr L eps = std::numeric_limits<L>::epsilon();
+  const L u[3] = {L(vb.x) - va.x, L(vb.y) - va.y, L(vb.z) - va.z};
+  const L v[3] = {L(vd.x) - va.x, L(vd.y) - va.y, L(vd.z) - va.z};
+  const L w[3] = {L(c.x) - va.x, L(c.y) - va.y, L(c.z) - va.z};
+  const L n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const L pn[3] = {std::fabs(u[1] * v[2]) + std::fabs(u[2] * v[1]),
+                   std::fabs(u[2] * v[0]) + std::fabs(u[0] * v[2]),
+                   std::fabs(u[0] * v[1]) + std::fabs(u[1] * v[0])};
+  // n's components are within 4 eps of their permanents; its length at least nNorm
+  const L nErr[3] = {4 * eps * pn[0], 4 * eps * pn[1], 4 * eps * pn[2]};
+  const L nNorm = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
+  if (!(nErr[0] + nErr[1] + nErr[2] <= 0x1p-40L * nNorm)) return;  // a nearly flat triangle
+  // the outward plane offset N = n . (a - c) > 0, within 8 eps of its permanent
+  const L N = -(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]);
+  const L NErr = 8 * eps * (pn[0] * std::fabs(w[0]) + pn[1] * std::fabs(w[1]) + pn[2] * std::fabs(w[2]));
+  if (!(N - NErr > 0)) return;
+  const L nLen = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  L hit[4][3], farthest = 0;
+  for (int k = 0; k < 4; ++k) {
+    const L* d = cp.d[k];
+    const L D = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+    const L DErr = (nErr[0] + 2 * eps * std::fabs(n[0])) * std::fabs(d[0]) +
+                   (nErr[1] + 2 * eps * std::fabs(n[1])) * std::fabs(d[1]) +
+                   (nErr[2] + 2 * eps * std::fabs(n[2])) * std::fabs(d[2]);
+    // the corner ray must meet the plane ahead, not nearly along it
+    if (!(D - DErr > 0x1p-20L * nLen * cp.len[k])) return;
+    const L lambdaHi = (N + NErr) / (D - DErr);
+    farthest = std::max(farthest, lambdaHi * cp.len[k]);
+    const L lambda = N / D;
+    for (int i = 0; i < 3; ++i) hit[k][i] = lambda * d[i];
+  }
+  // rounding in the hits and in what follows stays below 2^-40 of the farthest
+  const L slack = 0x1p-36L * farthest;
+  farthest += slack;
+  out2 = std::min(out2, static_cast<double>(farthest * farthest));
+  // the foot of the perpendicular lies along n from c: is its direction in the pyramid?
+  // (tested with room far beyond n's error, so that "not in it" is sure)
+  const L major = cp.sigma * n[cp.a];
+  constexpr L kRoom = 0x1p-20L;
+  if (major > 0) {
+    const L fs = n[cp.u] / major, ft = n[cp.w] / major;
+    if (fs >= cp.s0 - kRoom && fs <= cp.s1 + kRoom && ft >= cp.t0 - kRoom && ft <= cp.t1 + kRoom)
+      return;  // Q may hold the foot: the plane's distance stands
+  }
+  L nearest = std::numeric_limits<L>::infinity();
+  for (int k = 0; k < 4; ++k) {
+    const L* A = hit[k];
+    const L* B = hit[(k + 1) % 4];
+    const L e[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]};
+    const L e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    L t = e2 > 0 ? -(A[0] * e[0] + A[1] * e[1] + A[2] * e[2]) / e2 : 0;
+    t = std::clamp(t, L(0), L(1));
+    const L x = A[0] + t * e[0], y = A[1] + t * e[1], z = A[2] + t * e[2];
+    nearest = std::min(nearest, std::sqrt(x * x + y * y + z * z));
+  }
+  nearest -= slack;
+  if (nearest > 0) in2 = std::max(in2, static_cast<double>(nearest * nearest));
+}
+
 }  // namespace
 
 void CubemapLocator::buildRadii() {
@@ -882,15 +973,71 @@ void CubemapLocator::buildRadii() {
     in2[f] = planeDistance2Below(v_[t[0]], v_[t[1]], v_[t[2]], c_);
     out2[f] = std::max({vertex2[t[0]], vertex2[t[1]], vertex2[t[2]]});
   }
-  for (Node& nd : nodes_) {
-    if (nd.count == kInner) continue;
+  // A leaf's bounds from its faces' whole-face bounds; where those leave a shell wider than
+  // 1/1024 of the radius (faces large against the cell, as on a coarse polyhedron), each
+  // face's part inside the cell's pyramid tightens them. Elsewhere the shell is already
+  // thin and the tightening would only cost build time.
+  auto leaf = [&](Node& nd, int cf, int level, std::uint64_t i, std::uint64_t j) {
     double lo = nd.count ? HUGE_VAL : 0.0, hi = nd.count ? 0.0 : HUGE_VAL;
     for (std::uint32_t e = nd.first; e < nd.first + nd.count; ++e) {
       lo = std::min(lo, in2[entries_[e]]);
       hi = std::max(hi, out2[entries_[e]]);
     }
+    if (nd.count && !(hi <= lo * (1 + 0x1p-10))) {
+      using L = long double;
+      CellPyramid cp;
+      cp.a = cf / 2, cp.u = (cp.a + 1) % 3, cp.w = (cp.a + 2) % 3;
+      cp.sigma = (cf & 1) ? -1 : 1;
+      // the cell's square, widened far beyond the query's error in (s, t) (below 2^-50)
+      const L K = std::ldexp(static_cast<L>(g_) / 2, level), widen = 0x1p-30L;
+      cp.s0 = L(i) / K - 1 - widen, cp.s1 = L(i + 1) / K - 1 + widen;
+      cp.t0 = L(j) / K - 1 - widen, cp.t1 = L(j + 1) / K - 1 + widen;
+      const L corner[4][2] = {{cp.s0, cp.t0}, {cp.s1, cp.t0}, {cp.s1, cp.t1}, {cp.s0, cp.t1}};
+      for (int k = 0; k < 4; ++k) {
+        cp.d[k][cp.a] = cp.sigma;
+        cp.d[k][cp.u] = corner[k][0];
+        cp.d[k][cp.w] = corner[k][1];
+        cp.len[k] = std::sqrt(1 + corner[k][0] * corner[k][0] + corner[k][1] * corner[k][1]);
+      }
+      double tightLo = HUGE_VAL, tightHi = 0.0;
+      for (std::uint32_t e = nd.first; e < nd.first + nd.count; ++e) {
+        const std::uint32_t f = entries_[e];
+        double fIn2 = in2[f], fOut2 = out2[f];
+        const Triangle& t = tri_[f];
+        pieceBounds3D(cp, v_[t[0]], v_[t[1]], v_[t[2]], c_, fIn2, fOut2);
+        tightLo = std::min(tightLo, fIn2);
+        tightHi = std::max(tightHi, fOut2);
+      }
+      lo = std::max(lo, tightLo);
+      hi = std::min(hi, tightHi);
+    }
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
+  };
+  // every leaf with its cell: base cells, then down the quadtrees
+  struct Item {
+    std::uint32_t node;
+    int level;
+    std::uint64_t i, j;
+  };
+  std::vector<Item> stack;
+  const std::size_t perFace = static_cast<std::size_t>(g_) * g_;
+  for (std::size_t c = 0; c < 6 * perFace; ++c) {
+    const int cf = static_cast<int>(c / perFace);
+    const std::uint64_t rest = c % perFace;
+    stack.push_back({static_cast<std::uint32_t>(c), 0, rest % g_, rest / g_});
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      Node& nd = nodes_[it.node];
+      if (nd.count == kInner) nd.in2 = nd.out2 = std::numeric_limits<float>::quiet_NaN();
+      if (nd.count != kInner) {
+        leaf(nd, cf, it.level, it.i, it.j);
+        continue;
+      }
+      for (std::uint32_t k = 0; k < 4; ++k)
+        stack.push_back({nd.first + k, it.level + 1, 2 * it.i + (k & 1), 2 * it.j + (k >> 1)});
+    }
   }
 }
 
@@ -968,6 +1115,11 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   const bool decided = detail::radiiDecide(a.d2, leaf.in2, leaf.out2);
   sink.radius(a.d2, leaf.in2, leaf.out2, decided);
   if (decided) return detail::insideOrOutside(a.d2 > static_cast<double>(leaf.out2));
+  return inLeaf(p, leaf, sink);
+}
+
+template <class Sink>
+Location CubemapLocator::inLeaf(Vec3 p, const Node& leaf, Sink& sink) const noexcept {
   const std::uint32_t* first = entries_.data() + leaf.first;
   if (leaf.count == 0) {
     sink.fallback();  // cannot happen (every direction leaves through some face); be safe
@@ -1070,8 +1222,55 @@ __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m
   }
   return j;
 }
+
+// The radii stage for 4 points at a time, in AVX2: gathers each base node's two radii
+// (bytes 8..15 of its 16), decides as detail::radiiDecide does (the same roundings, no FMA)
+// and writes the verdict; lanes without a node, on an inner node (NaN radii) or between
+// the radii are appended to `open`. Returns how many points it did (a multiple of 4), and
+// the open count in `left`.
+__attribute__((target("avx2"))) std::size_t decideAvx2(const AimBlock& b, std::size_t m,
+                                                       const void* nodes, Location* o,
+                                                       std::uint32_t* open,
+                                                       std::size_t& left) noexcept {
+  const long long* radii = static_cast<const long long*>(nodes) + 1;
+  const __m128i none = _mm_set1_epi32(-1);
+  const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+  const __m256d two = _mm256_set1_pd(2.0);
+  std::size_t j = 0;
+  for (; j + 4 <= m; j += 4) {
+    const __m128i node = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.node + j));
+    const __m128i missing = _mm_cmpeq_epi32(node, none);
+    // 2 * node as 64-bit indices (0 for lanes without a node), in units of 8 bytes
+    const __m256i index =
+        _mm256_slli_epi64(_mm256_cvtepu32_epi64(_mm_andnot_si128(missing, node)), 1);
+    const __m256i pairs = _mm256_i64gather_epi64(radii, index, 8);
+    const __m256 both = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(pairs, split));
+    const __m256d in2 = _mm256_cvtps_pd(_mm256_castps256_ps128(both));
+    const __m256d out2 = _mm256_cvtps_pd(_mm256_extractf128_ps(both, 1));
+    const __m256d d2 = _mm256_loadu_pd(b.d2 + j);
+    const __m256d product = _mm256_mul_pd(_mm256_sub_pd(d2, in2), _mm256_sub_pd(d2, out2));
+    const __m256d decided = _mm256_cmp_pd(product, _mm256_setzero_pd(), _CMP_GT_OQ);
+    // Outside (2) beyond the outer radius, else Inside (0), as 4 bytes
+    const __m128i verdict =
+        _mm256_cvttpd_epi32(_mm256_and_pd(_mm256_cmp_pd(d2, out2, _CMP_GT_OQ), two));
+    const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(verdict, verdict), verdict);
+    const int four = _mm_cvtsi128_si32(bytes);
+    std::memcpy(o + j, &four, 4);
+    unsigned undecided = static_cast<unsigned>(_mm256_movemask_pd(decided)) ^ 0xfu;
+    undecided |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(missing)));
+    while (undecided) {
+      open[left++] = static_cast<std::uint32_t>(j + static_cast<std::size_t>(__builtin_ctz(undecided)));
+      undecided &= undecided - 1;
+    }
+  }
+  return j;
+}
 #else
 std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&) noexcept {
+  return 0;
+}
+std::size_t decideAvx2(const AimBlock&, std::size_t, const void*, Location*, std::uint32_t*,
+                       std::size_t&) noexcept {
   return 0;
 }
 #endif
@@ -1093,11 +1292,11 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
       c_, scale_, static_cast<double>((static_cast<std::uint64_t>(g_) << depth_) - 1), g_, depth_};
   AimBlock b;
   std::uint32_t pending[kAimBlock];
+  static_assert(sizeof(Node) == 16 && offsetof(Node, in2) == 8 && offsetof(Node, out2) == 12);
   for (std::size_t i0 = 0; i0 < n; i0 += kAimBlock) {
     const std::size_t m = std::min(kAimBlock, n - i0);
     const Vec3* p = points.data() + i0;
     Location* o = out.data() + i0;
-    std::fill_n(b.level, m, 0);
     for (std::size_t j = vector ? aimAvx2(p, m, params, b) : 0; j < m; ++j) {
       Aim a;
       const bool aimed = aim(p[j], a) > 0;
@@ -1108,34 +1307,44 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
     }
     for (std::size_t j = 0; j < m; ++j)
       __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
-    // a refined base cell: step down one level and prefetch that child too (a quadtree's
-    // second miss would otherwise follow the first)
-    for (std::size_t j = 0; j < m; ++j) {
-      if (b.node[j] == kNone || nodes_[b.node[j]].count != kInner) continue;
+    // the base nodes' radii decide most points, without a branch on the answer; the open
+    // ones (no node, an inner node, between the radii) go on
+    std::size_t left = 0;
+    for (std::size_t j = vector ? decideAvx2(b, m, nodes_.data(), o, pending, left) : 0; j < m; ++j) {
+      const bool missing = b.node[j] == kNone;
+      const Node& nd = nodes_[missing ? 0 : b.node[j]];
+      o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(nd.out2));
+      pending[left] = static_cast<std::uint32_t>(j);
+      left += missing | !detail::radiiDecide(b.d2[j], nd.in2, nd.out2);
+    }
+    // a refined base cell: step down one level and prefetch that child (a quadtree's second
+    // miss would otherwise follow the first)
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
+      b.level[j] = 0;
+      if (b.node[j] == kNone) continue;
+      const Node& nd = nodes_[b.node[j]];
+      if (nd.count != kInner) {
+        __builtin_prefetch(entries_.data() + nd.first);
+        continue;
+      }
       const int shift = depth_ - 1;
-      b.node[j] = nodes_[b.node[j]].first +
-                  static_cast<std::uint32_t>(((b.Y[j] >> shift) & 1) * 2 + ((b.X[j] >> shift) & 1));
+      b.node[j] = nd.first + ((b.Y[j] >> shift) & 1) * 2 + ((b.X[j] >> shift) & 1);
       b.level[j] = 1;
       __builtin_prefetch(nodes_.data() + b.node[j]);
     }
-    // without a branch on the answer, as in the polar batch
-    std::size_t left = 0;
-    for (std::size_t j = 0; j < m; ++j) {
+    for (std::size_t k = 0; k < left; ++k) {
+      const std::size_t j = pending[k];
+      NoSink sink;
       if (b.node[j] == kNone) {
-        pending[left++] = static_cast<std::uint32_t>(j);
+        o[j] = run(p[j], sink);
         continue;
       }
       int level = b.level[j];
-      const Node& nd = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
-      o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(nd.out2));
-      const bool open = !detail::radiiDecide(b.d2[j], nd.in2, nd.out2);
-      pending[left] = static_cast<std::uint32_t>(j);
-      left += open;
-      __builtin_prefetch(entries_.data() + (open ? nd.first : 0));
-    }
-    for (std::size_t k = 0; k < left; ++k) {
-      const std::size_t j = pending[k];
-      o[j] = locate(p[j]);
+      const Node& leaf = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
+      o[j] = detail::radiiDecide(b.d2[j], leaf.in2, leaf.out2)
+                 ? detail::insideOrOutside(b.d2[j] > static_cast<double>(leaf.out2))
+                 : inLeaf(p[j], leaf, sink);
     }
   }
 }

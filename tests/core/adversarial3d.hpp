@@ -149,6 +149,20 @@ inline std::vector<Vec3> cubemapPoints(const convexloc::ConvexPolyhedron& p,
     w[(a + 2) % 3] = t;
     alongRay(out, p, c, {w[0], w[1], w[2]});
   }
+  // cell corners, down to the third quadtree level: along these rays the cells' outer radii
+  // meet the face planes (a leaf's radii bound only the part of each face its pyramid holds)
+  for (int k = 0; k < 60; ++k) {
+    const int face = static_cast<int>(rng.below(6));
+    const std::uint32_t level = static_cast<std::uint32_t>(rng.below(4));
+    const std::uint32_t cells = cm.resolution() << level;
+    const double Kl = std::ldexp(K, static_cast<int>(level));
+    const int a = face / 2;
+    double w[3];
+    w[a] = (face & 1) ? -1 : 1;
+    w[(a + 1) % 3] = -1 + static_cast<double>(rng.below(cells + 1)) / Kl;
+    w[(a + 2) % 3] = -1 + static_cast<double>(rng.below(cells + 1)) / Kl;
+    alongRay(out, p, c, {w[0], w[1], w[2]});
+  }
   return out;
 }
 

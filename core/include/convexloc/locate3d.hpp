@@ -189,7 +189,8 @@ class CubemapLocator {
   // A leaf also keeps two squared distances from the centre, rounded outward: a point of the
   // cell nearer than sqrt(in2) is inside (nearer than every listed face's plane), one farther
   // than sqrt(out2) outside (farther than every vertex of the listed faces). Most points of
-  // a large polyhedron are decided by these 16 bytes, without a face test.
+  // a large polyhedron are decided by these 16 bytes, without a face test. An inner node's
+  // two are NaN: they decide nothing, so a batch that reads them sends the point down.
   struct Node {
     std::uint32_t first = 0;  // leaf: first entry; inner node: first of its 4 children
     std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
@@ -212,6 +213,9 @@ class CubemapLocator {
   void buildRadii();
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
+  // the exact answer for p, whose leaf's radii left it open: the leaf's faces, or a walk
+  template <class Sink>
+  Location inLeaf(Vec3 p, const Node& leaf, Sink& sink) const noexcept;
   std::vector<Vec3> v_;
   std::vector<ConvexPolyhedron::Triangle> tri_;
   std::vector<ConvexPolyhedron::Triangle> nb_;
