@@ -1160,12 +1160,69 @@ struct AimParams {
 };
 
 #if defined(__x86_64__)
+// The radii stage for 4 points: gathers each base node's two radii (bytes 8..15 of its
+// 16), decides as detail::radiiDecide does (the same roundings, no FMA) and writes the
+// verdict; lanes without a node, on an inner node (NaN radii) or between the radii are
+// appended to `open`.
+__attribute__((target("avx2"), always_inline)) inline void decide4(
+    __m128i node, __m256d d2, const long long* radii, Location* o, std::size_t j,
+    std::uint32_t* open, std::size_t& left) noexcept {
+  const __m128i missing = _mm_cmpeq_epi32(node, _mm_set1_epi32(-1));
+  // four 8-byte loads (node 0 for lanes without one): on the CPUs measured they beat a
+  // gather instruction, whose latency the next stage waits on
+  alignas(16) std::uint32_t at[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(at), _mm_andnot_si128(missing, node));
+  const __m256i pairs = _mm256_setr_epi64x(radii[2 * std::size_t{at[0]}], radii[2 * std::size_t{at[1]}],
+                                           radii[2 * std::size_t{at[2]}], radii[2 * std::size_t{at[3]}]);
+  const __m256 both = _mm256_castsi256_ps(
+      _mm256_permutevar8x32_epi32(pairs, _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7)));
+  const __m256d in2 = _mm256_cvtps_pd(_mm256_castps256_ps128(both));
+  const __m256d out2 = _mm256_cvtps_pd(_mm256_extractf128_ps(both, 1));
+  const __m256d product = _mm256_mul_pd(_mm256_sub_pd(d2, in2), _mm256_sub_pd(d2, out2));
+  const __m256d decided = _mm256_cmp_pd(product, _mm256_setzero_pd(), _CMP_GT_OQ);
+  // Outside (2) beyond the outer radius, else Inside (0), as 4 bytes
+  const __m128i verdict = _mm256_cvttpd_epi32(
+      _mm256_and_pd(_mm256_cmp_pd(d2, out2, _CMP_GT_OQ), _mm256_set1_pd(2.0)));
+  const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(verdict, verdict), verdict);
+  const int four = _mm_cvtsi128_si32(bytes);
+  std::memcpy(o + j, &four, 4);
+  unsigned undecided = static_cast<unsigned>(_mm256_movemask_pd(decided)) ^ 0xfu;
+  undecided |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(missing)));
+  while (undecided) {
+    open[left++] = static_cast<std::uint32_t>(j + static_cast<std::size_t>(__builtin_ctz(undecided)));
+    undecided &= undecided - 1;
+  }
+}
+
+// the radii stage over a block the aim has filled, 4 points at a time; returns how many
+// points it did (a multiple of 4), the open count in `left`
+__attribute__((target("avx2"))) std::size_t decideAvx2(const AimBlock& b, std::size_t m,
+                                                       const void* nodes, Location* o,
+                                                       std::uint32_t* open,
+                                                       std::size_t& left) noexcept {
+  const long long* radii = static_cast<const long long*>(nodes) + 1;
+  std::size_t j = 0;
+  for (; j + 4 <= m; j += 4)
+    decide4(_mm_loadu_si128(reinterpret_cast<const __m128i*>(b.node + j)), _mm256_loadu_pd(b.d2 + j),
+            radii, o, j, open, left);
+  return j;
+}
+
 // CubemapLocator::aim for 4 points at a time, in AVX2 (no FMA: every operation rounds as
 // the scalar code does, so X, Y, the base cell and d2 are the scalar ones). Lanes the
 // scalar code would not aim (not finite, too far, the centre, a reciprocal that overflows)
 // get node kNone and go the scalar way. Returns how many points it did (a multiple of 4).
+//
+// With a table small enough to stay in cache (kDecide), the radii stage follows at once
+// for the same 4 points, while their node and distance are still in registers: the
+// staged order only pays where prefetching hides the table's misses.
+template <bool kDecide>
 __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m,
-                                                    const AimParams& a, AimBlock& b) noexcept {
+                                                    const AimParams& a, AimBlock& b,
+                                                    const void* nodes = nullptr,
+                                                    Location* o = nullptr,
+                                                    std::uint32_t* open = nullptr,
+                                                    std::size_t* left = nullptr) noexcept {
   const __m256d cx = _mm256_set1_pd(a.c.x), cy = _mm256_set1_pd(a.c.y), cz = _mm256_set1_pd(a.c.z);
   const __m256d sign = _mm256_set1_pd(-0.0),
                 big = _mm256_set1_pd(std::numeric_limits<double>::max());
@@ -1219,54 +1276,16 @@ __attribute__((target("avx2"))) std::size_t aimAvx2(const Vec3* p, std::size_t m
     _mm_storeu_si128(reinterpret_cast<__m128i*>(b.Y + j), Y);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(b.node + j), node);
     _mm256_storeu_pd(b.d2 + j, d2);
+    if constexpr (kDecide)
+      decide4(node, d2, static_cast<const long long*>(nodes) + 1, o, j, open, *left);
   }
   return j;
 }
 
-// The radii stage for 4 points at a time, in AVX2: gathers each base node's two radii
-// (bytes 8..15 of its 16), decides as detail::radiiDecide does (the same roundings, no FMA)
-// and writes the verdict; lanes without a node, on an inner node (NaN radii) or between
-// the radii are appended to `open`. Returns how many points it did (a multiple of 4), and
-// the open count in `left`.
-__attribute__((target("avx2"))) std::size_t decideAvx2(const AimBlock& b, std::size_t m,
-                                                       const void* nodes, Location* o,
-                                                       std::uint32_t* open,
-                                                       std::size_t& left) noexcept {
-  const long long* radii = static_cast<const long long*>(nodes) + 1;
-  const __m128i none = _mm_set1_epi32(-1);
-  const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-  const __m256d two = _mm256_set1_pd(2.0);
-  std::size_t j = 0;
-  for (; j + 4 <= m; j += 4) {
-    const __m128i node = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b.node + j));
-    const __m128i missing = _mm_cmpeq_epi32(node, none);
-    // 2 * node as 64-bit indices (0 for lanes without a node), in units of 8 bytes
-    const __m256i index =
-        _mm256_slli_epi64(_mm256_cvtepu32_epi64(_mm_andnot_si128(missing, node)), 1);
-    const __m256i pairs = _mm256_i64gather_epi64(radii, index, 8);
-    const __m256 both = _mm256_castsi256_ps(_mm256_permutevar8x32_epi32(pairs, split));
-    const __m256d in2 = _mm256_cvtps_pd(_mm256_castps256_ps128(both));
-    const __m256d out2 = _mm256_cvtps_pd(_mm256_extractf128_ps(both, 1));
-    const __m256d d2 = _mm256_loadu_pd(b.d2 + j);
-    const __m256d product = _mm256_mul_pd(_mm256_sub_pd(d2, in2), _mm256_sub_pd(d2, out2));
-    const __m256d decided = _mm256_cmp_pd(product, _mm256_setzero_pd(), _CMP_GT_OQ);
-    // Outside (2) beyond the outer radius, else Inside (0), as 4 bytes
-    const __m128i verdict =
-        _mm256_cvttpd_epi32(_mm256_and_pd(_mm256_cmp_pd(d2, out2, _CMP_GT_OQ), two));
-    const __m128i bytes = _mm_packus_epi16(_mm_packus_epi32(verdict, verdict), verdict);
-    const int four = _mm_cvtsi128_si32(bytes);
-    std::memcpy(o + j, &four, 4);
-    unsigned undecided = static_cast<unsigned>(_mm256_movemask_pd(decided)) ^ 0xfu;
-    undecided |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(missing)));
-    while (undecided) {
-      open[left++] = static_cast<std::uint32_t>(j + static_cast<std::size_t>(__builtin_ctz(undecided)));
-      undecided &= undecided - 1;
-    }
-  }
-  return j;
-}
 #else
-std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&) noexcept {
+template <bool kDecide>
+std::size_t aimAvx2(const Vec3*, std::size_t, const AimParams&, AimBlock&, const void* = nullptr,
+                    Location* = nullptr, std::uint32_t* = nullptr, std::size_t* = nullptr) noexcept {
   return 0;
 }
 std::size_t decideAvx2(const AimBlock&, std::size_t, const void*, Location*, std::uint32_t*,
@@ -1290,6 +1309,9 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
   const bool vector = vectorBatches();
   const AimParams params{
       c_, scale_, static_cast<double>((static_cast<std::uint64_t>(g_) << depth_) - 1), g_, depth_};
+  // a node table that stays in the L2 cache needs no prefetch stage
+  constexpr std::size_t kCachedTable = 512 * 1024;
+  const bool fused = vector && nodes_.size() * sizeof(Node) <= kCachedTable;
   AimBlock b;
   std::uint32_t pending[kAimBlock];
   static_assert(sizeof(Node) == 16 && offsetof(Node, in2) == 8 && offsetof(Node, out2) == 12);
@@ -1297,20 +1319,28 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
     const std::size_t m = std::min(kAimBlock, n - i0);
     const Vec3* p = points.data() + i0;
     Location* o = out.data() + i0;
-    for (std::size_t j = vector ? aimAvx2(p, m, params, b) : 0; j < m; ++j) {
+    // aim (4 at a time in AVX2 where the CPU has it), then the base nodes' radii decide most
+    // points, without a branch on the answer; the open ones (no node, an inner node,
+    // between the radii) go on
+    std::size_t left = 0, aimed = 0, decided = 0;
+    if (fused)
+      decided = aimed = aimAvx2<true>(p, m, params, b, nodes_.data(), o, pending, &left);
+    else if (vector)
+      aimed = aimAvx2<false>(p, m, params, b);
+    for (std::size_t j = aimed; j < m; ++j) {
       Aim a;
-      const bool aimed = aim(p[j], a) > 0;
+      const bool ok = aim(p[j], a) > 0;
       b.X[j] = static_cast<std::uint32_t>(a.X);
       b.Y[j] = static_cast<std::uint32_t>(a.Y);
-      b.node[j] = aimed ? a.node : kNone;
+      b.node[j] = ok ? a.node : kNone;
       b.d2[j] = a.d2;
     }
-    for (std::size_t j = 0; j < m; ++j)
-      __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
-    // the base nodes' radii decide most points, without a branch on the answer; the open
-    // ones (no node, an inner node, between the radii) go on
-    std::size_t left = 0;
-    for (std::size_t j = vector ? decideAvx2(b, m, nodes_.data(), o, pending, left) : 0; j < m; ++j) {
+    if (!fused) {
+      for (std::size_t j = 0; j < m; ++j)
+        __builtin_prefetch(nodes_.data() + (b.node[j] == kNone ? 0 : b.node[j]));
+      if (vector) decided = decideAvx2(b, m, nodes_.data(), o, pending, left);
+    }
+    for (std::size_t j = decided; j < m; ++j) {
       const bool missing = b.node[j] == kNone;
       const Node& nd = nodes_[missing ? 0 : b.node[j]];
       o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(nd.out2));
