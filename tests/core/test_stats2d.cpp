@@ -326,9 +326,9 @@ TEST(Resolution, DefaultsAndSettings) {
   const PolarLocator polar(p);
   EXPECT_GE(polar.slabsPerOctant(), 1u);
   EXPECT_EQ(polar.cellCount(), 8 * polar.slabsPerOctant());
-  // the default grows with N: about two cells per edge
-  EXPECT_GE(polar.cellCount(), p.size());
-  EXPECT_LE(polar.cellCount(), 4 * p.size() + 64);
+  // the default grows with N: about one cell per two edges
+  EXPECT_GE(polar.cellCount(), p.size() / 2);
+  EXPECT_LE(polar.cellCount(), p.size() + 64);
   const UniformLocator uniform(p);
   EXPECT_GE(uniform.slabCount(), p.size() / 4);
   EXPECT_EQ(PolarLocator(p, 3).slabsPerOctant(), 3u);

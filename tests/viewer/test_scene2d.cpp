@@ -266,9 +266,9 @@ TEST(Model, ApplyOptions) {
 TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
   cv::Scene2D s;
   EXPECT_EQ(s.resolution(), 8u);  // the default scene's polar slabs per octant
-  ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 40, 1));
+  ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 400, 1));
   EXPECT_EQ(s.resolution(), 0u);            // core's choice for a new shape
-  EXPECT_EQ(s.effectiveResolution(), 10u);  // (40 + 3) / 4
+  EXPECT_EQ(s.effectiveResolution(), 25u);  // (400 + 15) / 16
   ASSERT_TRUE(s.setResolution(5));
   ASSERT_TRUE(s.generate(convexloc::PolygonKind::Regular, 60, 1));
   EXPECT_EQ(s.resolution(), 5u);
