@@ -10,10 +10,6 @@
 namespace convexloc {
 namespace {
 
-using detail::kEps;
-// Shewchuk's bound for the 3x3 determinant of differences
-constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
-
 thread_local unsigned long long tFallbacks = 0;
 
 // exponent of the least significant bit of a non-zero double
@@ -67,10 +63,8 @@ int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
   return sign(z[0]);
 }
 
-namespace {
-
 // exact sign of det[a-d; b-d; c-d]
-int exactOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
   ++tFallbacks;
   thread_local std::array<mpz_class, 12> z;
   thread_local std::array<mpz_class, 3> t;
@@ -92,36 +86,6 @@ int exactOrient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   minor(t[0], 3, 7, 4, 6);
   mpz_addmul(m(t[2]), m(t[0]), m(z[2]));
   return sign(t[2]);
-}
-
-// a difference whose products cannot underflow or overflow in the 3D filter
-bool tame(double v) {
-  double a = std::fabs(v);
-  return a == 0.0 || (a >= 0x1p-250 && a <= 0x1p250);
-}
-
-}  // namespace
-
-int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
-  double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
-  double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
-  if (tame(adx) && tame(ady) && tame(adz) && tame(bdx) && tame(bdy) && tame(bdz) &&
-      tame(cdx) && tame(cdy) && tame(cdz)) {
-    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    double cdxady = cdx * ady, adxcdy = adx * cdy;
-    double adxbdy = adx * bdy, bdxady = bdx * ady;
-    double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-    double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
-                       (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
-                       (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-    double bound = kO3dBound * permanent;
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-    // tame differences cannot underflow: a zero permanent means every term is exactly zero
-    if (permanent == 0.0) return 0;
-  }
-  return exactOrient3d(a, b, c, d);
 }
 
 unsigned long long exactFallbackCount() noexcept { return tFallbacks; }

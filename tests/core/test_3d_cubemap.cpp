@@ -231,7 +231,11 @@ TEST(Cubemap3D, StatsAndCellsAgree) {
 
 TEST(Cubemap3D, DefaultAndChosenResolution) {
   const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1));
-  EXPECT_EQ(CubemapLocator(p).resolution(), 25u);  // round(sqrt(5120 / 8))
+  EXPECT_EQ(CubemapLocator(p).resolution(), 36u);  // round(sqrt(5120 / 4)): under G = 64
+  const ConvexPolyhedron large(generatePolyhedron(PolyhedronKind::Geodesic, 100000, 1));
+  EXPECT_EQ(CubemapLocator(large).resolution(), 112u);  // round(sqrt(100820 / 8))
+  const ConvexPolyhedron small(generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1));
+  EXPECT_EQ(CubemapLocator(small).resolution(), 16u);  // the smallest default
   EXPECT_EQ(CubemapLocator(p, 5).resolution(), 5u);
   EXPECT_EQ(Locator3D(p, Method3D::Cubemap, 5).stats().resolution, 5u);
 }

@@ -52,9 +52,46 @@ inline int crossDiff2d(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
   return detail::crossFiltered(a, b, c, d);
 }
 
+namespace detail {
+// Shewchuk's bound for the 3x3 determinant of differences: |error| <= kO3dBound * permanent
+inline constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
+
+// exact sign of det[a-d; b-d; c-d] for finite doubles, with GMP integers
+int orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept;
+
+// a difference whose products in the 3D filter can neither underflow nor overflow
+inline bool tame3d(double v) noexcept {
+  const double a = std::fabs(v);
+  return a == 0.0 || (a >= 0x1p-250 && a <= 0x1p250);
+}
+}  // namespace detail
+
 // Sign of the determinant | a-d ; b-d ; c-d |: +1 when d lies below the plane through
 // a, b, c oriented counter-clockwise seen from above (Shewchuk's convention), 0 when coplanar.
-int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept;
+// The filter is inline (the hot face tests of the 3D locators inline it); the exact fallback
+// is not.
+inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  using detail::tame3d;
+  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  if (tame3d(adx) && tame3d(ady) && tame3d(adz) && tame3d(bdx) && tame3d(bdy) && tame3d(bdz) &&
+      tame3d(cdx) && tame3d(cdy) && tame3d(cdz)) {
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+    const double bound = detail::kO3dBound * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+    // tame differences cannot underflow: a zero permanent means every term is exactly zero
+    if (permanent == 0.0) return 0;
+  }
+  return detail::orient3dExact(a, b, c, d);
+}
 
 // How many times the exact fallback ran in this thread (for tests and statistics).
 unsigned long long exactFallbackCount() noexcept;
