@@ -903,8 +903,10 @@ struct CellPyramid {
   long double s0, s1, t0, t1;  // the widened square
 };
 
-void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, double& in2,
-                   double& out2) {
+// Returns the bound on the squared distance to the face's plane along every ray of the
+// pyramid (infinity where some corner ray misses the plane or the face is ill-conditioned).
+double pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, double& in2,
+                     double& out2) {
   using L = long double;
   constexpr L eps = std::numeric_limits<L>::epsilon();
   const L u[3] = {L(vb.x) - va.x, L(vb.y) - va.y, L(vb.z) - va.z};
@@ -917,11 +919,12 @@ void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
   // n's components are within 4 eps of their permanents; its length at least nNorm
   const L nErr[3] = {4 * eps * pn[0], 4 * eps * pn[1], 4 * eps * pn[2]};
   const L nNorm = std::fabs(n[0]) + std::fabs(n[1]) + std::fabs(n[2]);
-  if (!(nErr[0] + nErr[1] + nErr[2] <= 0x1p-40L * nNorm)) return;  // a nearly flat triangle
+  constexpr double kNone2 = HUGE_VAL;
+  if (!(nErr[0] + nErr[1] + nErr[2] <= 0x1p-40L * nNorm)) return kNone2;  // a nearly flat triangle
   // the outward plane offset N = n . (a - c) > 0, within 8 eps of its permanent
   const L N = -(n[0] * w[0] + n[1] * w[1] + n[2] * w[2]);
   const L NErr = 8 * eps * (pn[0] * std::fabs(w[0]) + pn[1] * std::fabs(w[1]) + pn[2] * std::fabs(w[2]));
-  if (!(N - NErr > 0)) return;
+  if (!(N - NErr > 0)) return kNone2;
   const L nLen = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   L hit[4][3], farthest = 0;
   for (int k = 0; k < 4; ++k) {
@@ -931,7 +934,7 @@ void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
                    (nErr[1] + 2 * eps * std::fabs(n[1])) * std::fabs(d[1]) +
                    (nErr[2] + 2 * eps * std::fabs(n[2])) * std::fabs(d[2]);
     // the corner ray must meet the plane ahead, not nearly along it
-    if (!(D - DErr > 0x1p-20L * nLen * cp.len[k])) return;
+    if (!(D - DErr > 0x1p-20L * nLen * cp.len[k])) return kNone2;
     const L lambdaHi = (N + NErr) / (D - DErr);
     farthest = std::max(farthest, lambdaHi * cp.len[k]);
     const L lambda = N / D;
@@ -940,7 +943,8 @@ void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
   // rounding in the hits and in what follows stays below 2^-40 of the farthest
   const L slack = 0x1p-36L * farthest;
   farthest += slack;
-  out2 = std::min(out2, static_cast<double>(farthest * farthest));
+  const double plane2 = static_cast<double>(farthest * farthest);
+  out2 = std::min(out2, plane2);
   // the foot of the perpendicular lies along n from c: is its direction in the pyramid?
   // (tested with room far beyond n's error, so that "not in it" is sure)
   const L major = cp.sigma * n[cp.a];
@@ -948,7 +952,7 @@ void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
   if (major > 0) {
     const L fs = n[cp.u] / major, ft = n[cp.w] / major;
     if (fs >= cp.s0 - kRoom && fs <= cp.s1 + kRoom && ft >= cp.t0 - kRoom && ft <= cp.t1 + kRoom)
-      return;  // Q may hold the foot: the plane's distance stands
+      return plane2;  // Q may hold the foot: the plane's distance stands
   }
   L nearest = std::numeric_limits<L>::infinity();
   for (int k = 0; k < 4; ++k) {
@@ -963,6 +967,7 @@ void pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
   }
   nearest -= slack;
   if (nearest > 0) in2 = std::max(in2, static_cast<double>(nearest * nearest));
+  return plane2;
 }
 
 }  // namespace
@@ -1003,17 +1008,20 @@ void CubemapLocator::buildRadii() {
         cp.d[k][cp.w] = corner[k][1];
         cp.len[k] = std::sqrt(1 + corner[k][0] * corner[k][0] + corner[k][1] * corner[k][1]);
       }
-      double tightLo = HUGE_VAL, tightHi = 0.0;
+      // A ray leaves a convex polyhedron at the nearest of the face planes it meets ahead,
+      // so a face whose plane every ray of the pyramid meets ahead bounds every exit point
+      // of the cell by itself: the smallest such bound serves as well as the largest.
+      double tightLo = HUGE_VAL, tightHi = 0.0, anyPlane = HUGE_VAL;
       for (std::uint32_t e = nd.first; e < nd.first + nd.count; ++e) {
         const std::uint32_t f = entries_[e];
         double fIn2 = in2[f], fOut2 = out2[f];
         const Triangle& t = tri_[f];
-        pieceBounds3D(cp, v_[t[0]], v_[t[1]], v_[t[2]], c_, fIn2, fOut2);
+        anyPlane = std::min(anyPlane, pieceBounds3D(cp, v_[t[0]], v_[t[1]], v_[t[2]], c_, fIn2, fOut2));
         tightLo = std::min(tightLo, fIn2);
         tightHi = std::max(tightHi, fOut2);
       }
       lo = std::max(lo, tightLo);
-      hi = std::min(hi, tightHi);
+      hi = std::min({hi, tightHi, anyPlane});
     }
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
