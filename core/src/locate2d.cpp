@@ -783,27 +783,46 @@ namespace {
 // 2^-20 of the edge, and fall back to the edge's ends where a ray misses the line or runs
 // nearly along it. Over that piece the squared distance from c lies in [in2, out2]; each
 // is also bounded by the whole edge's (edgeIn2, edgeOut2), and the tighter one is kept.
-void pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, double& in2,
-                 double& out2) {
+//
+// Returns a bound on the squared distance from c to the edge's line along every ray of the
+// range, where both boundary rays meet that line ahead (infinity otherwise): a ray leaves a
+// convex polygon at the nearest edge line it meets ahead, so that bound alone bounds the
+// exit point of every point of the cell.
+double pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, double& in2,
+                   double& out2) {
   using L = long double;
   const L ux = L(b.x) - a.x, uy = L(b.y) - a.y, wx = L(a.x) - c.x, wy = L(a.y) - c.y;
   const L size = std::fabs(ux) + std::fabs(uy);
-  auto along = [&](double angle, L fallback) {
+  constexpr L kMiss = std::numeric_limits<L>::infinity();
+  auto along = [&](double angle) {
     const Vec2 d = directionOf(angle < 0 ? angle + 8 : (angle >= 8 ? angle - 8 : angle));
     const L den = L(d.x) * uy - L(d.y) * ux;  // > 0: the ray meets the line ahead of c
-    if (!(den > 0x1p-30L * (std::fabs(L(d.x)) + std::fabs(L(d.y))) * size)) return fallback;
+    if (!(den > 0x1p-30L * (std::fabs(L(d.x)) + std::fabs(L(d.y))) * size)) return kMiss;
     return -(L(d.x) * wy - L(d.y) * wx) / den;
   };
-  constexpr L kWiden = 0x1p-20L;
-  const L t0 = std::clamp(along(angleLo, 0) - kWiden, L(0), L(1));
-  const L t1 = std::clamp(along(angleHi, 1) + kWiden, L(0), L(1));
-  if (!(t0 <= t1)) return;  // keep the whole edge's bounds
   auto dist = [&](L t) {
     const L x = wx + t * ux, y = wy + t * uy;
     return std::sqrt(x * x + y * y);
   };
   // rounding in the ends and distances stays far below this
   const L slack = 0x1p-50L * (std::fabs(wx) + std::fabs(wy) + size);
+  const L lineLo = along(angleLo), lineHi = along(angleHi);
+  double line2 = HUGE_VAL;
+  if (lineLo != kMiss && lineHi != kMiss) {
+    // where the boundary rays meet the line (far outside the edge, possibly), each moved by
+    // far more than its rounding: the guard on den keeps t's error below 2^-30 of
+    // |w| / size + |t|
+    auto reach = [&](L t) {
+      return dist(t) + 0x1p-30L * (std::fabs(t) * size + std::fabs(wx) + std::fabs(wy) + size) +
+             slack;
+    };
+    const L far = std::max(reach(lineLo), reach(lineHi));
+    line2 = static_cast<double>(far * far);
+  }
+  constexpr L kWiden = 0x1p-20L;
+  const L t0 = std::clamp((lineLo != kMiss ? lineLo : 0) - kWiden, L(0), L(1));
+  const L t1 = std::clamp((lineHi != kMiss ? lineHi : 1) + kWiden, L(0), L(1));
+  if (!(t0 <= t1)) return line2;  // keep the whole edge's bounds
   const L d0 = dist(t0), d1 = dist(t1);
   const L far = std::max(d0, d1) + slack;
   out2 = std::min(out2, static_cast<double>(far * far));
@@ -814,6 +833,7 @@ void pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, double&
     const L near = std::min(d0, d1) - slack;
     if (near > 0) in2 = std::max(in2, static_cast<double>(near * near));
   }
+  return line2;
 }
 
 }  // namespace
@@ -825,7 +845,7 @@ void PolarLocator::buildRadii() {
   constexpr double kWidenAngle = 0x1p-30;
   radii_.resize(cells);
   for (std::uint32_t c = 0; c < cells; ++c) {
-    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0, anyLine = HUGE_VAL;
     const double angleLo = c / qd_ - kWidenAngle, angleHi = (c + 1) / qd_ + kWidenAngle;
     for (std::uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
       // the whole edge's bounds, then its piece's (computed per entry: no array per edge,
@@ -834,10 +854,11 @@ void PolarLocator::buildRadii() {
       const Vec2 a = v_[e], b = v_[e + 1 == n_ ? 0 : e + 1];
       double edgeIn2 = lineDistance2Below(a, b, c_);
       double edgeOut2 = std::max(distance2(a, c_), distance2(b, c_));
-      pieceBounds(a, b, c_, angleLo, angleHi, edgeIn2, edgeOut2);
+      anyLine = std::min(anyLine, pieceBounds(a, b, c_, angleLo, angleHi, edgeIn2, edgeOut2));
       lo = std::min(lo, edgeIn2);
       hi = std::max(hi, edgeOut2);
     }
+    hi = std::min(hi, anyLine);
     if (offsets_[c] == offsets_[c + 1]) lo = 0.0, hi = std::numeric_limits<double>::infinity();
     radii_[c] = {detail::innerBound(lo), detail::outerBound(hi)};
   }
