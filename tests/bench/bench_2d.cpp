@@ -1,4 +1,4 @@
-// convexloc-bench, 2D: Locate2D, Batch2D, Build2D and the streaming limit, on regular
+// convexloc-bench, 2D: Locate2D, Batch2D, Build2D and the streaming limits, on regular
 // N-gons (fixtures.hpp). Every figure is reported as items per second; the report script
 // turns it into ns per point.
 #include <benchmark/benchmark.h>
@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "convexloc/batch.hpp"
@@ -20,17 +21,26 @@ namespace {
 
 const std::int64_t kSizes[] = {8, 64, 1024, 16384, 262144, 1048576};
 
-// The streaming limit: read two doubles, write one byte per point, split over T threads
-// the way locateParallel splits a batch.
+// The streaming limit: read two doubles (three for Stream3D, the size of a 3D point), write
+// one byte per point, split over T threads the way locateParallel splits a batch.
+inline std::uint8_t streamByte(Vec2 p) { return static_cast<std::uint8_t>(p.x < p.y); }
+inline std::uint8_t streamByte(Vec3 p) { return static_cast<std::uint8_t>(p.x < p.y + p.z); }
+
+template <class P>
 void stream(benchmark::State& state) {
   const std::size_t count = static_cast<std::size_t>(state.range(0));
   const unsigned threads = static_cast<unsigned>(state.range(1));
-  std::vector<Vec2> pts(count);
+  std::vector<P> pts(count);
   Rng rng(7);
-  for (Vec2& p : pts) p = {rng.uniform(-1, 1), rng.uniform(-1, 1)};
+  for (P& p : pts) {
+    if constexpr (std::is_same_v<P, Vec3>)
+      p = {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+    else
+      p = {rng.uniform(-1, 1), rng.uniform(-1, 1)};
+  }
   std::vector<std::uint8_t> out(count);
   auto run = [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) out[i] = static_cast<std::uint8_t>(pts[i].x < pts[i].y);
+    for (std::size_t i = begin; i < end; ++i) out[i] = streamByte(pts[i]);
   };
   const std::size_t share = ((count + threads - 1) / threads + 63) / 64 * 64;
   for (auto _ : state) {
@@ -68,8 +78,13 @@ void registerMethod(const std::string& name, std::int64_t maxLocateN, std::int64
   registerMethod<SlabLocator>("slab", 1 << 20, 4096);
   registerMethod<UniformLocator>("uniform", 1 << 20, 1 << 20);
   registerMethod<PolarLocator>("polar", 1 << 20, 1 << 20);
-  benchmark::RegisterBenchmark("Stream", stream)
+  benchmark::RegisterBenchmark("Stream", stream<Vec2>)
       ->Args({1 << 16, 1})
+      ->Args({kBatchPoints, 1})
+      ->Args({kBatchPoints, 2})
+      ->ArgNames({"", "threads"})
+      ->UseRealTime();
+  benchmark::RegisterBenchmark("Stream3D", stream<Vec3>)
       ->Args({kBatchPoints, 1})
       ->Args({kBatchPoints, 2})
       ->ArgNames({"", "threads"})
