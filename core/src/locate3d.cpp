@@ -1384,9 +1384,24 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
       }
       int level = b.level[j];
       const Node& leaf = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
-      o[j] = detail::radiiDecide(b.d2[j], leaf.in2, leaf.out2)
-                 ? detail::insideOrOutside(b.d2[j] > static_cast<double>(leaf.out2))
-                 : inLeaf(p[j], leaf, sink);
+      if (detail::radiiDecide(b.d2[j], leaf.in2, leaf.out2)) {
+        o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(leaf.out2));
+        continue;
+      }
+      // A leaf of one or two faces (most of them): both filters, then the answer without a
+      // branch on it (inside and outside come at random); the exact path where either
+      // filter cannot tell. Testing the one face twice is harmless.
+      if (leaf.count - 1 < 2) {
+        const Triangle& t0 = tri_[entries_[leaf.first]];
+        const Triangle& t1 = tri_[entries_[leaf.first + leaf.count - 1]];
+        const auto s0 = detail::orient3dTerms(v_[t0[0]], v_[t0[1]], v_[t0[2]], p[j]);
+        const auto s1 = detail::orient3dTerms(v_[t1[0]], v_[t1[1]], v_[t1[2]], p[j]);
+        if (detail::orient3dSure(s0) & detail::orient3dSure(s1)) {
+          o[j] = detail::insideOrOutside((s0.det < 0) | (s1.det < 0));
+          continue;
+        }
+      }
+      o[j] = inLeaf(p[j], leaf, sink);
     }
   }
 }

@@ -66,30 +66,42 @@ inline bool tame3d(double v) noexcept {
 }
 }  // namespace detail
 
+namespace detail {
+// The floating-point terms of orient3d's filter: the determinant, its permanent, and
+// whether every difference is tame (then |error| <= kO3dBound * permanent).
+struct Orient3dTerms {
+  double det, permanent;
+  bool tame;
+};
+inline Orient3dTerms orient3dTerms(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  return {adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady),
+          (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+              (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+              (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz),
+          static_cast<bool>(tame3d(adx) & tame3d(ady) & tame3d(adz) & tame3d(bdx) &
+                            tame3d(bdy) & tame3d(bdz) & tame3d(cdx) & tame3d(cdy) & tame3d(cdz))};
+}
+// whether the terms decide the sign (then it is the sign of det, never 0)
+inline bool orient3dSure(const Orient3dTerms& t) noexcept {
+  return t.tame && std::fabs(t.det) > kO3dBound * t.permanent;
+}
+}  // namespace detail
+
 // Sign of the determinant | a-d ; b-d ; c-d |: +1 when d lies below the plane through
 // a, b, c oriented counter-clockwise seen from above (Shewchuk's convention), 0 when coplanar.
 // The filter is inline (the hot face tests of the 3D locators inline it); the exact fallback
 // is not.
 inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  using detail::tame3d;
-  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
-  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
-  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
-  if (tame3d(adx) && tame3d(ady) && tame3d(adz) && tame3d(bdx) && tame3d(bdy) && tame3d(bdz) &&
-      tame3d(cdx) && tame3d(cdy) && tame3d(cdz)) {
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
-    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
-                             (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
-                             (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-    const double bound = detail::kO3dBound * permanent;
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-    // tame differences cannot underflow: a zero permanent means every term is exactly zero
-    if (permanent == 0.0) return 0;
-  }
+  const detail::Orient3dTerms t = detail::orient3dTerms(a, b, c, d);
+  if (detail::orient3dSure(t)) return t.det > 0 ? 1 : -1;
+  // tame differences cannot underflow: a zero permanent means every term is exactly zero
+  if (t.tame && t.permanent == 0.0) return 0;
   return detail::orient3dExact(a, b, c, d);
 }
 
