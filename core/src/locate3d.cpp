@@ -598,10 +598,11 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
   tri_.assign(polyhedron.triangles().begin(), polyhedron.triangles().end());
   nb_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
   const std::size_t nf = tri_.size();
-  // By default about 8 faces per base cell; up to G = 64 (a node table of 384 KiB, which
-  // stays in the L2 cache) about 4, so that fewer cells are crowded and refined.
+  // By default about 4 faces per base cell up to G = 160 (10^5 faces), so that few cells
+  // are crowded and refined and a batch meets few inner nodes; beyond, about 8, which
+  // keeps the build of 10^6 faces well under a second.
   const double perCell8 = std::sqrt(static_cast<double>(nf) / 8),
-               perCell4 = std::min(std::sqrt(static_cast<double>(nf) / 4), 64.0);
+               perCell4 = std::min(std::sqrt(static_cast<double>(nf) / 4), 160.0);
   g_ = resolution ? resolution
                   : static_cast<std::uint32_t>(std::clamp<double>(
                         std::round(std::max(perCell8, perCell4)), kSmallestDefault,

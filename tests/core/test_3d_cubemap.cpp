@@ -231,9 +231,12 @@ TEST(Cubemap3D, StatsAndCellsAgree) {
 
 TEST(Cubemap3D, DefaultAndChosenResolution) {
   const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1));
-  EXPECT_EQ(CubemapLocator(p).resolution(), 36u);  // round(sqrt(5120 / 4)): under G = 64
-  const ConvexPolyhedron large(generatePolyhedron(PolyhedronKind::Geodesic, 100000, 1));
-  EXPECT_EQ(CubemapLocator(large).resolution(), 112u);  // round(sqrt(100820 / 8))
+  EXPECT_EQ(CubemapLocator(p).resolution(), 36u);  // round(sqrt(5120 / 4))
+  const ConvexPolyhedron large(generatePolyhedron(PolyhedronKind::Geodesic, 300000, 1));
+  // past G = 160: about 8 faces per base cell
+  EXPECT_EQ(CubemapLocator(large).resolution(),
+            static_cast<std::uint32_t>(std::lround(std::sqrt(large.faceCount() / 8.0))));
+  EXPECT_GT(CubemapLocator(large).resolution(), 160u);
   const ConvexPolyhedron small(generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1));
   EXPECT_EQ(CubemapLocator(small).resolution(), 16u);  // the smallest default
   EXPECT_EQ(CubemapLocator(p, 5).resolution(), 5u);
