@@ -1,13 +1,15 @@
 // convexloc (internal) — the radius filter shared by the polar and cubemap locators.
 //
 // A cell of a centred subdivision lists every edge (face) that a point mapped to it can exit
-// through. If p is nearer to the centre than each listed edge's line (face's plane), its ray
-// leaves the shape beyond p: p is inside. If p is farther than every endpoint (vertex) of
-// the listed edges, it is beyond the exit point: p is outside. Each cell stores those two
-// squared distances as floats, rounded outward with a relative slack far above the few
-// ulps of error of the query's d^2 and of the build's estimates; a point between them goes on
-// to the exact tests. The answer is therefore exact, and most points of a large shape are
-// decided by one 8-byte load.
+// through. If p is nearer to the centre than every point of those edges (faces) that the
+// cell's wedge (pyramid) sees, its ray leaves the shape beyond p: p is inside. If p is
+// farther than a bound on where any ray of the cell leaves (the farthest of those points,
+// or of one line (plane) every ray of the cell meets ahead: a ray leaves a convex shape at
+// the nearest it meets), p is outside. Each cell stores those two squared distances as
+// floats, rounded outward with a relative slack far above the few ulps of error of the
+// query's d^2 and of the build's estimates; a point between them goes on to the exact
+// tests. The answer is therefore exact, and most points of a large shape are decided by one
+// 8-byte load.
 #pragma once
 
 #include <algorithm>

@@ -258,7 +258,7 @@ TEST(Trace3D, CubemapTellsFaceCellAndTests) {
   EXPECT_TRUE(out.byRadius);
   EXPECT_GT(out.distance, out.outerRadius);
   EXPECT_TRUE(out.faces.empty());
-  // nearer than every face plane: the inner radius decides
+  // nearer than every face the cell sees: the inner radius decides
   const Trace3D neg = cm.trace({c.x, c.y, c.z - 0.5});
   EXPECT_EQ(neg.cubeFace, 5);  // -z
   EXPECT_EQ(neg.result, Location::Inside);

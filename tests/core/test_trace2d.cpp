@@ -165,7 +165,8 @@ bool checkTrace(const std::string& where, const Locator2D& locator, const Convex
         EXPECT_TRUE(t.edges.empty() && t.rays.empty()) << at;
         EXPECT_FALSE(t.crowded) << at;
         if (t.result == Location::Inside) {
-          // nearer than every listed edge's line: on the inner side of each (exact check)
+          // nearer than where its ray leaves: inside, so on the inner side of every listed
+          // edge (exact check)
           EXPECT_LT(t.distance, t.innerRadius) << at;
           for (std::uint32_t e : cell.edges) EXPECT_GT(ref::edgeSign(v, e, p), 0) << at << " edge " << e;
         } else {

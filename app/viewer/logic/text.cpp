@@ -99,8 +99,9 @@ namespace {
 std::string radiusLine(double distance, double inner, double outer, const char* what) {
   std::string s = "|p - x_T| = " + approx(distance, 6) + "; cell radii " + approx(inner, 6) + " .. " +
                   approx(outer, 6);
-  if (distance < inner) return s + ": nearer than every " + what + ", inside with no test";
-  if (distance > outer) return s + ": beyond every vertex, outside with no test";
+  if (distance < inner)
+    return s + ": nearer than every " + what + " the cell sees, inside with no test";
+  if (distance > outer) return s + ": beyond where its ray leaves, outside with no test";
   return s + ": between them, the tests below decide";
 }
 }  // namespace

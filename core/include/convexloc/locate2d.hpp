@@ -213,9 +213,10 @@ private:
   // the n_ vertices (v_ repeats the first two at its end)
   std::span<const Vec2> ring() const noexcept { return {v_.data(), n_}; }
   // Squared distances from the centre, per cell, rounded outward: a point of the cell nearer
-  // than sqrt(in2) is inside (nearer than every edge line it may exit through), one farther
-  // than sqrt(out2) is outside (farther than every endpoint of those edges). Most points of
-  // a large polygon are decided by these 8 bytes, without touching an edge.
+  // than sqrt(in2) is inside (nearer than every point of the edges it may exit through that
+  // the cell's wedge sees), one farther than sqrt(out2) is outside (beyond where its ray
+  // leaves the polygon). Most points of a large polygon are decided by these 8 bytes,
+  // without touching an edge.
   struct Radii {
     float in2 = 0.0f;
     float out2 = 0.0f;

@@ -187,10 +187,11 @@ class CubemapLocator {
 
  private:
   // A leaf also keeps two squared distances from the centre, rounded outward: a point of the
-  // cell nearer than sqrt(in2) is inside (nearer than every listed face's plane), one farther
-  // than sqrt(out2) outside (farther than every vertex of the listed faces). Most points of
-  // a large polyhedron are decided by these 16 bytes, without a face test. An inner node's
-  // two are NaN: they decide nothing, so a batch that reads them sends the point down.
+  // cell nearer than sqrt(in2) is inside (nearer than every point of the listed faces that
+  // the cell's pyramid sees), one farther than sqrt(out2) outside (beyond where its ray
+  // leaves the polyhedron). Most points of a large polyhedron are decided by these 16
+  // bytes, without a face test. An inner node's two are NaN: they decide nothing, so a
+  // batch that reads them sends the point down.
   struct Node {
     std::uint32_t first = 0;  // leaf: first entry; inner node: first of its 4 children
     std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
