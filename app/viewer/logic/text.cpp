@@ -139,7 +139,7 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
                                    std::to_string(q) + " in the octant: cell " +
                                    std::to_string(t.cell));
         if (t.outerRadius > 0)
-          add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "line"));
+          add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "edge"));
       } else {
         add(TraceLine::Step,
             "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
@@ -183,7 +183,7 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
     std::string cell = "cell (" + std::to_string(t.cellI) + ", " + std::to_string(t.cellJ) + ")";
     if (t.level > 0) cell += " at quadtree level " + std::to_string(t.level);
     add(TraceLine::Step, cell);
-    if (t.outerRadius > 0) add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "plane"));
+    if (t.outerRadius > 0) add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "face"));
   }
   if (t.crowded) add(TraceLine::Step, "the cell lists many faces: a walk among them");
   if (t.fallback) add(TraceLine::Step, "no cell could be used: every face is tested");
