@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -973,6 +974,32 @@ double pieceBounds3D(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, d
 
 }  // namespace
 
+template <class Visit>
+void CubemapLocator::forEachLeaf(Visit&& visit) const {
+  struct Item {
+    std::uint32_t node, i, j;
+    int level;
+  };
+  std::vector<Item> stack;
+  const std::size_t perFace = static_cast<std::size_t>(g_) * g_;
+  for (std::size_t c = 0; c < 6 * perFace; ++c) {
+    const int cf = static_cast<int>(c / perFace);
+    const std::uint32_t rest = static_cast<std::uint32_t>(c % perFace);
+    stack.push_back({static_cast<std::uint32_t>(c), rest % g_, rest / g_, 0});
+    while (!stack.empty()) {
+      const Item it = stack.back();
+      stack.pop_back();
+      const Node nd = nodes_[it.node];
+      if (nd.count == kInner) {
+        for (std::uint32_t k = 4; k-- > 0;)
+          stack.push_back({nd.first + k, 2 * it.i + (k & 1), 2 * it.j + (k >> 1), it.level + 1});
+        continue;
+      }
+      visit(it.node, cf, it.level, it.i, it.j);
+    }
+  }
+}
+
 void CubemapLocator::buildRadii() {
   const std::size_t nf = tri_.size();
   std::vector<double> in2(nf), out2(nf);
@@ -987,7 +1014,8 @@ void CubemapLocator::buildRadii() {
   // 1/1024 of the radius (faces large against the cell, as on a coarse polyhedron), each
   // face's part inside the cell's pyramid tightens them. Elsewhere the shell is already
   // thin and the tightening would only cost build time.
-  auto leaf = [&](Node& nd, int cf, int level, std::uint64_t i, std::uint64_t j) {
+  auto leaf = [&](std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j) {
+    Node& nd = nodes_[node];
     double lo = nd.count ? HUGE_VAL : 0.0, hi = nd.count ? 0.0 : HUGE_VAL;
     for (std::uint32_t e = nd.first; e < nd.first + nd.count; ++e) {
       lo = std::min(lo, in2[entries_[e]]);
@@ -1027,32 +1055,11 @@ void CubemapLocator::buildRadii() {
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
   };
-  // every leaf with its cell: base cells, then down the quadtrees
-  struct Item {
-    std::uint32_t node;
-    int level;
-    std::uint64_t i, j;
-  };
-  std::vector<Item> stack;
-  const std::size_t perFace = static_cast<std::size_t>(g_) * g_;
-  for (std::size_t c = 0; c < 6 * perFace; ++c) {
-    const int cf = static_cast<int>(c / perFace);
-    const std::uint64_t rest = c % perFace;
-    stack.push_back({static_cast<std::uint32_t>(c), 0, rest % g_, rest / g_});
-    while (!stack.empty()) {
-      const Item it = stack.back();
-      stack.pop_back();
-      Node& nd = nodes_[it.node];
-      if (nd.count == kInner) nd.in2 = nd.out2 = std::numeric_limits<float>::quiet_NaN();
-      if (nd.count != kInner) {
-        leaf(nd, cf, it.level, it.i, it.j);
-        continue;
-      }
-      for (std::uint32_t k = 0; k < 4; ++k)
-        stack.push_back({nd.first + k, it.level + 1, 2 * it.i + (k & 1), 2 * it.j + (k >> 1)});
-    }
-  }
+  for (Node& nd : nodes_)
+    if (nd.count == kInner) nd.in2 = nd.out2 = std::numeric_limits<float>::quiet_NaN();
+  forEachLeaf(leaf);
 }
+
 
 std::optional<Vec3> CubemapLocator::centre() const noexcept {
   if (!centred_) return std::nullopt;
@@ -1124,15 +1131,27 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   int level = 0;
   const std::uint32_t node = leafAt(a.X, a.Y, a.node, level);
   sink.cell(a.face, level, a.X >> (depth_ - level), a.Y >> (depth_ - level), a.s, a.t);
-  const Node leaf = nodes_[node];
-  const bool decided = detail::radiiDecide(a.d2, leaf.in2, leaf.out2);
-  sink.radius(a.d2, leaf.in2, leaf.out2, decided);
-  if (decided) return detail::insideOrOutside(a.d2 > static_cast<double>(leaf.out2));
-  return inLeaf(p, leaf, sink);
+  return fromLeaf(p, a.d2, nodes_[node], sink);
 }
 
 template <class Sink>
-Location CubemapLocator::inLeaf(Vec3 p, const Node& leaf, Sink& sink) const noexcept {
+Location CubemapLocator::fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sink) const noexcept {
+  const bool decided = detail::radiiDecide(d2, leaf.in2, leaf.out2);
+  sink.radius(d2, leaf.in2, leaf.out2, decided);
+  if (decided) return detail::insideOrOutside(d2 > static_cast<double>(leaf.out2));
+  if constexpr (std::is_same_v<Sink, NoSink>) {
+    // A leaf of one or two faces (most of them), untraced: both filters, then the answer
+    // without a branch on it (inside and outside come at random); the tests below where
+    // either filter cannot tell. Testing the one face twice is harmless.
+    if (leaf.count - 1 < 2) {
+      const Triangle& t0 = tri_[entries_[leaf.first]];
+      const Triangle& t1 = tri_[entries_[leaf.first + leaf.count - 1]];
+      const auto s0 = detail::orient3dTerms(v_[t0[0]], v_[t0[1]], v_[t0[2]], p);
+      const auto s1 = detail::orient3dTerms(v_[t1[0]], v_[t1[1]], v_[t1[2]], p);
+      if (detail::orient3dSure(s0) & detail::orient3dSure(s1))
+        return detail::insideOrOutside((s0.det < 0) | (s1.det < 0));
+    }
+  }
   const std::uint32_t* first = entries_.data() + leaf.first;
   if (leaf.count == 0) {
     sink.fallback();  // cannot happen (every direction leaves through some face); be safe
@@ -1389,25 +1408,7 @@ void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> ou
         continue;
       }
       int level = b.level[j];
-      const Node& leaf = nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)];
-      if (detail::radiiDecide(b.d2[j], leaf.in2, leaf.out2)) {
-        o[j] = detail::insideOrOutside(b.d2[j] > static_cast<double>(leaf.out2));
-        continue;
-      }
-      // A leaf of one or two faces (most of them): both filters, then the answer without a
-      // branch on it (inside and outside come at random); the exact path where either
-      // filter cannot tell. Testing the one face twice is harmless.
-      if (leaf.count - 1 < 2) {
-        const Triangle& t0 = tri_[entries_[leaf.first]];
-        const Triangle& t1 = tri_[entries_[leaf.first + leaf.count - 1]];
-        const auto s0 = detail::orient3dTerms(v_[t0[0]], v_[t0[1]], v_[t0[2]], p[j]);
-        const auto s1 = detail::orient3dTerms(v_[t1[0]], v_[t1[1]], v_[t1[2]], p[j]);
-        if (detail::orient3dSure(s0) & detail::orient3dSure(s1)) {
-          o[j] = detail::insideOrOutside((s0.det < 0) | (s1.det < 0));
-          continue;
-        }
-      }
-      o[j] = inLeaf(p[j], leaf, sink);
+      o[j] = fromLeaf(p[j], b.d2[j], nodes_[leafAt(b.X[j], b.Y[j], b.node[j], level)], sink);
     }
   }
 }
@@ -1440,66 +1441,39 @@ Stats3D CubemapLocator::stats() const {
     ++s.histogram[std::min<std::size_t>(nd.count, s.histogram.size() - 1)];
   }
   s.meanPerCell = s.cells ? static_cast<double>(s.entries) / static_cast<double>(s.cells) : 0.0;
-  // the deepest level: walk the inner nodes breadth first
-  const std::size_t base = 6 * static_cast<std::size_t>(g_) * g_;
-  std::vector<std::uint32_t> frontier;
-  for (std::size_t c = 0; c < base; ++c)
-    if (nodes_[c].count == kInner) frontier.push_back(static_cast<std::uint32_t>(c));
-  while (!frontier.empty()) {
-    ++s.maxLevel;
-    std::vector<std::uint32_t> next;
-    for (std::uint32_t n : frontier)
-      for (std::uint32_t c = 0; c < 4; ++c)
-        if (nodes_[nodes_[n].first + c].count == kInner) next.push_back(nodes_[n].first + c);
-    frontier.swap(next);
-  }
+  // the deepest level
+  forEachLeaf([&](std::uint32_t, int, int level, std::uint32_t, std::uint32_t) {
+    s.maxLevel = std::max(s.maxLevel, level);
+  });
   return s;
 }
 
 std::vector<Cell3D> CubemapLocator::cells() const {
   std::vector<Cell3D> out;
   if (!centred_) return out;
-  struct Item {
-    std::uint32_t node, i, j;
-    int level;
-  };
-  std::vector<Item> stack;
-  const std::size_t perFace = static_cast<std::size_t>(g_) * g_;
-  for (std::size_t c = 0; c < 6 * perFace; ++c) {
-    const int cf = static_cast<int>(c / perFace);
-    const std::uint32_t rest = static_cast<std::uint32_t>(c % perFace);
-    stack.push_back({static_cast<std::uint32_t>(c), rest % g_, rest / g_, 0});
-    while (!stack.empty()) {
-      const Item it = stack.back();
-      stack.pop_back();
-      const Node nd = nodes_[it.node];
-      if (nd.count == kInner) {
-        for (std::uint32_t k = 4; k-- > 0;)
-          stack.push_back({nd.first + k, 2 * it.i + (k & 1), 2 * it.j + (k >> 1), it.level + 1});
-        continue;
-      }
-      Cell3D cell;
-      cell.index = static_cast<std::uint32_t>(out.size());
-      cell.cubeFace = cf;
-      cell.level = it.level;
-      cell.i = it.i;
-      cell.j = it.j;
-      const double K = std::ldexp(g_ / 2.0, it.level);
-      cell.s0 = -1 + it.i / K;
-      cell.s1 = -1 + (it.i + 1) / K;
-      cell.t0 = -1 + it.j / K;
-      cell.t1 = -1 + (it.j + 1) / K;
-      cell.apex = c_;
-      const double st[4][2] = {
-          {cell.s0, cell.t0}, {cell.s1, cell.t0}, {cell.s1, cell.t1}, {cell.s0, cell.t1}};
-      for (int q = 0; q < 4; ++q) {
-        const Vec3 d = cubeDirection(cf, st[q][0], st[q][1]);
-        cell.corners[q] = {c_.x + half_ * d.x, c_.y + half_ * d.y, c_.z + half_ * d.z};
-      }
-      cell.faces.assign(entries_.begin() + nd.first, entries_.begin() + nd.first + nd.count);
-      out.push_back(std::move(cell));
+  forEachLeaf([&](std::uint32_t node, int cf, int level, std::uint32_t i, std::uint32_t j) {
+    const Node nd = nodes_[node];
+    Cell3D cell;
+    cell.index = static_cast<std::uint32_t>(out.size());
+    cell.cubeFace = cf;
+    cell.level = level;
+    cell.i = i;
+    cell.j = j;
+    const double K = std::ldexp(g_ / 2.0, level);
+    cell.s0 = -1 + i / K;
+    cell.s1 = -1 + (i + 1) / K;
+    cell.t0 = -1 + j / K;
+    cell.t1 = -1 + (j + 1) / K;
+    cell.apex = c_;
+    const double st[4][2] = {
+        {cell.s0, cell.t0}, {cell.s1, cell.t0}, {cell.s1, cell.t1}, {cell.s0, cell.t1}};
+    for (int q = 0; q < 4; ++q) {
+      const Vec3 d = cubeDirection(cf, st[q][0], st[q][1]);
+      cell.corners[q] = {c_.x + half_ * d.x, c_.y + half_ * d.y, c_.z + half_ * d.z};
     }
-  }
+    cell.faces.assign(entries_.begin() + nd.first, entries_.begin() + nd.first + nd.count);
+    out.push_back(std::move(cell));
+  });
   return out;
 }
 

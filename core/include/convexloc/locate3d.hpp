@@ -214,9 +214,14 @@ class CubemapLocator {
   void buildRadii();
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
-  // the exact answer for p, whose leaf's radii left it open: the leaf's faces, or a walk
+  // p's answer from its leaf (d2: its squared distance from the centre): the radii, else
+  // the leaf's faces, or a walk
   template <class Sink>
-  Location inLeaf(Vec3 p, const Node& leaf, Sink& sink) const noexcept;
+  Location fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sink) const noexcept;
+  // visit(node, cube face, level, i, j) for every leaf, cube face by cube face, each base
+  // cell's quadtree depth first, children in order
+  template <class Visit>
+  void forEachLeaf(Visit&& visit) const;
   std::vector<Vec3> v_;
   std::vector<ConvexPolyhedron::Triangle> tri_;
   std::vector<ConvexPolyhedron::Triangle> nb_;

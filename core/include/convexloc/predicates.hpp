@@ -64,9 +64,7 @@ inline bool tame3d(double v) noexcept {
   const double a = std::fabs(v);
   return a == 0.0 || (a >= 0x1p-250 && a <= 0x1p250);
 }
-}  // namespace detail
 
-namespace detail {
 // The floating-point terms of orient3d's filter: the determinant, its permanent, and
 // whether every difference is tame (then |error| <= kO3dBound * permanent).
 struct Orient3dTerms {
