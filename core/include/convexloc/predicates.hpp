@@ -6,6 +6,7 @@
 // GMP integers. The sign returned is the sign of the exact real value for the doubles given.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "convexloc/geometry.hpp"
@@ -65,6 +66,21 @@ inline bool tame3d(double v) noexcept {
   return a == 0.0 || (a >= 0x1p-250 && a <= 0x1p250);
 }
 
+// whether all nine differences are tame: one test of the largest and one of the smallest
+// magnitude, then each in turn only where one is zero (a shared coordinate) or tiny
+inline bool tame3dAll(double a0, double a1, double a2, double a3, double a4, double a5, double a6,
+                      double a7, double a8) noexcept {
+  const double m0 = std::fabs(a0), m1 = std::fabs(a1), m2 = std::fabs(a2), m3 = std::fabs(a3),
+               m4 = std::fabs(a4), m5 = std::fabs(a5), m6 = std::fabs(a6), m7 = std::fabs(a7),
+               m8 = std::fabs(a8);
+  const double hi = std::max({m0, m1, m2, m3, m4, m5, m6, m7, m8});
+  const double lo = std::min({m0, m1, m2, m3, m4, m5, m6, m7, m8});
+  if (!(hi <= 0x1p250)) return false;
+  if (lo >= 0x1p-250) return true;
+  return tame3d(a0) & tame3d(a1) & tame3d(a2) & tame3d(a3) & tame3d(a4) & tame3d(a5) &
+         tame3d(a6) & tame3d(a7) & tame3d(a8);
+}
+
 // The floating-point terms of orient3d's filter: the determinant, its permanent, and
 // whether every difference is tame (then |error| <= kO3dBound * permanent).
 struct Orient3dTerms {
@@ -82,8 +98,7 @@ inline Orient3dTerms orient3dTerms(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
           (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
               (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
               (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz),
-          static_cast<bool>(tame3d(adx) & tame3d(ady) & tame3d(adz) & tame3d(bdx) &
-                            tame3d(bdy) & tame3d(bdz) & tame3d(cdx) & tame3d(cdy) & tame3d(cdz))};
+          tame3dAll(adx, ady, adz, bdx, bdy, bdz, cdx, cdy, cdz)};
 }
 // whether the terms decide the sign (then it is the sign of det, never 0)
 inline bool orient3dSure(const Orient3dTerms& t) noexcept {
