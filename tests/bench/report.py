@@ -7,7 +7,8 @@ import sys
 
 
 def load(path):
-    """(family, method) -> {size: ns per item}, and the run's context."""
+    """(family, method) -> {size: ns per item}, and the run's context. With repetitions,
+    each benchmark's fastest: on a shared machine the slower ones measure the neighbours."""
     data = json.load(open(path))
     rows = collections.defaultdict(dict)
     for b in data["benchmarks"]:
@@ -21,8 +22,20 @@ def load(path):
             family, method, size = parts[0], parts[1], int(parts[2])
         if threads:
             method = f"{method} ({threads} thr)"
-        rows[(family, method)][size] = 1e9 / b["items_per_second"]
-    return rows, data.get("context", {})
+        ns = 1e9 / b["items_per_second"]
+        row = rows[(family, method)]
+        row[size] = min(ns, row.get(size, ns))
+    ctx = dict(data.get("context", {}))
+    ctx["repetitions"] = max((b.get("repetitions", 1) for b in data["benchmarks"]), default=1)
+    return rows, ctx
+
+
+def reps_text(ctx):
+    reps = ctx.get("repetitions", 1)
+    if reps <= 1:
+        return ""
+    return (f", each figure the fastest of its {reps} repetitions, which the run interleaves "
+            "at random")
 
 
 def cpu_model():
@@ -134,7 +147,8 @@ def main(path, out):
     lines = [f"Run of {ctx.get('date', '?')} on {ctx.get('host_name', platform.node())}: "
              f"{cpu_model()}, {ctx.get('num_cpus', '?')} CPUs, load average at the start "
              f"{', '.join(f'{x:.2f}' for x in ctx.get('load_avg', [])) or '?'}; "
-             "ns per point (lower is better), one run of `tests/bench/report`.", ""]
+             "ns per point (lower is better), one run of `tests/bench/report`"
+             f"{reps_text(ctx)}.", ""]
     lines += ["### The issue's floors, from this run", "",
               "| floor | measured | verdict |", "|---|---|---|"]
     lines += [f"| {w} | {m} | {v} |" for w, m, v in floors(rows)]
