@@ -30,6 +30,17 @@ def load(path):
     return rows, ctx
 
 
+# the order rows and plot series take (a run that interleaves at random lists the
+# benchmarks in no fixed order)
+ORDER = ["halfplane", "wedge", "slab", "uniform", "polar", "halfspace", "walk", "cubemap",
+         "geos", "cgal", "stream", "stream 3D"]
+
+
+def method_key(method):
+    name, _, threads = method.partition(" (")
+    return (ORDER.index(name) if name in ORDER else len(ORDER), name, threads)
+
+
 def reps_text(ctx):
     reps = ctx.get("repetitions", 1)
     if reps <= 1:
@@ -157,7 +168,7 @@ def main(path, out):
     lines += [f"| {w} | {m} | {v} |" for w, m, v in per_call(rows)]
     lines.append("")
     for family in ["Locate2D", "Batch2D", "Build2D", "Locate3D", "Batch3D", "Build3D", "Stream"]:
-        methods = [m for (f, m) in rows if f == family]
+        methods = sorted((m for (f, m) in rows if f == family), key=method_key)
         if not methods:
             continue
         sizes = sorted({s for m in methods for s in rows[(family, m)]})
@@ -170,7 +181,8 @@ def main(path, out):
     open(f"{out}/report.md", "w").write("\n".join(lines))
     # the plots: one point per call for every method, and the 1-thread batch of the O(1) ones
     for dim, batch in (("2D", "polar (1 thr)"), ("3D", "cubemap (1 thr)")):
-        series = [(m, rows[(f, m)]) for (f, m) in rows if f == f"Locate{dim}"]
+        series = [(m, rows[(f, m)]) for (f, m) in sorted(rows, key=lambda k: method_key(k[1]))
+                  if f == f"Locate{dim}"]
         if (f"Batch{dim}", batch) in rows:
             series.append((batch.replace("(1 thr)", "batch"), rows[(f"Batch{dim}", batch)]))
         if not series:

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 #include <map>
 #include <tuple>
 
@@ -319,4 +322,73 @@ TEST(Trace3D, HalfspaceTestsUntilTheFirstOuterSide) {
   EXPECT_EQ(out.result, Location::Outside);
   EXPECT_EQ(h.stats().cells, 0u);
   EXPECT_TRUE(h.cells().empty());
+}
+
+// A point whose squared distance from the centre, as the locator computes it, equals its
+// cell's outer bound exactly is not beyond that bound: the radii must leave it to the face
+// tests (a '>=' in their comparison would call it inside). Found by stepping a coordinate
+// ulp by ulp across the bound's sphere; checked one point per call, traced, and in a batch
+// (the AVX2 stage where the CPU has it) against the exact reference.
+TEST(Cubemap3D, ExactlyOnTheOuterBoundGoesToTheFaceTests) {
+  for (auto [kind, n] : {std::pair{PolyhedronKind::Geodesic, std::size_t{80}},
+                         std::pair{PolyhedronKind::Cube, std::size_t{12}},
+                         std::pair{PolyhedronKind::Geodesic, std::size_t{1280}}}) {
+    SCOPED_TRACE(std::string(toString(kind)) + " " + std::to_string(n));
+    const ConvexPolyhedron p(generatePolyhedron(kind, n, 3));
+    const CubemapLocator cm(p);
+    ASSERT_TRUE(cm.centre().has_value());
+    const Vec3 c = *cm.centre();
+    const auto v = p.vertices();
+    auto reference = [&](Vec3 q) {
+      bool zero = false;
+      for (const auto& t : p.triangles()) {
+        const int s = reftest::orient(v[t[0]], v[t[1]], v[t[2]], q);
+        if (s < 0) return Location::Outside;
+        zero |= s == 0;
+      }
+      return zero ? Location::Boundary : Location::Inside;
+    };
+    Rng rng(5);
+    std::vector<Vec3> found;
+    for (int trial = 0; trial < 20000 && found.size() < 64; ++trial) {
+      const Vec3 u{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
+      const double len = std::sqrt(u.x * u.x + u.y * u.y + u.z * u.z);
+      if (!(len > 0.1)) continue;
+      const Trace3D seed = cm.trace({c.x + u.x, c.y + u.y, c.z + u.z});
+      if (seed.level < 0 || !(seed.outerRadius > 0)) continue;
+      // the stored bound (a float): the trace shows its square root
+      const float out2 = static_cast<float>(seed.outerRadius * seed.outerRadius);
+      ASSERT_EQ(std::sqrt(static_cast<double>(out2)), seed.outerRadius);
+      const double k = seed.outerRadius / len;
+      Vec3 q{c.x + u.x * k, c.y + u.y * k, c.z + u.z * k};
+      const double outward = u.x > 0 ? HUGE_VAL : -HUGE_VAL;
+      for (int step = 0; step < 64; ++step) {
+        const double dx = q.x - c.x, dy = q.y - c.y, dz = q.z - c.z;
+        const double d2 = dx * dx + dy * dy + dz * dz;  // as the locator computes it
+        if (d2 == static_cast<double>(out2)) {
+          const Trace3D t = cm.trace(q);
+          if (t.cubeFace == seed.cubeFace && t.level == seed.level && t.cellI == seed.cellI &&
+              t.cellJ == seed.cellJ) {
+            EXPECT_FALSE(t.byRadius);
+            EXPECT_EQ(t.result, reference(q));
+            EXPECT_EQ(cm.locate(q), t.result);
+            found.push_back(q);
+          }
+          break;
+        }
+        q.x = std::nextafter(q.x, d2 < static_cast<double>(out2) ? outward : -outward);
+      }
+    }
+    EXPECT_GE(found.size(), 16u);
+    // the batch, with each point between two decided ones (4-point groups mix them)
+    std::vector<Vec3> batch;
+    for (Vec3 q : found) {
+      batch.push_back(c);
+      batch.push_back(q);
+      batch.push_back({c.x + 100, c.y, c.z});
+    }
+    std::vector<Location> out(batch.size());
+    cm.locate(batch, out);
+    for (std::size_t i = 1; i < batch.size(); i += 3) EXPECT_EQ(out[i], reference(batch[i]));
+  }
 }

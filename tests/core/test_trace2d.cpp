@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "adversarial.hpp"
@@ -272,3 +274,61 @@ TEST(Trace, SquareByHand) {
 }
 
 }  // namespace
+
+// A point whose squared distance from the centre, as polar computes it, equals its cell's
+// outer bound exactly is not beyond that bound: the radii must leave it to the edge tests (a
+// '>=' in their comparison would call it inside). Found by stepping a coordinate ulp by ulp
+// across the bound's circle; checked one point per call and in a batch (the AVX2 stage where
+// the CPU has it) against the exact reference.
+TEST(Trace, PolarExactlyOnTheOuterBoundGoesToTheEdgeTests) {
+  for (auto [kind, n] : {std::pair{PolygonKind::Regular, std::size_t{8}},
+                         std::pair{PolygonKind::Regular, std::size_t{1024}},
+                         std::pair{PolygonKind::Random, std::size_t{200}},
+                         std::pair{PolygonKind::Ellipse, std::size_t{64}}}) {
+    SCOPED_TRACE(std::string(toString(kind)) + " " + std::to_string(n));
+    const ConvexPolygon polygon(generatePolygon(kind, n, 3));
+    const PolarLocator polar(polygon);
+    const Vec2 c = polar.trace(polygon.vertices()[0]).apex;  // the centre
+    Rng rng(5);
+    std::vector<Vec2> found;
+    for (int trial = 0; trial < 20000 && found.size() < 64; ++trial) {
+      const Vec2 u{rng.uniform(-1, 1), rng.uniform(-1, 1)};
+      const double len = std::sqrt(u.x * u.x + u.y * u.y);
+      if (!(len > 0.1)) continue;
+      const Trace2D seed = polar.trace({c.x + u.x, c.y + u.y});
+      if (seed.cell < 0 || !(seed.outerRadius > 0)) continue;
+      // the stored bound (a float): the trace shows its square root
+      const float out2 = static_cast<float>(seed.outerRadius * seed.outerRadius);
+      ASSERT_EQ(std::sqrt(static_cast<double>(out2)), seed.outerRadius);
+      const double k = seed.outerRadius / len;
+      Vec2 q{c.x + u.x * k, c.y + u.y * k};
+      const double outward = u.x > 0 ? HUGE_VAL : -HUGE_VAL;
+      for (int step = 0; step < 64; ++step) {
+        const double dx = q.x - c.x, dy = q.y - c.y;
+        const double d2 = dx * dx + dy * dy;  // as polar computes it
+        if (d2 == static_cast<double>(out2)) {
+          const Trace2D t = polar.trace(q);
+          if (t.cell == seed.cell) {
+            EXPECT_FALSE(t.byRadius);
+            EXPECT_EQ(t.result, ref::locate(polygon.vertices(), q));
+            EXPECT_EQ(polar.locate(q), t.result);
+            found.push_back(q);
+          }
+          break;
+        }
+        q.x = std::nextafter(q.x, d2 < static_cast<double>(out2) ? outward : -outward);
+      }
+    }
+    EXPECT_GE(found.size(), 16u);
+    std::vector<Vec2> batch;
+    for (Vec2 q : found) {
+      batch.push_back(c);
+      batch.push_back(q);
+      batch.push_back({c.x + 100, c.y});
+    }
+    std::vector<Location> out(batch.size());
+    polar.locate(batch, out);
+    for (std::size_t i = 1; i < batch.size(); i += 3)
+      EXPECT_EQ(out[i], ref::locate(polygon.vertices(), batch[i]));
+  }
+}
