@@ -937,7 +937,7 @@ inline bool twoEdges(const Vec2* r, Vec2 p, Location& out) noexcept {
   const double s0 = std::fabs(l0) + std::fabs(m0), s1 = std::fabs(l1) + std::fabs(m1);
   const bool sure = std::fabs(d0) > kCcwBound * s0 + kUnderflowSlack && s0 >= kTinyPermanent &&
                     std::fabs(d1) > kCcwBound * s1 + kUnderflowSlack && s1 >= kTinyPermanent;
-  out = (d0 < 0) | (d1 < 0) ? Location::Outside : Location::Inside;
+  out = ((d0 < 0) | (d1 < 0)) ? Location::Outside : Location::Inside;
   return sure;
 }
 

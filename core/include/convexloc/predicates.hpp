@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "convexloc/geometry.hpp"
 
@@ -77,8 +78,9 @@ inline bool tame3dAll(double a0, double a1, double a2, double a3, double a4, dou
   const double lo = std::min({m0, m1, m2, m3, m4, m5, m6, m7, m8});
   if (!(hi <= 0x1p250)) return false;
   if (lo >= 0x1p-250) return true;
-  return tame3d(a0) & tame3d(a1) & tame3d(a2) & tame3d(a3) & tame3d(a4) & tame3d(a5) &
-         tame3d(a6) & tame3d(a7) & tame3d(a8);
+  bool all = true;
+  for (double a : {a0, a1, a2, a3, a4, a5, a6, a7, a8}) all = all && tame3d(a);
+  return all;
 }
 
 // The floating-point terms of orient3d's filter: the determinant, its permanent, and
