@@ -131,11 +131,7 @@ Location fanLocate(std::span<const Vec2> v, Vec2 p, Sink& sink) {
   return Location::Inside;
 }
 
-// rough bytes held by a vector
-template <class T, class A>
-std::size_t bytesOf(const std::vector<T, A>& v) {
-  return v.capacity() * sizeof(T);
-}
+using detail::bytesOf;
 
 // statistics of a CSR table
 Stats2D csrStats(std::size_t edges, std::span<const std::uint32_t> offsets, std::size_t bytes,

@@ -151,11 +151,7 @@ std::uint32_t walkToExit(const std::vector<Vec3>& v, const std::vector<Triangle>
   return kNone;
 }
 
-// rough bytes held by a vector
-template <class T, class A>
-std::size_t bytesOf(const std::vector<T, A>& v) {
-  return v.capacity() * sizeof(T);
-}
+using detail::bytesOf;
 
 // statistics shared by every method
 Stats3D baseStats(std::size_t faces, std::size_t vertices, std::size_t bytes, double buildSeconds) {

@@ -21,6 +21,12 @@ inline constexpr std::size_t kHugePage = std::size_t{1} << 21;
 // a buffer of `bytes` starting on a huge-page boundary; throws std::bad_alloc
 void* allocateHuge(std::size_t bytes);
 void freeHuge(void* p) noexcept;
+
+// the bytes a vector's buffer holds (what the locators' stats() count as their memory)
+template <class T, class A>
+std::size_t bytesOf(const std::vector<T, A>& v) noexcept {
+  return v.capacity() * sizeof(T);
+}
 }  // namespace detail
 
 template <class T>
