@@ -59,63 +59,74 @@ def cpu_model():
     return platform.processor() or "unknown CPU"
 
 
-def floors(rows):
-    """The issue's floors, each as (what, measured text, verdict)."""
-    def ns(family, method, size):
-        return rows.get((family, method), {}).get(size)
+def ns(rows, family, method, size):
+    return rows.get((family, method), {}).get(size)
 
-    out = []
 
-    def ratio(what, a, b, limit, at_most):
+class Ratios:
+    """Measured ratios against limits, as (what, measured text, verdict) rows; `words` are
+    the verdicts within and beyond the limit, `limit_name` what the limit is called."""
+
+    def __init__(self, words, limit_name=""):
+        self.rows, self.words, self.limit_name = [], words, limit_name
+
+    def add(self, what, a, b, limit, at_most):
         """a / b against the limit: at most it (growth), or at least it (a speed-up)"""
         if a is None or b is None:
-            out.append((what, "not measured", "—"))
+            self.rows.append((what, "not measured", "—"))
             return
         r = a / b
-        shown = f"{r:.2f}x (at most {limit}x)" if at_most else f"{r:.1f}x (at least {limit}x)"
+        if at_most:
+            shown = f"{r:.2f}x ({self.limit_name}at most {limit}x)"
+        else:
+            shown = f"{r:.1f}x ({self.limit_name}at least {limit}x)"
         holds = r <= limit if at_most else r >= limit
-        out.append((what, f"{a:.3g} / {b:.3g} ns = {shown}", "holds" if holds else "FAILS"))
+        self.rows.append((what, f"{a:.3g} / {b:.3g} ns = {shown}", self.words[0 if holds else 1]))
 
-    def ratio_at_most(what, a, b, limit):
-        ratio(what, a, b, limit, True)
 
-    def ratio_at_least(what, slow, fast, limit):
-        ratio(what, slow, fast, limit, False)
+def one_thread(rows, ratios, path, polar, cubemap):
+    """The floors on 1 thread, with convexloc's figures from `polar` and `cubemap`, each a
+    (family, method) pair, and `path` naming them; the peers are timed one point per call."""
+    big, small = 1 << 20, 8
+    ratios.add(f"polar, {path}: N = 2^20 against N = 8",
+               ns(rows, *polar, big), ns(rows, *polar, small), 4, True)
+    ratios.add(f"polar, {path}: against wedge at N = 16384",
+               ns(rows, "Locate2D", "wedge", 16384), ns(rows, *polar, 16384), 5, False)
+    ratios.add(f"polar, {path}: against GEOS prepared contains at N = 16384",
+               ns(rows, "Locate2D", "geos", 16384), ns(rows, *polar, 16384), 30, False)
+    ratios.add(f"cubemap, {path}: F = 10^6 against F = 100",
+               ns(rows, *cubemap, 1000000), ns(rows, *cubemap, 100), 4, True)
+    for f in (100000, 1000000):
+        ratios.add(f"cubemap, {path}: against CGAL Side_of_triangle_mesh at F = 10^{len(str(f)) - 1}",
+                   ns(rows, "Locate3D", "cgal", f), ns(rows, *cubemap, f), 50, False)
 
+
+def floors(rows):
+    """The issue's floors, each as (what, measured text, verdict)."""
+    ratios = Ratios(("holds", "FAILS"))
     # The floors "polar 1 thread" and "cubemap 1 thread" are read as the method's throughput
     # on one thread over many points: the batch on 1 thread (what `classify` runs), against
     # the peers' one-call-per-point loops (all their APIs offer). The same ratios for
-    # convexloc's one point per call follow as information, under their own heading.
-    big, small = 1 << 20, 8
-    ratio_at_most("polar, 1 thread: N = 2^20 against N = 8",
-                  ns("Batch2D", "polar (1 thr)", big), ns("Batch2D", "polar (1 thr)", small), 4)
-    ratio_at_least("polar, 1 thread, against wedge at N = 16384",
-                   ns("Locate2D", "wedge", 16384), ns("Batch2D", "polar (1 thr)", 16384), 5)
-    ratio_at_least("polar, 1 thread, against GEOS prepared contains at N = 16384",
-                   ns("Locate2D", "geos", 16384), ns("Batch2D", "polar (1 thr)", 16384), 30)
-    ratio_at_most("cubemap, 1 thread: F = 10^6 against F = 100",
-                  ns("Batch3D", "cubemap (1 thr)", 1000000), ns("Batch3D", "cubemap (1 thr)", 100), 4)
-    for f in (100000, 1000000):
-        ratio_at_least(f"cubemap, 1 thread, against CGAL Side_of_triangle_mesh at "
-                       f"F = 10^{len(str(f)) - 1}",
-                       ns("Locate3D", "cgal", f), ns("Batch3D", "cubemap (1 thr)", f), 50)
+    # convexloc's one point per call follow as information (per_call).
+    one_thread(rows, ratios, "1 thread", ("Batch2D", "polar (1 thr)"), ("Batch3D", "cubemap (1 thr)"))
     # the streaming limit as the issue defines it (two doubles in, a byte out); for 3D also
     # against streaming its own 3-double points, shown beside it, not instead of it
-    stream = ns("Stream", "stream (2 thr)", 10000000)
-    stream3 = ns("Stream", "stream 3D (2 thr)", 10000000)
+    stream = ns(rows, "Stream", "stream (2 thr)", 10000000)
+    stream3 = ns(rows, "Stream", "stream 3D (2 thr)", 10000000)
     for family, method, sizes, limits in (
             ("Batch2D", "polar", (8, 64, 1024, 4096), ((stream, "the streaming limit"),)),
             ("Batch3D", "cubemap", (100, 1000, 10000),
              ((stream, "the streaming limit"),
               (stream3, "streaming 3-double points (information)")))):
-        worst = max(((ns(family, f"{method} (2 thr)", s) or 0, s) for s in sizes))
+        worst = max(((ns(rows, family, f"{method} (2 thr)", s) or 0, s) for s in sizes))
         for limit, name in limits:
-            ratio_at_most(f"{method}, batch 2 threads, worst size up to {sizes[-1]} ({worst[1]}) "
-                          f"against {name} (2 threads, 10^7 points)",
-                          worst[0] or None, limit, 4)
-    for family, method, size, label in (("Build2D", "polar", big, "polar build at N = 2^20"),
+            ratios.add(f"{method}, batch 2 threads, worst size up to {sizes[-1]} ({worst[1]}) "
+                       f"against {name} (2 threads, 10^7 points)",
+                       worst[0] or None, limit, 4, True)
+    out = ratios.rows
+    for family, method, size, label in (("Build2D", "polar", 1 << 20, "polar build at N = 2^20"),
                                         ("Build3D", "cubemap", 1000000, "cubemap build at F = 10^6")):
-        per = ns(family, method, size)
+        per = ns(rows, family, method, size)
         if per is None:
             out.append((label, "not measured", "—"))
         else:
@@ -127,30 +138,9 @@ def floors(rows):
 def per_call(rows):
     """The 1-thread floors' ratios for one point per call (locate(p) in a plain loop), as
     information: (what, measured text, whether the floor's ratio is reached)."""
-    def ns(family, method, size):
-        return rows.get((family, method), {}).get(size)
-
-    out = []
-
-    def ratio(what, a, b, limit, at_most):
-        if a is None or b is None:
-            out.append((what, "not measured", "—"))
-            return
-        r = a / b
-        shown = f"{r:.2f}x (floor: at most {limit}x)" if at_most else f"{r:.1f}x (floor: at least {limit}x)"
-        reached = r <= limit if at_most else r >= limit
-        out.append((what, f"{a:.3g} / {b:.3g} ns = {shown}", "reached" if reached else "not reached"))
-
-    ratio("polar: N = 2^20 against N = 8", ns("Locate2D", "polar", 1 << 20), ns("Locate2D", "polar", 8), 4, True)
-    ratio("polar against wedge at N = 16384", ns("Locate2D", "wedge", 16384), ns("Locate2D", "polar", 16384), 5, False)
-    ratio("polar against GEOS prepared contains at N = 16384",
-          ns("Locate2D", "geos", 16384), ns("Locate2D", "polar", 16384), 30, False)
-    ratio("cubemap: F = 10^6 against F = 100",
-          ns("Locate3D", "cubemap", 1000000), ns("Locate3D", "cubemap", 100), 4, True)
-    for f in (100000, 1000000):
-        ratio(f"cubemap against CGAL Side_of_triangle_mesh at F = 10^{len(str(f)) - 1}",
-              ns("Locate3D", "cgal", f), ns("Locate3D", "cubemap", f), 50, False)
-    return out
+    ratios = Ratios(("reached", "not reached"), "floor: ")
+    one_thread(rows, ratios, "one point per call", ("Locate2D", "polar"), ("Locate3D", "cubemap"))
+    return ratios.rows
 
 
 def main(path, out):
