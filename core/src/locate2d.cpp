@@ -15,16 +15,12 @@
 #include "convexloc/batch.hpp"
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
-#include "radii.hpp"
+#include "convexloc/timing.hpp"
+#include "detail/batch_loop.hpp"
+#include "detail/radii.hpp"
 
 namespace convexloc {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // === Trace sinks: the query code is written once and either records or not
 
@@ -167,32 +163,7 @@ std::vector<Vec2> copyVertices(const ConvexPolygon& polygon) {
   return {polygon.vertices().begin(), polygon.vertices().end()};
 }
 
-template <class Locator>
-void locateAll(const Locator& loc, std::span<const Vec2> points, std::span<Location> out) {
-  const std::size_t n = std::min(points.size(), out.size());
-  for (std::size_t i = 0; i < n; ++i) out[i] = loc.locate(points[i]);
-}
-
 }  // namespace
-
-// === Method names
-
-std::string_view toString(Method2D m) {
-  switch (m) {
-    case Method2D::Halfplane: return "halfplane";
-    case Method2D::Wedge: return "wedge";
-    case Method2D::Slab: return "slab";
-    case Method2D::Uniform: return "uniform";
-    case Method2D::Polar: return "polar";
-  }
-  return "?";
-}
-
-std::optional<Method2D> parseMethod2D(std::string_view name) {
-  for (Method2D m : kAllMethods2D)
-    if (toString(m) == name) return m;
-  return std::nullopt;
-}
 
 // === halfplane
 
@@ -215,7 +186,7 @@ Location HalfplaneLocator::locate(Vec2 p) const noexcept {
 }
 
 void HalfplaneLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace2D HalfplaneLocator::trace(Vec2 p) const {
@@ -255,7 +226,7 @@ Location WedgeLocator::locate(Vec2 p) const noexcept {
 }
 
 void WedgeLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace2D WedgeLocator::trace(Vec2 p) const {
@@ -350,7 +321,7 @@ Location SlabLocator::locate(Vec2 p) const noexcept {
 }
 
 void SlabLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace2D SlabLocator::trace(Vec2 p) const {
@@ -490,7 +461,7 @@ Location UniformLocator::locate(Vec2 p) const noexcept {
 }
 
 void UniformLocator::locate(std::span<const Vec2> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace2D UniformLocator::trace(Vec2 p) const {

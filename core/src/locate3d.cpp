@@ -17,20 +17,16 @@
 #include "convexloc/batch.hpp"
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
-#include "radii.hpp"
+#include "convexloc/timing.hpp"
+#include "detail/batch_loop.hpp"
+#include "detail/radii.hpp"
 
 namespace convexloc {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Triangle = ConvexPolyhedron::Triangle;
 
 constexpr std::uint32_t kNone = 0xffffffffu;
-
-// seconds elapsed since t0
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // === Trace sinks: the query code is written once and either records or not
 
@@ -164,31 +160,7 @@ Stats3D baseStats(std::size_t faces, std::size_t vertices, std::size_t bytes, do
   return s;
 }
 
-// the batch loop every locator shares: one locate per point, nothing allocated
-template <class Locator>
-void locateAll(const Locator& loc, std::span<const Vec3> points, std::span<Location> out) {
-  const std::size_t n = std::min(points.size(), out.size());
-  for (std::size_t i = 0; i < n; ++i) out[i] = loc.locate(points[i]);
-}
-
 }  // namespace
-
-// === Method names
-
-std::string_view toString(Method3D m) {
-  switch (m) {
-    case Method3D::Halfspace: return "halfspace";
-    case Method3D::Walk: return "walk";
-    case Method3D::Cubemap: return "cubemap";
-  }
-  return "?";
-}
-
-std::optional<Method3D> parseMethod3D(std::string_view name) {
-  for (Method3D m : kAllMethods3D)
-    if (toString(m) == name) return m;
-  return std::nullopt;
-}
 
 // === halfspace
 
@@ -207,7 +179,7 @@ Location HalfspaceLocator::locate(Vec3 p) const noexcept {
 
 void HalfspaceLocator::locate(std::span<const Vec3> points,
                               std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace3D HalfspaceLocator::trace(Vec3 p) const {
@@ -305,7 +277,7 @@ Location WalkLocator::locate(Vec3 p) const noexcept {
 }
 
 void WalkLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
-  locateAll(*this, points, out);
+  detail::locateEach(*this, points, out);
 }
 
 Trace3D WalkLocator::trace(Vec3 p) const {
@@ -1331,7 +1303,7 @@ std::size_t decideAvx2(const AimBlock&, std::size_t, const void*, Location*, std
 
 void CubemapLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
   if (!centred_) {
-    locateAll(*this, points, out);
+    detail::locateEach(*this, points, out);
     return;
   }
   // Blocks of points in stages: aim each (4 at a time in AVX2 where the CPU has it) and

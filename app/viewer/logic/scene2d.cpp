@@ -8,17 +8,12 @@
 #include <utility>
 
 #include "convexloc/error.hpp"
+#include "convexloc/timing.hpp"
 #include "convexloc/text_reader.hpp"
 #include "logic/picking.hpp"
 
 namespace convexloc::viewer {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // "file:line: message", "file: message" or "message", as the GUIDE's contract says
 std::string located(const std::string& source, const Error& e) {

@@ -8,16 +8,11 @@
 #include <utility>
 
 #include "convexloc/error.hpp"
+#include "convexloc/timing.hpp"
 #include "convexloc/mesh_reader.hpp"
 
 namespace convexloc::viewer {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 std::string located(const std::string& source, const Error& e) {
   std::string out = source;

@@ -19,23 +19,13 @@
 #include <vector>
 
 #include "convexloc/geometry.hpp"
+#include "convexloc/methods.hpp"
 #include "convexloc/polygon.hpp"
 #include "convexloc/table.hpp"
 
 namespace convexloc {
 
 // === Common result types
-
-// the 2D methods, in the paper's order
-enum class Method2D : std::uint8_t { Halfplane, Wedge, Slab, Uniform, Polar };
-
-// "halfplane", "wedge", "slab", "uniform", "polar"
-std::string_view toString(Method2D m);
-// the method with that name, if any
-std::optional<Method2D> parseMethod2D(std::string_view name);
-// every method, in order
-inline constexpr Method2D kAllMethods2D[] = {Method2D::Halfplane, Method2D::Wedge, Method2D::Slab,
-                                             Method2D::Uniform, Method2D::Polar};
 
 // one edge test: sign of orient2d(edge start, edge end, point); > 0 is the inner side
 struct EdgeTest {

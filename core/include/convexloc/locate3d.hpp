@@ -21,23 +21,13 @@
 #include <vector>
 
 #include "convexloc/geometry.hpp"
+#include "convexloc/methods.hpp"
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/table.hpp"
 
 namespace convexloc {
 
 // === Common result types
-
-// the 3D methods
-enum class Method3D : std::uint8_t { Halfspace, Walk, Cubemap };
-
-// "halfspace", "walk", "cubemap"
-std::string_view toString(Method3D m);
-// the method with that name, if any
-std::optional<Method3D> parseMethod3D(std::string_view name);
-// every method, in order
-inline constexpr Method3D kAllMethods3D[] = {Method3D::Halfspace, Method3D::Walk,
-                                             Method3D::Cubemap};
 
 // one plane test: sign of orient3d(a, b, c, p) for face (a, b, c); > 0 is the inner side
 struct FaceTest {
