@@ -10,7 +10,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "adversarial.hpp"
+#include "adversarial2d.hpp"
 #include "adversarial3d.hpp"
 #include "convexloc/batch.hpp"
 #include "convexloc/generate2d.hpp"

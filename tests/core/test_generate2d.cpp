@@ -8,7 +8,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
 #include "convexloc/polygon.hpp"
-#include "reference.hpp"
+#include "reference2d.hpp"
 
 using namespace convexloc;
 

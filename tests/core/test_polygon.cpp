@@ -11,8 +11,8 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/polygon.hpp"
-#include "reference.hpp"
-#include "shapes.hpp"
+#include "reference2d.hpp"
+#include "shapes2d.hpp"
 
 using namespace convexloc;
 using testing::AllOf;

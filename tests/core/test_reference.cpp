@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "convexloc/generate2d.hpp"
-#include "reference.hpp"
+#include "reference2d.hpp"
 
 using convexloc::Location;
 using convexloc::Rng;

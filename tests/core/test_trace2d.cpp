@@ -11,12 +11,12 @@
 #include <utility>
 #include <vector>
 
-#include "adversarial.hpp"
+#include "adversarial2d.hpp"
 #include "convexloc/generate2d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
-#include "reference.hpp"
-#include "shapes.hpp"
+#include "reference2d.hpp"
+#include "shapes2d.hpp"
 
 using namespace convexloc;
 

@@ -117,7 +117,7 @@ TEST(HostileMesh, TheLineLimitIsExact) {
 }
 
 // Regression: a last line without a newline that exactly fills the reader's buffer made the
-// mesh reader read freed memory (the same fault as RowReader's; see test_hostile_core.cpp).
+// mesh reader read freed memory (the same fault as RowReader's; see test_hostile_core2d.cpp).
 TEST(HostileMesh, ALastLineFillingTheBufferIsRead) {
   const std::string off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n";
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";

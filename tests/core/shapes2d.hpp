@@ -11,7 +11,7 @@
 
 #include "convexloc/generate2d.hpp"
 #include "convexloc/geometry.hpp"
-#include "reference.hpp"
+#include "reference2d.hpp"
 
 namespace shapes {
 

@@ -17,7 +17,7 @@
 #include "convexloc/generate2d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
-#include "reference.hpp"
+#include "reference2d.hpp"
 
 namespace adversarial {
 
