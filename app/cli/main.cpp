@@ -10,13 +10,18 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "convexloc/error.hpp"
+#include "convexloc/methods.hpp"
 
 #ifndef CONVEXLOC_VERSION
 #define CONVEXLOC_VERSION "unknown"
@@ -25,10 +30,23 @@
 namespace convexloc::cli {
 namespace {
 
-constexpr const char* kMethodHelp =
-    "polygon: halfplane O(N), wedge O(log N), slab O(log N), uniform O(1) or polar O(1) "
-    "(default polar); polyhedron: halfspace O(F), walk O(sqrt F) or cubemap O(1) (default "
-    "cubemap)";
+// "a O(N), b O(log N) or c O(1)": every method of one dimension with its cost
+template <class Method, std::size_t N>
+std::string methodsWithCosts(const Method (&all)[N]) {
+  std::string text;
+  for (std::size_t i = 0; i < N; ++i) {
+    const MethodInfo& info = methodInfo(all[i]);
+    text.append(i == 0 ? "" : i + 1 == N ? " or " : ", ").append(info.name).append(" ");
+    text.append(info.cost);
+  }
+  return text;
+}
+
+// what --method takes, for both kinds of shape
+std::string methodHelp() {
+  return "polygon: " + methodsWithCosts(kAllMethods2D) +
+         " (default polar); polyhedron: " + methodsWithCosts(kAllMethods3D) + " (default cubemap)";
+}
 
 constexpr const char* kResolutionHelp =
     "uniform: slab count; polar: slabs per octant; cubemap: grid cells per side of each cube "
@@ -93,107 +111,133 @@ int usageError(const CLI::App& app, const std::string& message) {
   return kExitBadUsage;
 }
 
-// parses the command line and runs the command it names
-int run(int argc, char** argv) {
-  CLI::App app{"convexloc: exact point location in convex polygons and polyhedra", "convexloc"};
-  const CLI::Validator anyCount = wholeNumber(UINT64_MAX);
-  const CLI::Validator resolution = wholeNumber(UINT32_MAX);
-  app.set_version_flag("--version", "convexloc " CONVEXLOC_VERSION);
-  app.require_subcommand(1);
+// === Commands: one small function each, registering its subcommand and what it runs
 
-  ClassifyOptions classifyOptions;
-  CLI::App* classify = app.add_subcommand(
+// a subcommand, and what runs when the command line names it
+struct Command {
+  CLI::App* sub = nullptr;
+  std::function<void()> action;
+};
+
+// a whole-number option whose default the help shows; at most the largest T
+template <class T>
+void addWholeNumber(CLI::App* sub, const std::string& flags, T& value, const std::string& help) {
+  sub->add_option(flags, value, help)
+      ->check(wholeNumber(std::numeric_limits<T>::max()))
+      ->capture_default_str();
+}
+
+// --seed, shared by every generator
+void addSeed(CLI::App* sub, std::uint64_t& seed) {
+  addWholeNumber(sub, "-s,--seed", seed, "Random seed");
+}
+
+// --resolution, shared by classify and info
+void addResolution(CLI::App* sub, std::uint32_t& resolution) {
+  addWholeNumber(sub, "-r,--resolution", resolution, kResolutionHelp);
+}
+
+// convexloc classify SHAPE POINTS [--method] [--resolution]
+Command addClassify(CLI::App& app) {
+  auto o = std::make_shared<ClassifyOptions>();
+  CLI::App* sub = app.add_subcommand(
       "classify", "Print inside, boundary or outside for each point, one line per point, in order");
-  classify
-      ->add_option("SHAPE", classifyOptions.shape,
-                   "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
+  sub->add_option("SHAPE", o->shape,
+                  "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
       ->required();
-  classify
-      ->add_option("POINTS", classifyOptions.points,
-                   "Points file, one point 'x y' ('x y z' for a polyhedron) per line; '-' reads "
-                   "standard input")
+  sub->add_option("POINTS", o->points,
+                  "Points file, one point 'x y' ('x y z' for a polyhedron) per line; '-' reads "
+                  "standard input")
       ->required();
-  classify->add_option("-m,--method", classifyOptions.method, kMethodHelp);
-  classify->add_option("-r,--resolution", classifyOptions.resolution, kResolutionHelp)
-      ->check(resolution)
-      ->capture_default_str();
+  sub->add_option("-m,--method", o->method, methodHelp());
+  addResolution(sub, o->resolution);
+  sub->footer(kFormat);
+  return {sub, [o] { isPolyhedronPath(o->shape) ? classify3D(*o) : classify2D(*o); }};
+}
 
-  InfoOptions infoOptions;
-  CLI::App* info =
+// convexloc info SHAPE [--method] [--resolution]
+Command addInfo(CLI::App& app) {
+  auto o = std::make_shared<InfoOptions>();
+  CLI::App* sub =
       app.add_subcommand("info", "Describe the shape and the subdivision each method builds on it");
-  info->add_option("SHAPE", infoOptions.shape,
-                   "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
+  sub->add_option("SHAPE", o->shape,
+                  "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
       ->required();
-  info->add_option("-m,--method", infoOptions.method,
-                   std::string("Report one method in detail: ") + kMethodHelp +
-                       ". Without it: a table of every method for the shape");
-  info->add_option("-r,--resolution", infoOptions.resolution, kResolutionHelp)
-      ->check(resolution)
-      ->capture_default_str();
+  sub->add_option("-m,--method", o->method,
+                  "Report one method in detail: " + methodHelp() +
+                      ". Without it: a table of every method for the shape");
+  addResolution(sub, o->resolution);
+  sub->footer(kFormat);
+  return {sub, [o] { isPolyhedronPath(o->shape) ? info3D(*o) : info2D(*o); }};
+}
 
-  CLI::App* generate =
-      app.add_subcommand("generate", "Write example polygons, polyhedra and point sets");
-  generate->require_subcommand(1);
-  GeneratePolygonOptions polygonOptions;
-  CLI::App* genPolygon = generate->add_subcommand(
+// convexloc generate polygon --kind [--n] [--seed]
+Command addGeneratePolygon(CLI::App& generate) {
+  auto o = std::make_shared<GeneratePolygonOptions>();
+  CLI::App* sub = generate.add_subcommand(
       "polygon", "Write the vertices of a convex polygon, one 'x y' per line, exact to the bit");
-  genPolygon
-      ->add_option("-k,--kind", polygonOptions.kind,
-                   "regular, random, ellipse, sliver, tiny-edges, offset, degenerate or triangle")
+  sub->add_option("-k,--kind", o->kind,
+                  "regular, random, ellipse, sliver, tiny-edges, offset, degenerate or triangle")
       ->required();
-  genPolygon->add_option("-n,--n", polygonOptions.n, "About how many vertices (at least 3)")
-      ->check(anyCount)
-      ->capture_default_str();
-  genPolygon->add_option("-s,--seed", polygonOptions.seed, "Random seed")
-      ->check(anyCount)
-      ->capture_default_str();
+  addWholeNumber(sub, "-n,--n", o->n, "About how many vertices (at least 3)");
+  addSeed(sub, o->seed);
+  return {sub, [o] { generatePolygon(*o); }};
+}
 
-  GeneratePolyhedronOptions polyhedronOptions;
-  CLI::App* genPolyhedron = generate->add_subcommand(
+// convexloc generate polyhedron --kind [--n] [--seed] [--format]
+Command addGeneratePolyhedron(CLI::App& generate) {
+  auto o = std::make_shared<GeneratePolyhedronOptions>();
+  CLI::App* sub = generate.add_subcommand(
       "polyhedron",
       "Write a convex polyhedron as OFF (or OBJ), faces counter-clockwise seen from outside, "
       "exact to the bit");
-  genPolyhedron
-      ->add_option("-k,--kind", polyhedronOptions.kind,
-                   "tetrahedron, cube, octahedron, dodecahedron, icosahedron, geodesic, "
-                   "sphere-hull, cube-hull, ellipsoid-hull, thin-slab, offset, tiny-faces or "
-                   "coplanar")
+  sub->add_option("-k,--kind", o->kind,
+                  "tetrahedron, cube, octahedron, dodecahedron, icosahedron, geodesic, "
+                  "sphere-hull, cube-hull, ellipsoid-hull, thin-slab, offset, tiny-faces or "
+                  "coplanar")
       ->required();
-  genPolyhedron
-      ->add_option("-n,--n", polyhedronOptions.n,
-                   "About how many triangles (at least 4; ignored by the platonic solids)")
-      ->check(anyCount)
-      ->capture_default_str();
-  genPolyhedron->add_option("-s,--seed", polyhedronOptions.seed, "Random seed")
-      ->check(anyCount)
-      ->capture_default_str();
-  genPolyhedron->add_option("-f,--format", polyhedronOptions.format, "off or obj")
-      ->capture_default_str();
+  addWholeNumber(sub, "-n,--n", o->n,
+                 "About how many triangles (at least 4; ignored by the platonic solids)");
+  addSeed(sub, o->seed);
+  sub->add_option("-f,--format", o->format, "off or obj")->capture_default_str();
+  return {sub, [o] { generatePolyhedron(*o); }};
+}
 
-  GeneratePointsOptions pointsOptions;
-  CLI::App* genPoints = generate->add_subcommand(
+// convexloc generate points --shape [--count] [--seed] [--near-boundary]
+Command addGeneratePoints(CLI::App& generate) {
+  auto o = std::make_shared<GeneratePointsOptions>();
+  CLI::App* sub = generate.add_subcommand(
       "points",
       "Write query points around a shape, one 'x y' ('x y z' for a polyhedron) per line, "
       "exact to the bit");
-  genPoints
-      ->add_option("--shape", pointsOptions.shape,
-                   "Polygon file or polyhedron (.off/.obj) the points are for")
+  sub->add_option("--shape", o->shape, "Polygon file or polyhedron (.off/.obj) the points are for")
       ->required();
-  genPoints->add_option("-c,--count", pointsOptions.count, "How many points")
-      ->check(anyCount)
-      ->capture_default_str();
-  genPoints->add_option("-s,--seed", pointsOptions.seed, "Random seed")
-      ->check(anyCount)
-      ->capture_default_str();
-  genPoints->add_flag("--near-boundary", pointsOptions.nearBoundary,
-                      "Hard cases: vertices, points on edges (and faces), one ulp off them "
-                      "(default: uniform in the bounding box grown by 10%)");
+  addWholeNumber(sub, "-c,--count", o->count, "How many points");
+  addSeed(sub, o->seed);
+  sub->add_flag("--near-boundary", o->nearBoundary,
+                "Hard cases: vertices, points on edges (and faces), one ulp off them "
+                "(default: uniform in the bounding box grown by 10%)");
+  return {sub, [o] { isPolyhedronPath(o->shape) ? generatePoints3D(*o) : generatePoints2D(*o); }};
+}
 
-  // after the subcommands, which would otherwise inherit it
-  app.footer(std::string(kFormat) + kExamples);
-  classify->footer(kFormat);
-  info->footer(kFormat);
+// every command, in the order the help lists them; a new command is one more line here
+std::vector<Command> addCommands(CLI::App& app) {
+  std::vector<Command> commands;
+  commands.push_back(addClassify(app));
+  commands.push_back(addInfo(app));
+  CLI::App* generate =
+      app.add_subcommand("generate", "Write example polygons, polyhedra and point sets");
+  generate->require_subcommand(1);
+  commands.push_back(addGeneratePolygon(*generate));
+  commands.push_back(addGeneratePolyhedron(*generate));
+  commands.push_back(addGeneratePoints(*generate));
+  return commands;
+}
 
+// === Running
+
+// parses the command line; the exit code when that ends the run (help, version, bad usage)
+std::optional<int> parse(CLI::App& app, int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -202,27 +246,17 @@ int run(int argc, char** argv) {
     }
     return usageError(app, e.what());
   }
+  return std::nullopt;
+}
 
+// runs the command the command line named, mapping its failure to an exit code
+int runNamed(const CLI::App& app, const std::vector<Command>& commands) {
   try {
-    if (*classify) {
-      if (isPolyhedronPath(classifyOptions.shape))
-        classify3D(classifyOptions);
-      else
-        classify2D(classifyOptions);
-    } else if (*info) {
-      if (isPolyhedronPath(infoOptions.shape))
-        info3D(infoOptions);
-      else
-        info2D(infoOptions);
-    } else if (*genPolygon) {
-      generatePolygon(polygonOptions);
-    } else if (*genPolyhedron) {
-      generatePolyhedron(polyhedronOptions);
-    } else if (*genPoints) {
-      if (isPolyhedronPath(pointsOptions.shape))
-        generatePoints3D(pointsOptions);
-      else
-        generatePoints2D(pointsOptions);
+    for (const Command& command : commands) {
+      if (*command.sub) {
+        command.action();
+        break;
+      }
     }
   } catch (const Failure& f) {
     if (f.isUsage()) return usageError(app, f.what());
@@ -232,6 +266,18 @@ int run(int argc, char** argv) {
     return usageError(app, e.what());
   }
   return kExitOk;
+}
+
+// parses the command line and runs the command it names
+int run(int argc, char** argv) {
+  CLI::App app{"convexloc: exact point location in convex polygons and polyhedra", "convexloc"};
+  app.set_version_flag("--version", "convexloc " CONVEXLOC_VERSION);
+  app.require_subcommand(1);
+  const std::vector<Command> commands = addCommands(app);
+  // after the subcommands, which would otherwise inherit it
+  app.footer(std::string(kFormat) + kExamples);
+  if (const std::optional<int> code = parse(app, argc, argv)) return *code;
+  return runNamed(app, commands);
 }
 
 }  // namespace
