@@ -52,6 +52,14 @@ std::string displayName(const std::string& path);
 // and a convexloc::UsageError into a bad-usage Failure.
 void aboutFile(const std::string& file, const std::function<void()>& fn);
 
+// "a, b, c": the names of every value of `all`, as toString writes them
+template <class T, std::size_t N>
+std::string namesOf(const T (&all)[N]) {
+  std::string names;
+  for (const T& value : all) names += (names.empty() ? "" : ", ") + std::string(toString(value));
+  return names;
+}
+
 // === Shapes
 
 // true for a path naming a polyhedron (.off or .obj, any case)

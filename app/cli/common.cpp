@@ -89,34 +89,40 @@ ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRe
 
 namespace {
 
-// "a, b, c": the names of every method of one dimension
+// how a method error names the shapes of each dimension
+struct ShapeWords {
+  const char* one;      // "a polygon"
+  const char* oneFile;  // "a polygon", with the extensions where they decide
+  const char* others;   // the other dimension's shapes: "polyhedra (.off/.obj)"
+};
+
+constexpr ShapeWords kPolygonWords{"a polygon", "a polygon", "polyhedra (.off/.obj)"};
+constexpr ShapeWords kPolyhedronWords{"a polyhedron", "a polyhedron (.off/.obj)", "polygons"};
+
+// the method `parsed` from `name`; `fallback` for no name; otherwise a bad-usage failure that
+// says whether the name belongs to the other dimension
 template <class Method, std::size_t N>
-std::string methodNames(const Method (&all)[N]) {
-  std::string names;
-  for (Method m : all) names += (names.empty() ? "" : ", ") + std::string(toString(m));
-  return names;
+Method methodOrFail(const std::string& name, std::optional<Method> parsed, bool otherDimension,
+                    Method fallback, const Method (&all)[N], const ShapeWords& words) {
+  if (name.empty()) return fallback;
+  if (parsed) return *parsed;
+  const std::string choices = namesOf(all);
+  if (otherDimension)
+    failUsage("method '" + name + "' is for " + words.others + "; for " + words.oneFile +
+              " choose one of " + choices);
+  failUsage("unknown method '" + name + "' for " + words.one + "; choose one of " + choices);
 }
 
 }  // namespace
 
 Method2D method2DOrFail(const std::string& name) {
-  if (name.empty()) return Method2D::Polar;
-  if (auto m = parseMethod2D(name)) return *m;
-  const std::string choices = methodNames(kAllMethods2D);
-  if (parseMethod3D(name))
-    failUsage("method '" + name + "' is for polyhedra (.off/.obj); for a polygon choose one of " +
-              choices);
-  failUsage("unknown method '" + name + "' for a polygon; choose one of " + choices);
+  return methodOrFail(name, parseMethod2D(name), parseMethod3D(name).has_value(), Method2D::Polar,
+                      kAllMethods2D, kPolygonWords);
 }
 
 Method3D method3DOrFail(const std::string& name) {
-  if (name.empty()) return Method3D::Cubemap;
-  if (auto m = parseMethod3D(name)) return *m;
-  const std::string choices = methodNames(kAllMethods3D);
-  if (parseMethod2D(name))
-    failUsage("method '" + name + "' is for polygons; for a polyhedron (.off/.obj) choose one of " +
-              choices);
-  failUsage("unknown method '" + name + "' for a polyhedron; choose one of " + choices);
+  return methodOrFail(name, parseMethod3D(name), parseMethod2D(name).has_value(), Method3D::Cubemap,
+                      kAllMethods3D, kPolyhedronWords);
 }
 
 // === Output

@@ -2,6 +2,7 @@
 // formats classify reads.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
@@ -24,22 +25,13 @@ std::uint64_t blockSeed(std::uint64_t seed, std::size_t b) {
   return mix.next();
 }
 
-// the kind with that name, or a bad-usage failure listing the choices
-PolygonKind kindOrFail(const std::string& name) {
-  if (auto k = parsePolygonKind(name)) return *k;
-  std::string choices;
-  for (PolygonKind k : kAllPolygonKinds)
-    choices += (choices.empty() ? "" : ", ") + std::string(toString(k));
-  failUsage("unknown polygon kind '" + name + "'; choose one of " + choices);
-}
-
-// the polyhedron kind with that name, or a bad-usage failure listing the choices
-PolyhedronKind polyhedronKindOrFail(const std::string& name) {
-  if (auto k = parsePolyhedronKind(name)) return *k;
-  std::string choices;
-  for (PolyhedronKind k : kAllPolyhedronKinds)
-    choices += (choices.empty() ? "" : ", ") + std::string(toString(k));
-  failUsage("unknown polyhedron kind '" + name + "'; choose one of " + choices);
+// the kind `parsed` from `name`, or a bad-usage failure listing every kind of `all`
+template <class Kind, std::size_t N>
+Kind kindOrFail(const std::string& name, std::optional<Kind> parsed, const Kind (&all)[N],
+                const char* shape) {
+  if (parsed) return *parsed;
+  failUsage("unknown " + std::string(shape) + " kind '" + name + "'; choose one of " +
+            namesOf(all));
 }
 
 // the header line of a point file: the command that wrote it
@@ -66,7 +58,8 @@ void writePoints(const GeneratePointsOptions& o, Make&& make) {
 }  // namespace
 
 void generatePolygon(const GeneratePolygonOptions& o) {
-  const PolygonKind kind = kindOrFail(o.kind);
+  const PolygonKind kind =
+      kindOrFail(o.kind, parsePolygonKind(o.kind), kAllPolygonKinds, "polygon");
   std::vector<Vec2> vertices;
   try {
     vertices = convexloc::generatePolygon(kind, o.n, o.seed);
@@ -86,7 +79,8 @@ void generatePolygon(const GeneratePolygonOptions& o) {
 }
 
 void generatePolyhedron(const GeneratePolyhedronOptions& o) {
-  const PolyhedronKind kind = polyhedronKindOrFail(o.kind);
+  const PolyhedronKind kind =
+      kindOrFail(o.kind, parsePolyhedronKind(o.kind), kAllPolyhedronKinds, "polyhedron");
   if (o.format != "off" && o.format != "obj")
     failUsage("unknown format '" + o.format + "'; choose off or obj");
   MeshData mesh;
