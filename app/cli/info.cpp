@@ -1,9 +1,15 @@
 // convexloc CLI — `info`: a readable report of a polygon or a polyhedron and of the
 // subdivisions each method builds on it.
+//
+// One report serves both dimensions: the method section and the table are templates over
+// the locator, and Dimension<Locator> holds the words and numbers that differ (edges or
+// faces, bisection or a walk). What a method is and costs comes from convexloc/methods.hpp.
+// Every locator is built before anything is written, so a rejected resolution leaves
+// stdout empty.
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <iterator>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,9 +17,12 @@
 #include "commands.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
+#include "convexloc/methods.hpp"
 
 namespace convexloc::cli {
 namespace {
+
+// === Text
 
 // the widest bar of the histogram, in characters
 constexpr std::size_t kBarWidth = 40;
@@ -33,18 +42,34 @@ std::string exact(double v) {
   return ec == std::errc{} ? std::string(buf, end) : format("%.17g", v);
 }
 
+// "(a, b, ...)": each coordinate exactly
+std::string exactTuple(std::initializer_list<double> coordinates) {
+  std::string text;
+  for (double c : coordinates) text.append(text.empty() ? "(" : ", ").append(exact(c));
+  text.append(")");
+  return text;
+}
+
 // "(x, y)" exactly
 std::string exact(Vec2 p) {
-  std::string s = exact(p.x);
-  s.append(", ").append(exact(p.y)).append(")");
-  return s.insert(0, 1, '(');
+  return exactTuple({p.x, p.y});
 }
 
 // "(x, y, z)" exactly
 std::string exact(Vec3 p) {
-  std::string s = exact(p.x);
-  s.append(", ").append(exact(p.y)).append(", ").append(exact(p.z)).append(")");
-  return s.insert(0, 1, '(');
+  return exactTuple({p.x, p.y, p.z});
+}
+
+// "x lo .. hi,  y lo .. hi", exactly
+std::string extent(const Box2& b) {
+  return "x " + exact(b.lo.x) + " .. " + exact(b.hi.x) + ",  y " + exact(b.lo.y) + " .. " +
+         exact(b.hi.y);
+}
+
+// "x lo .. hi,  y lo .. hi,  z lo .. hi", exactly
+std::string extent(const Box3& b) {
+  return extent(Box2{{b.lo.x, b.lo.y}, {b.hi.x, b.hi.y}}) + ",  z " + exact(b.lo.z) + " .. " +
+         exact(b.hi.z);
 }
 
 // a duration in the unit that suits it
@@ -62,37 +87,55 @@ std::string byteCount(std::size_t bytes) {
   return format("%zu bytes (%.1f MiB)", bytes, b / (1024 * 1024));
 }
 
-// how the method finds the answer, in one line
-const char* describe(Method2D m) {
-  switch (m) {
-    case Method2D::Halfplane: return "O(N): tests the point against every edge";
-    case Method2D::Wedge: return "O(log N): bisection over the fan of triangles from vertex 0";
-    case Method2D::Slab: return "O(log N): binary search over slabs at the vertices' heights";
-    case Method2D::Uniform: return "O(1): equal horizontal slabs, each listing its edges";
-    case Method2D::Polar: return "O(1): polar slabs around a centre, each listing its edges";
-  }
-  return "";
-}
-
-// the cost of one query, in O notation
-const char* cost(Method2D m) {
-  switch (m) {
-    case Method2D::Halfplane: return "O(N)";
-    case Method2D::Wedge:
-    case Method2D::Slab: return "O(log N)";
-    case Method2D::Uniform:
-    case Method2D::Polar: return "O(1)";
-  }
-  return "";
+// "O(sqrt F) expected: walks across ...": the cost, what qualifies it, and how the method works
+std::string how(const MethodInfo& info) {
+  std::string text(info.cost);
+  if (!info.costNote.empty()) text.append(" ").append(info.costNote);
+  return text.append(": ").append(info.summary);
 }
 
 // one labelled line of a report
-void field(Output& out, const char* label, const std::string& value) {
-  out.put(format("  %-17s %s\n", label, value.c_str()));
+void field(Output& out, const std::string& label, const std::string& value) {
+  out.put(format("  %-17s %s\n", label.c_str(), value.c_str()));
 }
 
+// === What differs between the dimensions
+
+// the words a report uses for one dimension's things
+struct Words {
+  const char* shape;          // "polygon"
+  const char* element;        // "edge": what a cell lists
+  const char* elements;       // "edges"
+  const char* crowdedSearch;  // how a crowded cell is searched
+  const char* resolution;     // what the table's resolution sets
+  const char* example;        // the method the table suggests to see in detail
+};
+
+// the words and numbers of a report on one dimension's locators
+template <class Locator>
+struct Dimension;
+
+template <>
+struct Dimension<Locator2D> {
+  static constexpr Words kWords{"polygon", "edge", "edges", "bisection", "resolution", "polar"};
+  static constexpr std::size_t kCrowded = kCrowdedCell;
+  static constexpr auto kCount = &Stats2D::edges;
+  static constexpr auto kBytesPer = &Stats2D::bytesPerEdge;
+};
+
+template <>
+struct Dimension<Locator3D> {
+  static constexpr Words kWords{"polyhedron",         "face",   "faces", "a walk",
+                                "cubemap resolution", "cubemap"};
+  static constexpr std::size_t kCrowded = kCrowdedCell3D;
+  static constexpr auto kCount = &Stats3D::faces;
+  static constexpr auto kBytesPer = &Stats3D::bytesPerFace;
+};
+
+// === The shapes
+
 // the polygon's section: what was kept, dropped, reversed, and its extent
-void reportPolygon(Output& out, const ConvexPolygon& polygon, const std::vector<Vec2>& input) {
+void reportShape(Output& out, const ConvexPolygon& polygon, const std::vector<Vec2>& input) {
   std::vector<Vec2> sorted = input;
   std::sort(sorted.begin(), sorted.end(),
             [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
@@ -101,7 +144,6 @@ void reportPolygon(Output& out, const ConvexPolygon& polygon, const std::vector<
   // every repeat goes; the other dropped vertices lay exactly on an edge
   const std::size_t repeated = input.size() - distinct;
   const std::size_t collinear = polygon.droppedCount() - repeated;
-  const Box2 b = polygon.bounds();
 
   out.put("Polygon\n");
   field(out, "vertices", format("%zu kept of %zu read", polygon.size(), input.size()));
@@ -111,11 +153,72 @@ void reportPolygon(Output& out, const ConvexPolygon& polygon, const std::vector<
   field(
       out, "orientation",
       polygon.wasClockwise() ? "clockwise in the file (reversed)" : "counter-clockwise, as given");
-  field(out, "bounding box",
-        "x " + exact(b.lo.x) + " .. " + exact(b.hi.x) + ",  y " + exact(b.lo.y) + " .. " +
-            exact(b.hi.y));
+  field(out, "bounding box", extent(polygon.bounds()));
   field(out, "area", format("%.10g", polygon.area()));
   out.put("\n");
+}
+
+// the polyhedron's section: what was kept, merged, reversed, and its extent
+void reportShape(Output& out, const ConvexPolyhedron& p, std::size_t verticesRead) {
+  out.put("Polyhedron\n");
+  field(out, "vertices", format("%zu kept of %zu read", p.vertexCount(), verticesRead));
+  if (p.mergedVertices() > 0 || p.unusedVertices() > 0)
+    field(out, "dropped",
+          format("%zu equal to an earlier one (merged), %zu used by no face", p.mergedVertices(),
+                 p.unusedVertices()));
+  field(out, "faces", format("%zu read, %zu triangles", p.inputFaces(), p.faceCount()));
+  if (p.flippedSlivers() > 0)
+    field(out, "slivers",
+          format("%zu zero-area triangles flipped away (the surface is unchanged)",
+                 p.flippedSlivers()));
+  field(out, "orientation",
+        p.wasInverted() ? "clockwise seen from outside in the file (reversed)"
+                        : "counter-clockwise seen from outside, as given");
+  field(out, "bounding box", extent(p.bounds()));
+  field(out, "volume", format("%.10g", p.volume()));
+  field(out, "area", format("%.10g", p.area()));
+  out.put("\n");
+}
+
+// === One method in detail
+
+// the lines only polar and uniform have: the centre and the slabs
+void reportDetails(Output& out, const Locator2D& locator, const Stats2D& s, std::uint32_t) {
+  if (const auto* polar = locator.get<PolarLocator>()) {
+    field(out, "centre",
+          exact(polar->centre()) + (s.entries == 0 ? "  (no double point lies strictly inside: "
+                                                     "every query bisects the fan)"
+                                                   : ""));
+    field(out, "slabs per octant",
+          format("%u (%u cells)", polar->slabsPerOctant(), polar->cellCount()));
+  }
+  if (const auto* uniform = locator.get<UniformLocator>())
+    field(out, "slabs", format("%u", uniform->slabCount()));
+}
+
+// the centre line of walk and cubemap
+std::string centreText(const std::optional<Vec3>& centre) {
+  if (centre) return exact(*centre);
+  return "none: no double point lies strictly inside (every query tests all faces)";
+}
+
+// the lines only walk and cubemap have: the centre, the grid and the quadtree; `asked` is the
+// resolution the user asked for (0: none)
+void reportDetails(Output& out, const Locator3D& locator, const Stats3D& s, std::uint32_t asked) {
+  if (const auto* walk = locator.get<WalkLocator>())
+    field(out, "centre", centreText(walk->centre()));
+  const auto* cube = locator.get<CubemapLocator>();
+  if (!cube) return;
+  field(out, "centre", centreText(cube->centre()));
+  if (!s.centred) return;
+  const std::uint32_t g = s.resolution;
+  std::string grid =
+      format("%u x %u per cube face (%zu base cells)", g, g, 6 * static_cast<std::size_t>(g) * g);
+  if (asked > 0 && asked != g) grid += format(", asked for %u: coarsened to fit memory", asked);
+  field(out, "grid", grid);
+  field(out, "quadtree",
+        s.maxLevel > 0 ? format("%zu nodes, refined %d levels where crowded", s.nodes, s.maxLevel)
+                       : format("%zu nodes, no cell refined", s.nodes));
 }
 
 // a text bar chart of the cells per edge (or face) count; `what` names the unit
@@ -138,248 +241,126 @@ void reportHistogram(Output& out, const Stats& s, const char* what) {
   }
 }
 
-// one method in detail
-void reportMethod(Output& out, const Locator2D& locator) {
-  const Method2D m = locator.method();
-  const Stats2D s = locator.stats();
-  out.put(format("Method %s\n", std::string(toString(m)).c_str()));
-  field(out, "how", describe(m));
-  if (const auto* polar = locator.get<PolarLocator>()) {
-    field(out, "centre",
-          exact(polar->centre()) + (s.entries == 0 ? "  (no double point lies strictly inside: "
-                                                     "every query bisects the fan)"
-                                                   : ""));
-    field(out, "slabs per octant",
-          format("%u (%u cells)", polar->slabsPerOctant(), polar->cellCount()));
-  }
-  if (const auto* uniform = locator.get<UniformLocator>())
-    field(out, "slabs", format("%u", uniform->slabCount()));
-  field(out, "edges", format("%zu", s.edges));
+// the cells' lines: how many, how full, how many crowded
+template <class Locator, class Stats>
+void reportCells(Output& out, const Stats& s) {
+  using D = Dimension<Locator>;
   if (s.cells == 0) {
     field(out, "cells", "none: this method keeps no table of cells");
-  } else {
-    field(out, "cells", format("%zu", s.cells));
-    field(out, "entries", format("%zu (edges listed, summed over the cells)", s.entries));
-    field(out, "edges per cell", format("max %zu, mean %.2f", s.maxPerCell, s.meanPerCell));
-    field(out, "crowded cells",
-          format("%zu (more than %zu edges: searched by bisection)", s.crowdedCells, kCrowdedCell));
+    return;
   }
-  field(out, "memory", byteCount(s.bytes));
-  field(out, "bytes per edge", format("%.1f", s.bytesPerEdge));
-  field(out, "build time", duration(s.buildSeconds));
-  if (s.cells > 0) reportHistogram(out, s, "edges");
-}
-
-// every method, one row each
-void reportTable(Output& out, const std::vector<Locator2D>& locators, std::uint32_t resolution) {
-  out.put(format("Methods (%s)\n", resolution ? format("resolution %u", resolution).c_str()
-                                              : "resolution chosen from the polygon"));
-  out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s %12s %11s %10s\n", "method", "query", "cells",
-                 "entries", "max", "mean", "crowded", "bytes", "bytes/edge", "build"));
-  for (const Locator2D& locator : locators) {
-    const Method2D m = locator.method();
-    const Stats2D s = locator.stats();
-    const std::string name(toString(m));
-    if (s.cells == 0) {
-      out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s", name.c_str(), cost(m), "-", "-", "-", "-",
-                     "-"));
-    } else {
-      out.put(format("  %-10s %-9s %8zu %9zu %5zu %6.2f %8zu", name.c_str(), cost(m), s.cells,
-                     s.entries, s.maxPerCell, s.meanPerCell, s.crowdedCells));
-    }
-    out.put(
-        format(" %12zu %11.1f %10s\n", s.bytes, s.bytesPerEdge, duration(s.buildSeconds).c_str()));
-  }
-  out.put(
-      format("\n'max' and 'mean' count edges per cell; a crowded cell (more than %zu edges) is\n"
-             "searched by bisection. One method in detail, with a histogram of its cells:\n"
-             "  convexloc info SHAPE --method polar\n",
-             kCrowdedCell));
-}
-
-}  // namespace
-
-void info2D(const InfoOptions& o) {
-  const bool one = !o.method.empty();
-  const Method2D method = method2DOrFail(o.method);
-  std::vector<Vec2> input;
-  const ConvexPolygon polygon = loadPolygon(o.shape, &input);
-
-  // build everything before writing, so that a rejected resolution leaves stdout empty
-  std::vector<Locator2D> locators;
-  locators.reserve(std::size(kAllMethods2D));
-  aboutFile(o.shape, [&] {
-    if (one) {
-      locators.emplace_back(polygon, method, o.resolution);
-    } else {
-      for (Method2D m : kAllMethods2D) locators.emplace_back(polygon, m, o.resolution);
-    }
-  });
-
-  Output out;
-  out.put("Shape " + displayName(o.shape) + "\n\n");
-  reportPolygon(out, polygon, input);
-  if (one)
-    reportMethod(out, locators.front());
-  else
-    reportTable(out, locators, o.resolution);
-  out.finish();
-}
-
-// === Polyhedra
-
-namespace {
-
-// how the method finds the answer, in one line
-const char* describe(Method3D m) {
-  switch (m) {
-    case Method3D::Halfspace: return "O(F): tests the point against every face plane";
-    case Method3D::Walk:
-      return "O(sqrt F) expected: walks across the faces toward the ray from the centre, then "
-             "tests one plane";
-    case Method3D::Cubemap:
-      return "O(1): a grid on each face of a cube around the centre, each cell listing the faces "
-             "it sees";
-  }
-  return "";
-}
-
-// the cost of one query, in O notation
-const char* cost(Method3D m) {
-  switch (m) {
-    case Method3D::Halfspace: return "O(F)";
-    case Method3D::Walk: return "O(sqrt F)";
-    case Method3D::Cubemap: return "O(1)";
-  }
-  return "";
-}
-
-// "x lo .. hi,  y lo .. hi,  z lo .. hi", exactly
-std::string extent(const Box3& b) {
-  return "x " + exact(b.lo.x) + " .. " + exact(b.hi.x) + ",  y " + exact(b.lo.y) + " .. " +
-         exact(b.hi.y) + ",  z " + exact(b.lo.z) + " .. " + exact(b.hi.z);
-}
-
-// the polyhedron's section: what was kept, merged, reversed, and its extent
-void reportPolyhedron(Output& out, const ConvexPolyhedron& p, std::size_t verticesRead) {
-  out.put("Polyhedron\n");
-  field(out, "vertices", format("%zu kept of %zu read", p.vertexCount(), verticesRead));
-  if (p.mergedVertices() > 0 || p.unusedVertices() > 0)
-    field(out, "dropped",
-          format("%zu equal to an earlier one (merged), %zu used by no face", p.mergedVertices(),
-                 p.unusedVertices()));
-  field(out, "faces", format("%zu read, %zu triangles", p.inputFaces(), p.faceCount()));
-  if (p.flippedSlivers() > 0)
-    field(out, "slivers",
-          format("%zu zero-area triangles flipped away (the surface is unchanged)",
-                 p.flippedSlivers()));
-  field(out, "orientation",
-        p.wasInverted() ? "clockwise seen from outside in the file (reversed)"
-                        : "counter-clockwise seen from outside, as given");
-  field(out, "bounding box", extent(p.bounds()));
-  field(out, "volume", format("%.10g", p.volume()));
-  field(out, "area", format("%.10g", p.area()));
-  out.put("\n");
-}
-
-// the centre line of walk and cubemap
-std::string centreText(const std::optional<Vec3>& centre) {
-  if (centre) return exact(*centre);
-  return "none: no double point lies strictly inside (every query tests all faces)";
+  field(out, "cells", format("%zu", s.cells));
+  field(out, "entries",
+        format("%zu (%s listed, summed over the cells)", s.entries, D::kWords.elements));
+  field(out, std::string(D::kWords.elements) + " per cell",
+        format("max %zu, mean %.2f", s.maxPerCell, s.meanPerCell));
+  field(out, "crowded cells",
+        format("%zu (more than %zu %s: searched by %s)", s.crowdedCells, D::kCrowded,
+               D::kWords.elements, D::kWords.crowdedSearch));
 }
 
 // one method in detail; `asked` is the resolution the user asked for (0: none)
-void reportMethod(Output& out, const Locator3D& locator, std::uint32_t asked) {
-  const Method3D m = locator.method();
-  const Stats3D s = locator.stats();
-  out.put(format("Method %s\n", std::string(toString(m)).c_str()));
-  field(out, "how", describe(m));
-  if (const auto* walk = locator.get<WalkLocator>())
-    field(out, "centre", centreText(walk->centre()));
-  if (const auto* cube = locator.get<CubemapLocator>()) {
-    field(out, "centre", centreText(cube->centre()));
-    if (s.centred) {
-      const std::uint32_t g = s.resolution;
-      std::string grid = format("%u x %u per cube face (%zu base cells)", g, g,
-                                6 * static_cast<std::size_t>(g) * g);
-      if (asked > 0 && asked != g) grid += format(", asked for %u: coarsened to fit memory", asked);
-      field(out, "grid", grid);
-      field(out, "quadtree",
-            s.maxLevel > 0
-                ? format("%zu nodes, refined %d levels where crowded", s.nodes, s.maxLevel)
-                : format("%zu nodes, no cell refined", s.nodes));
-    }
-  }
-  field(out, "faces", format("%zu", s.faces));
-  if (s.cells == 0) {
-    field(out, "cells", "none: this method keeps no table of cells");
-  } else {
-    field(out, "cells", format("%zu", s.cells));
-    field(out, "entries", format("%zu (faces listed, summed over the cells)", s.entries));
-    field(out, "faces per cell", format("max %zu, mean %.2f", s.maxPerCell, s.meanPerCell));
-    field(out, "crowded cells",
-          format("%zu (more than %zu faces: searched by a walk)", s.crowdedCells, kCrowdedCell3D));
-  }
+template <class Locator>
+void reportMethod(Output& out, const Locator& locator, std::uint32_t asked) {
+  using D = Dimension<Locator>;
+  const auto s = locator.stats();
+  const MethodInfo& info = methodInfo(locator.method());
+  out.put(format("Method %s\n", std::string(info.name).c_str()));
+  field(out, "how", how(info));
+  reportDetails(out, locator, s, asked);
+  field(out, D::kWords.elements, format("%zu", s.*D::kCount));
+  reportCells<Locator>(out, s);
   field(out, "memory", byteCount(s.bytes));
-  field(out, "bytes per face", format("%.1f", s.bytesPerFace));
+  field(out, std::string("bytes per ") + D::kWords.element, format("%.1f", s.*D::kBytesPer));
   field(out, "build time", duration(s.buildSeconds));
-  if (s.cells > 0) reportHistogram(out, s, "faces");
+  if (s.cells > 0) reportHistogram(out, s, D::kWords.elements);
+}
+
+// === Every method in a table
+
+// one row of the table
+template <class Locator>
+void reportRow(Output& out, const Locator& locator) {
+  using D = Dimension<Locator>;
+  const auto s = locator.stats();
+  const MethodInfo& info = methodInfo(locator.method());
+  const std::string name(info.name), cost(info.cost);
+  if (s.cells == 0) {
+    out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s", name.c_str(), cost.c_str(), "-", "-", "-",
+                   "-", "-"));
+  } else {
+    out.put(format("  %-10s %-9s %8zu %9zu %5zu %6.2f %8zu", name.c_str(), cost.c_str(), s.cells,
+                   s.entries, s.maxPerCell, s.meanPerCell, s.crowdedCells));
+  }
+  out.put(
+      format(" %12zu %11.1f %10s\n", s.bytes, s.*D::kBytesPer, duration(s.buildSeconds).c_str()));
 }
 
 // every method, one row each
-void reportTable(Output& out, const std::vector<Locator3D>& locators, std::uint32_t resolution) {
-  out.put(format("Methods (%s)\n", resolution ? format("cubemap resolution %u", resolution).c_str()
-                                              : "resolution chosen from the polyhedron"));
+template <class Locator>
+void reportTable(Output& out, const std::vector<Locator>& locators, std::uint32_t resolution) {
+  using D = Dimension<Locator>;
+  const std::string chosen = std::string("resolution chosen from the ") + D::kWords.shape;
+  out.put(format("Methods (%s)\n", resolution
+                                       ? format("%s %u", D::kWords.resolution, resolution).c_str()
+                                       : chosen.c_str()));
+  const std::string perElement = std::string("bytes/") + D::kWords.element;
   out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s %12s %11s %10s\n", "method", "query", "cells",
-                 "entries", "max", "mean", "crowded", "bytes", "bytes/face", "build"));
-  for (const Locator3D& locator : locators) {
-    const Method3D m = locator.method();
-    const Stats3D s = locator.stats();
-    const std::string name(toString(m));
-    if (s.cells == 0) {
-      out.put(format("  %-10s %-9s %8s %9s %5s %6s %8s", name.c_str(), cost(m), "-", "-", "-", "-",
-                     "-"));
-    } else {
-      out.put(format("  %-10s %-9s %8zu %9zu %5zu %6.2f %8zu", name.c_str(), cost(m), s.cells,
-                     s.entries, s.maxPerCell, s.meanPerCell, s.crowdedCells));
-    }
-    out.put(
-        format(" %12zu %11.1f %10s\n", s.bytes, s.bytesPerFace, duration(s.buildSeconds).c_str()));
-  }
+                 "entries", "max", "mean", "crowded", "bytes", perElement.c_str(), "build"));
+  for (const Locator& locator : locators) reportRow(out, locator);
   out.put(
-      format("\n'max' and 'mean' count faces per cell; a crowded cell (more than %zu faces) is\n"
-             "searched by a walk. One method in detail, with a histogram of its cells:\n"
-             "  convexloc info SHAPE --method cubemap\n",
-             kCrowdedCell3D));
+      format("\n'max' and 'mean' count %s per cell; a crowded cell (more than %zu %s) is\n"
+             "searched by %s. One method in detail, with a histogram of its cells:\n"
+             "  convexloc info SHAPE --method %s\n",
+             D::kWords.elements, D::kCrowded, D::kWords.elements, D::kWords.crowdedSearch,
+             D::kWords.example));
 }
 
-}  // namespace
+// === The command, for either dimension
 
-void info3D(const InfoOptions& o) {
+// Builds the locators `o` asks for on `shape` (`method` alone when --method was given, else
+// every one of `all`), then writes the report: the shape's section by `reportShapeTo`, then
+// the method in detail or the table.
+template <class Locator, class Shape, class Method, std::size_t N, class ShapeSection>
+void report(const InfoOptions& o, const Shape& shape, Method method, const Method (&all)[N],
+            ShapeSection&& reportShapeTo) {
   const bool one = !o.method.empty();
-  const Method3D method = method3DOrFail(o.method);
-  std::size_t verticesRead = 0;
-  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead);
-
-  // build everything before writing, so that a rejected resolution leaves stdout empty
-  std::vector<Locator3D> locators;
-  locators.reserve(std::size(kAllMethods3D));
+  std::vector<Locator> locators;
+  locators.reserve(N);
   aboutFile(o.shape, [&] {
     if (one) {
-      locators.emplace_back(polyhedron, method, o.resolution);
+      locators.emplace_back(shape, method, o.resolution);
     } else {
-      for (Method3D m : kAllMethods3D) locators.emplace_back(polyhedron, m, o.resolution);
+      for (Method m : all) locators.emplace_back(shape, m, o.resolution);
     }
   });
 
   Output out;
   out.put("Shape " + displayName(o.shape) + "\n\n");
-  reportPolyhedron(out, polyhedron, verticesRead);
+  reportShapeTo(out);
   if (one)
     reportMethod(out, locators.front(), o.resolution);
   else
     reportTable(out, locators, o.resolution);
   out.finish();
+}
+
+}  // namespace
+
+void info2D(const InfoOptions& o) {
+  const Method2D method = method2DOrFail(o.method);
+  std::vector<Vec2> input;
+  const ConvexPolygon polygon = loadPolygon(o.shape, &input);
+  report<Locator2D>(o, polygon, method, kAllMethods2D,
+                    [&](Output& out) { reportShape(out, polygon, input); });
+}
+
+void info3D(const InfoOptions& o) {
+  const Method3D method = method3DOrFail(o.method);
+  std::size_t verticesRead = 0;
+  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead);
+  report<Locator3D>(o, polyhedron, method, kAllMethods3D,
+                    [&](Output& out) { reportShape(out, polyhedron, verticesRead); });
 }
 
 }  // namespace convexloc::cli

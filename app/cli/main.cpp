@@ -21,6 +21,8 @@
 
 #include "commands.hpp"
 #include "convexloc/error.hpp"
+#include "convexloc/generate2d.hpp"
+#include "convexloc/generate3d.hpp"
 #include "convexloc/methods.hpp"
 
 #ifndef CONVEXLOC_VERSION
@@ -30,16 +32,28 @@
 namespace convexloc::cli {
 namespace {
 
+// "a, b or c": `text` of each value of `all`
+template <class T, std::size_t N, class Text>
+std::string listWithOr(const T (&all)[N], Text&& text) {
+  std::string list;
+  for (std::size_t i = 0; i < N; ++i)
+    list.append(i == 0 ? "" : i + 1 == N ? " or " : ", ").append(text(all[i]));
+  return list;
+}
+
 // "a O(N), b O(log N) or c O(1)": every method of one dimension with its cost
 template <class Method, std::size_t N>
 std::string methodsWithCosts(const Method (&all)[N]) {
-  std::string text;
-  for (std::size_t i = 0; i < N; ++i) {
-    const MethodInfo& info = methodInfo(all[i]);
-    text.append(i == 0 ? "" : i + 1 == N ? " or " : ", ").append(info.name).append(" ");
-    text.append(info.cost);
-  }
-  return text;
+  return listWithOr(all, [](Method m) {
+    const MethodInfo& info = methodInfo(m);
+    return std::string(info.name) + " " + std::string(info.cost);
+  });
+}
+
+// "a, b or c": every kind a generator makes
+template <class Kind, std::size_t N>
+std::string kindsOf(const Kind (&all)[N]) {
+  return listWithOr(all, [](Kind k) { return std::string(toString(k)); });
 }
 
 // what --method takes, for both kinds of shape
@@ -111,13 +125,39 @@ int usageError(const CLI::App& app, const std::string& message) {
   return kExitBadUsage;
 }
 
-// === Commands: one small function each, registering its subcommand and what it runs
+// === Commands: one small function each, declaring its subcommand and what it runs
 
 // a subcommand, and what runs when the command line names it
 struct Command {
   CLI::App* sub = nullptr;
   std::function<void()> action;
 };
+
+// A subcommand being declared, and the options the command line fills for it; they live as
+// long as the action that reads them.
+template <class Options>
+struct Declared {
+  CLI::App* sub = nullptr;
+  std::shared_ptr<Options> options = std::make_shared<Options>();
+  // the command that runs `action(options)` when the command line names it
+  template <class Action>
+  Command runs(Action action) const {
+    return {sub, [o = options, action] { action(*o); }};
+  }
+};
+
+// declares the subcommand `name` of `parent`, with options at their defaults
+template <class Options>
+Declared<Options> declare(CLI::App& parent, const std::string& name,
+                          const std::string& description) {
+  return {parent.add_subcommand(name, description)};
+}
+
+// the action that runs the 3D half for a polyhedron SHAPE (.off/.obj), else the 2D half
+template <class Options>
+auto byDimension(void (*run2D)(const Options&), void (*run3D)(const Options&)) {
+  return [run2D, run3D](const Options& o) { isPolyhedronPath(o.shape) ? run3D(o) : run2D(o); };
+}
 
 // a whole-number option whose default the help shows; at most the largest T
 template <class T>
@@ -139,85 +179,88 @@ void addResolution(CLI::App* sub, std::uint32_t& resolution) {
 
 // convexloc classify SHAPE POINTS [--method] [--resolution]
 Command addClassify(CLI::App& app) {
-  auto o = std::make_shared<ClassifyOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "classify", "Print inside, boundary or outside for each point, one line per point, in order");
-  sub->add_option("SHAPE", o->shape,
-                  "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
+  const auto c = declare<ClassifyOptions>(
+      app, "classify",
+      "Print inside, boundary or outside for each point, one line per point, in order");
+  c.sub
+      ->add_option("SHAPE", c.options->shape,
+                   "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
       ->required();
-  sub->add_option("POINTS", o->points,
-                  "Points file, one point 'x y' ('x y z' for a polyhedron) per line; '-' reads "
-                  "standard input")
+  c.sub
+      ->add_option("POINTS", c.options->points,
+                   "Points file, one point 'x y' ('x y z' for a polyhedron) per line; '-' reads "
+                   "standard input")
       ->required();
-  sub->add_option("-m,--method", o->method, methodHelp());
-  addResolution(sub, o->resolution);
-  sub->footer(kFormat);
-  return {sub, [o] { isPolyhedronPath(o->shape) ? classify3D(*o) : classify2D(*o); }};
+  c.sub->add_option("-m,--method", c.options->method, methodHelp());
+  addResolution(c.sub, c.options->resolution);
+  c.sub->footer(kFormat);
+  return c.runs(byDimension(classify2D, classify3D));
 }
 
 // convexloc info SHAPE [--method] [--resolution]
 Command addInfo(CLI::App& app) {
-  auto o = std::make_shared<InfoOptions>();
-  CLI::App* sub =
-      app.add_subcommand("info", "Describe the shape and the subdivision each method builds on it");
-  sub->add_option("SHAPE", o->shape,
-                  "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
+  const auto c = declare<InfoOptions>(
+      app, "info", "Describe the shape and the subdivision each method builds on it");
+  c.sub
+      ->add_option("SHAPE", c.options->shape,
+                   "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
       ->required();
-  sub->add_option("-m,--method", o->method,
-                  "Report one method in detail: " + methodHelp() +
-                      ". Without it: a table of every method for the shape");
-  addResolution(sub, o->resolution);
-  sub->footer(kFormat);
-  return {sub, [o] { isPolyhedronPath(o->shape) ? info3D(*o) : info2D(*o); }};
+  c.sub->add_option("-m,--method", c.options->method,
+                    "Report one method in detail: " + methodHelp() +
+                        ". Without it: a table of every method for the shape");
+  addResolution(c.sub, c.options->resolution);
+  c.sub->footer(kFormat);
+  return c.runs(byDimension(info2D, info3D));
+}
+
+// declares the generator `name` of a shape: its --kind (required), --n and --seed
+template <class Options, class Kind, std::size_t N>
+Declared<Options> declareShapeGenerator(CLI::App& generate, const char* name,
+                                        const char* description, const Kind (&kinds)[N],
+                                        const char* sizeHelp) {
+  auto c = declare<Options>(generate, name, description);
+  c.sub->add_option("-k,--kind", c.options->kind, kindsOf(kinds))->required();
+  addWholeNumber(c.sub, "-n,--n", c.options->n, sizeHelp);
+  addSeed(c.sub, c.options->seed);
+  return c;
 }
 
 // convexloc generate polygon --kind [--n] [--seed]
 Command addGeneratePolygon(CLI::App& generate) {
-  auto o = std::make_shared<GeneratePolygonOptions>();
-  CLI::App* sub = generate.add_subcommand(
-      "polygon", "Write the vertices of a convex polygon, one 'x y' per line, exact to the bit");
-  sub->add_option("-k,--kind", o->kind,
-                  "regular, random, ellipse, sliver, tiny-edges, offset, degenerate or triangle")
-      ->required();
-  addWholeNumber(sub, "-n,--n", o->n, "About how many vertices (at least 3)");
-  addSeed(sub, o->seed);
-  return {sub, [o] { generatePolygon(*o); }};
+  return declareShapeGenerator<GeneratePolygonOptions>(
+             generate, "polygon",
+             "Write the vertices of a convex polygon, one 'x y' per line, exact to the bit",
+             kAllPolygonKinds, "About how many vertices (at least 3)")
+      .runs(generatePolygon);
 }
 
 // convexloc generate polyhedron --kind [--n] [--seed] [--format]
 Command addGeneratePolyhedron(CLI::App& generate) {
-  auto o = std::make_shared<GeneratePolyhedronOptions>();
-  CLI::App* sub = generate.add_subcommand(
-      "polyhedron",
+  const auto c = declareShapeGenerator<GeneratePolyhedronOptions>(
+      generate, "polyhedron",
       "Write a convex polyhedron as OFF (or OBJ), faces counter-clockwise seen from outside, "
-      "exact to the bit");
-  sub->add_option("-k,--kind", o->kind,
-                  "tetrahedron, cube, octahedron, dodecahedron, icosahedron, geodesic, "
-                  "sphere-hull, cube-hull, ellipsoid-hull, thin-slab, offset, tiny-faces or "
-                  "coplanar")
-      ->required();
-  addWholeNumber(sub, "-n,--n", o->n,
-                 "About how many triangles (at least 4; ignored by the platonic solids)");
-  addSeed(sub, o->seed);
-  sub->add_option("-f,--format", o->format, "off or obj")->capture_default_str();
-  return {sub, [o] { generatePolyhedron(*o); }};
+      "exact to the bit",
+      kAllPolyhedronKinds, "About how many triangles (at least 4; ignored by the platonic solids)");
+  c.sub->add_option("-f,--format", c.options->format, "off or obj")->capture_default_str();
+  return c.runs(generatePolyhedron);
 }
 
 // convexloc generate points --shape [--count] [--seed] [--near-boundary]
 Command addGeneratePoints(CLI::App& generate) {
-  auto o = std::make_shared<GeneratePointsOptions>();
-  CLI::App* sub = generate.add_subcommand(
-      "points",
+  const auto c = declare<GeneratePointsOptions>(
+      generate, "points",
       "Write query points around a shape, one 'x y' ('x y z' for a polyhedron) per line, "
       "exact to the bit");
-  sub->add_option("--shape", o->shape, "Polygon file or polyhedron (.off/.obj) the points are for")
+  c.sub
+      ->add_option("--shape", c.options->shape,
+                   "Polygon file or polyhedron (.off/.obj) the points are for")
       ->required();
-  addWholeNumber(sub, "-c,--count", o->count, "How many points");
-  addSeed(sub, o->seed);
-  sub->add_flag("--near-boundary", o->nearBoundary,
-                "Hard cases: vertices, points on edges (and faces), one ulp off them "
-                "(default: uniform in the bounding box grown by 10%)");
-  return {sub, [o] { isPolyhedronPath(o->shape) ? generatePoints3D(*o) : generatePoints2D(*o); }};
+  addWholeNumber(c.sub, "-c,--count", c.options->count, "How many points");
+  addSeed(c.sub, c.options->seed);
+  c.sub->add_flag("--near-boundary", c.options->nearBoundary,
+                  "Hard cases: vertices, points on edges (and faces), one ulp off them "
+                  "(default: uniform in the bounding box grown by 10%)");
+  return c.runs(byDimension(generatePoints2D, generatePoints3D));
 }
 
 // every command, in the order the help lists them; a new command is one more line here
