@@ -10,11 +10,12 @@
 #include <sys/stat.h>
 
 #include "convexloc/error.hpp"
+#include "detail/text_scan.hpp"
 
 namespace convexloc {
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+using detail::isBlank;
 
 // a short, printable quote of the text at the start of s, for messages
 std::string quote(std::string_view s) {
@@ -68,48 +69,24 @@ double parseNumber(std::string_view s, std::size_t& pos, std::size_t lineNo) {
   return v;
 }
 
-}  // namespace
-
-namespace {
-
-// parseRow on a line whose line ending is already gone
-bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* out);
-
-}  // namespace
-
-bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) {
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  return parseFields(line, lineNo, dims, out);
+// the first position at or after `pos` that holds no blank
+std::size_t skipBlanks(std::string_view line, std::size_t pos) {
+  while (pos < line.size() && isBlank(line[pos])) ++pos;
+  return pos;
 }
 
-namespace {
+// true when nothing but a comment is left from `pos`
+bool atEnd(std::string_view line, std::size_t pos) {
+  return pos == line.size() || line[pos] == '#';
+}
 
-bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* out) {
-  std::size_t pos = 0;
-  while (pos < line.size() && isBlank(line[pos])) ++pos;
-  if (pos == line.size() || line[pos] == '#') return false;
-  for (int k = 0; k < dims; ++k) {
-    if (k > 0) {
-      std::size_t before = pos;
-      while (pos < line.size() && isBlank(line[pos])) ++pos;
-      if (pos < line.size() && line[pos] == ',') {
-        ++pos;
-        while (pos < line.size() && isBlank(line[pos])) ++pos;
-      }
-      if (pos == line.size() || line[pos] == '#')
-        throw ParseError("expected " + std::to_string(dims) + " numbers, found " +
-                             std::to_string(k),
-                         lineNo);
-      if (pos == before)
-        throw ParseError("numbers must be separated by whitespace or a comma", lineNo);
-    }
-    out[k] = parseNumber(line, pos, lineNo);
-  }
-  while (pos < line.size() && isBlank(line[pos])) ++pos;
-  if (pos == line.size() || line[pos] == '#') return true;
+// the complaint about the text at `pos`, after the last of `dims` numbers: one number too
+// many, or other text
+[[noreturn]] void rejectExtra(std::string_view line, std::size_t pos, std::size_t lineNo,
+                              int dims) {
   std::size_t extra = pos;
   if (line[extra] == ',') ++extra;
-  while (extra < line.size() && isBlank(line[extra])) ++extra;
+  extra = skipBlanks(line, extra);
   std::size_t probe = extra;
   bool number = true;
   try {
@@ -117,14 +94,41 @@ bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* ou
   } catch (const ParseError&) {
     number = false;
   }
-  if (number)
-    throw ParseError("expected " + std::to_string(dims) + " numbers, found more", lineNo);
-  throw ParseError("unexpected text after " + std::to_string(dims) + " numbers: " +
-                       quote(line.substr(extra)),
-                   lineNo);
+  if (number) throw ParseError("expected " + std::to_string(dims) + " numbers, found more", lineNo);
+  throw ParseError(
+      "unexpected text after " + std::to_string(dims) + " numbers: " + quote(line.substr(extra)),
+      lineNo);
+}
+
+// parseRow on a line whose line ending is already gone
+bool parseFields(std::string_view line, std::size_t lineNo, int dims, double* out) {
+  std::size_t pos = skipBlanks(line, 0);
+  if (atEnd(line, pos)) return false;
+  for (int k = 0; k < dims; ++k) {
+    if (k > 0) {
+      // the separator: blanks, one optional comma, blanks; at least one of them
+      const std::size_t before = pos;
+      pos = skipBlanks(line, pos);
+      if (pos < line.size() && line[pos] == ',') pos = skipBlanks(line, pos + 1);
+      if (atEnd(line, pos))
+        throw ParseError(
+            "expected " + std::to_string(dims) + " numbers, found " + std::to_string(k), lineNo);
+      if (pos == before)
+        throw ParseError("numbers must be separated by whitespace or a comma", lineNo);
+    }
+    out[k] = parseNumber(line, pos, lineNo);
+  }
+  pos = skipBlanks(line, pos);
+  if (!atEnd(line, pos)) rejectExtra(line, pos, lineNo, dims);
+  return true;
 }
 
 }  // namespace
+
+bool parseRow(std::string_view line, std::size_t lineNo, int dims, double* out) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  return parseFields(line, lineNo, dims, out);
+}
 
 LineReader::LineReader(std::FILE* file) : file_(file), buf_(1 << 16) {}
 
@@ -183,7 +187,8 @@ bool LineReader::fill() {
   std::size_t got = std::fread(buf_.data() + end_, 1, buf_.size() - end_, file_);
   end_ += got;
   if (got == 0) {
-    if (std::ferror(file_)) throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
+    if (std::ferror(file_))
+      throw Error(std::string("read error: ") + std::strerror(errno), line_ + 1);
     eof_ = true;
     return false;
   }
@@ -202,32 +207,49 @@ bool RowReader::next(double* out) {
 
 InputFile::InputFile(const std::string& path) {
   if (path == "-") {
-    f_ = stdin;
+    file_ = stdin;
     return;
   }
   struct stat info {};
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     throw Error("cannot open: it is a directory, not a file");
-  f_ = std::fopen(path.c_str(), "rb");
-  if (!f_) throw Error(std::string("cannot open: ") + std::strerror(errno));
+  file_ = std::fopen(path.c_str(), "rb");
+  if (!file_) throw Error(std::string("cannot open: ") + std::strerror(errno));
   owned_ = true;
 }
 
 InputFile::~InputFile() {
-  if (owned_) std::fclose(f_);
+  if (owned_) std::fclose(file_);
 }
 
-PointList readPoints2D(const std::string& path) {
+namespace {
+
+// every row of the point file at `path`, `Dims` numbers each, as points
+template <class Point, int Dims>
+PointListOf<Point> readPoints(const std::string& path) {
   InputFile in(path);
-  RowReader reader(in.get(), 2);
-  PointList out;
-  double row[2];
+  RowReader reader(in.get(), Dims);
+  PointListOf<Point> out;
+  double row[Dims];
   while (reader.next(row)) {
-    out.points.push_back({row[0], row[1]});
+    if constexpr (Dims == 2)
+      out.points.push_back({row[0], row[1]});
+    else
+      out.points.push_back({row[0], row[1], row[2]});
     out.lines.push_back(reader.line());
   }
   out.lastLine = reader.line();
   return out;
+}
+
+}  // namespace
+
+PointList readPoints2D(const std::string& path) {
+  return readPoints<Vec2, 2>(path);
+}
+
+PointList3D readPoints3D(const std::string& path) {
+  return readPoints<Vec3, 3>(path);
 }
 
 }  // namespace convexloc

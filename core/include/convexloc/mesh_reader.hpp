@@ -1,4 +1,5 @@
-// convexloc — polyhedron files: OFF and OBJ in, OFF and OBJ out, and 3D point files.
+// convexloc — polyhedron files: OFF and OBJ in, OFF and OBJ out. 3D point files are read by
+// text_reader.hpp (readPoints3D), included here.
 //
 // Readers are strict and stream in constant memory beyond what the file holds: a count in
 // a header is checked against the limits and never used to allocate. Every ParseError
@@ -15,6 +16,7 @@
 
 #include "convexloc/geometry.hpp"
 #include "convexloc/polyhedron.hpp"
+#include "convexloc/text_reader.hpp"
 
 namespace convexloc {
 
@@ -56,14 +58,5 @@ MeshData toMesh(const ConvexPolyhedron& polyhedron);
 // the same double. Throws Error on a write failure.
 void writeOff(std::FILE* out, const MeshData& mesh);
 void writeObj(std::FILE* out, const MeshData& mesh);
-
-// Every 3D point of a point file (3 numbers per line, as text_reader.hpp reads them), with
-// the line each came from.
-struct PointList3D {
-  std::vector<Vec3> points;
-  std::vector<std::size_t> lines;
-  std::size_t lastLine = 0;  // the number of lines read
-};
-PointList3D readPoints3D(const std::string& path);
 
 }  // namespace convexloc
