@@ -81,6 +81,7 @@ Method3D method3DOrFail(const std::string& name);
 
 // === Options, one struct per subcommand
 
+// `classify SHAPE POINTS`: where each point lies
 struct ClassifyOptions {
   std::string shape;
   std::string points;
@@ -88,18 +89,21 @@ struct ClassifyOptions {
   std::uint32_t resolution = 0;  // 0: chosen from the shape
 };
 
+// `info SHAPE`: the shape and the subdivisions of its methods
 struct InfoOptions {
   std::string shape;
   std::string method;  // empty: every method, in a table
   std::uint32_t resolution = 0;
 };
 
+// `generate polygon`: a convex polygon of a kind
 struct GeneratePolygonOptions {
   std::string kind;
   std::size_t n = 16;
   std::uint64_t seed = 1;
 };
 
+// `generate polyhedron`: a convex polyhedron of a kind, as OFF or OBJ
 struct GeneratePolyhedronOptions {
   std::string kind;
   std::size_t n = 100;
@@ -107,6 +111,7 @@ struct GeneratePolyhedronOptions {
   std::string format = "off";
 };
 
+// `generate points`: query points around a shape
 struct GeneratePointsOptions {
   std::string shape;
   std::size_t count = 1000;

@@ -3,7 +3,9 @@
 // This file only parses the command line (CLI11) and maps every outcome to an exit code:
 // 0 done, 1 bad input (the message names the file and line), 2 bad usage (with the usage).
 // The commands live in classify.cpp, info.cpp and generate.cpp; a SHAPE ending in .off or
-// .obj is a polyhedron and takes the 3D half of each.
+// .obj is a polyhedron and takes the 3D half of each. Each command is declared here by one
+// small function (its subcommand, its options, the action it runs), and addCommands lists
+// them in the order the help shows.
 #include <CLI/CLI.hpp>
 
 #include <charconv>

@@ -1,4 +1,9 @@
-// convexloc — strict OFF and OBJ readers, writers, and 3D point files.
+// convexloc — strict OFF and OBJ readers, and the writers.
+//
+// A reader takes one record per line through LineReader (constant memory, the line limit)
+// and numbers through parseRow (the point files' decimal rules), so a mesh file and a point
+// file agree on what a number and a line are. Counts are checked against kMaxMeshElements
+// before anything grows; every index is range-checked here, the geometry by ConvexPolyhedron.
 #include "convexloc/mesh_reader.hpp"
 
 #include <algorithm>
