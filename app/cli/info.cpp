@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "commands.hpp"
@@ -182,13 +183,25 @@ void reportShape(Output& out, const ConvexPolyhedron& p, std::size_t verticesRea
 
 // === One method in detail
 
+// the polar centre as reported, whether the locator gives a point or an optional one: without
+// one, vertex 0, the fan's apex where queries start
+template <class Centre>
+Vec2 reportedCentre(const Centre& centre, Vec2 apex) {
+  if constexpr (std::is_same_v<Centre, Vec2>)
+    return centre;
+  else
+    return centre.value_or(apex);
+}
+
 // the lines only polar and uniform have: the centre and the slabs
-void reportDetails(Output& out, const Locator2D& locator, const Stats2D& s, std::uint32_t) {
+void reportDetails(Output& out, const Locator2D& locator, const ConvexPolygon& polygon,
+                   const Stats2D& s, std::uint32_t) {
   if (const auto* polar = locator.get<PolarLocator>()) {
+    const Vec2 centre = reportedCentre(polar->centre(), polygon.vertex(0));
     field(out, "centre",
-          exact(polar->centre()) + (s.entries == 0 ? "  (no double point lies strictly inside: "
-                                                     "every query bisects the fan)"
-                                                   : ""));
+          exact(centre) + (s.entries == 0 ? "  (no double point lies strictly inside: "
+                                            "every query bisects the fan)"
+                                          : ""));
     field(out, "slabs per octant",
           format("%u (%u cells)", polar->slabsPerOctant(), polar->cellCount()));
   }
@@ -204,7 +217,8 @@ std::string centreText(const std::optional<Vec3>& centre) {
 
 // the lines only walk and cubemap have: the centre, the grid and the quadtree; `asked` is the
 // resolution the user asked for (0: none)
-void reportDetails(Output& out, const Locator3D& locator, const Stats3D& s, std::uint32_t asked) {
+void reportDetails(Output& out, const Locator3D& locator, const ConvexPolyhedron&, const Stats3D& s,
+                   std::uint32_t asked) {
   if (const auto* walk = locator.get<WalkLocator>())
     field(out, "centre", centreText(walk->centre()));
   const auto* cube = locator.get<CubemapLocator>();
@@ -259,15 +273,15 @@ void reportCells(Output& out, const Stats& s) {
                D::kWords.elements, D::kWords.crowdedSearch));
 }
 
-// one method in detail; `asked` is the resolution the user asked for (0: none)
-template <class Locator>
-void reportMethod(Output& out, const Locator& locator, std::uint32_t asked) {
+// one method in detail, built on `shape`; `asked` is the resolution the user asked for (0: none)
+template <class Locator, class Shape>
+void reportMethod(Output& out, const Locator& locator, const Shape& shape, std::uint32_t asked) {
   using D = Dimension<Locator>;
   const auto s = locator.stats();
   const MethodInfo& info = methodInfo(locator.method());
   out.put(format("Method %s\n", std::string(info.name).c_str()));
   field(out, "how", how(info));
-  reportDetails(out, locator, s, asked);
+  reportDetails(out, locator, shape, s, asked);
   field(out, D::kWords.elements, format("%zu", s.*D::kCount));
   reportCells<Locator>(out, s);
   field(out, "memory", byteCount(s.bytes));
@@ -339,7 +353,7 @@ void report(const InfoOptions& o, const Shape& shape, Method method, const Metho
   out.put("Shape " + displayName(o.shape) + "\n\n");
   reportShapeTo(out);
   if (one)
-    reportMethod(out, locators.front(), o.resolution);
+    reportMethod(out, locators.front(), shape, o.resolution);
   else
     reportTable(out, locators, o.resolution);
   out.finish();
