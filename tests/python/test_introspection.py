@@ -83,6 +83,8 @@ def stub_names():
             own = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
             own |= {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
             for base in node.bases:
+                if isinstance(base, ast.Subscript):  # a generic base: _Locator[...]
+                    base = base.value
                 if isinstance(base, ast.Name):
                     own |= members.get(base.id, set())
             members[node.name] = own

@@ -53,28 +53,31 @@ py::array_t<bool> containsIn(const Shape& shape, const py::object& points, bool 
   return insideOf(codes, boundary);
 }
 
+// Defines `name`(shape, points, *, boundary=True, threads=0): makes the shape when it is
+// not one already (with `make`), then answers with Locator.
+template <class Locator, class Point, class Shape, class Make>
+void defineContains(py::module_& m, const char* name, const char* shapeArg, Make make,
+                    const char* doc) {
+  m.def(
+      name,
+      [make](const py::object& shape, const py::object& points, bool boundary, long threads) {
+        std::optional<Shape> made;
+        return containsIn<Locator, Point>(make(shape, made), points, boundary, threads);
+      },
+      py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("boundary") = true,
+      py::arg("threads") = 0, doc);
+}
+
 }  // namespace
 
 void bindConveniences(py::module_& m) {
-  m.def(
-      "contains",
-      [](const py::object& polygon, const py::object& points, bool boundary, long threads) {
-        std::optional<ConvexPolygon> made;
-        return containsIn<PolarLocator, Vec2>(polygonOf(polygon, made), points, boundary, threads);
-      },
-      py::arg("polygon_vertices"), py::arg("points"), py::kw_only(), py::arg("boundary") = true,
-      py::arg("threads") = 0,
+  defineContains<PolarLocator, Vec2, ConvexPolygon>(
+      m, "contains", "polygon_vertices", &polygonOf,
       "For each of the (M, 2) points, whether it lies in the convex polygon (its (N, 2) "
       "vertices, or a Polygon): an (M,) bool array, exact. A point on the boundary counts "
       "unless boundary=False. Builds a PolarLocator, then locates the batch.");
-  m.def(
-      "hull_contains",
-      [](const py::object& cloud, const py::object& points, bool boundary, long threads) {
-        std::optional<ConvexPolyhedron> made;
-        return containsIn<CubemapLocator, Vec3>(hullOf(cloud, made), points, boundary, threads);
-      },
-      py::arg("cloud"), py::arg("points"), py::kw_only(), py::arg("boundary") = true,
-      py::arg("threads") = 0,
+  defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
+      m, "hull_contains", "cloud", &hullOf,
       "For each of the (M, 3) points, whether it lies in the convex hull of the (K, 3) cloud "
       "(or in a Polyhedron): an (M,) bool array, exact for the hull Qhull gives. A point on "
       "the boundary counts unless boundary=False. Builds a CubemapLocator, then locates.");

@@ -23,35 +23,18 @@ namespace convexloc::python {
 
 // what a dimension's locators are built from and locate
 template <class Method>
-struct Dimension;
-template <>
-struct Dimension<Method2D> {
-  using Shape = ConvexPolygon;
-  using Point = Vec2;
-  static constexpr const char* kShape = "polygon";
-  static constexpr const char* kColumns = "locate_xy";
-};
-template <>
-struct Dimension<Method3D> {
-  using Shape = ConvexPolyhedron;
-  using Point = Vec3;
-  static constexpr const char* kShape = "polyhedron";
-  static constexpr const char* kColumns = "locate_xyz";
+struct Dimension {
+  static constexpr bool kPlanar = std::is_same_v<Method, Method2D>;
+  using Shape = std::conditional_t<kPlanar, ConvexPolygon, ConvexPolyhedron>;
+  using Point = std::conditional_t<kPlanar, Vec2, Vec3>;
+  static constexpr const char* kShape = kPlanar ? "polygon" : "polyhedron";
+  static constexpr const char* kColumns = kPlanar ? "locate_xy" : "locate_xyz";
 };
 
 // text that lives as long as the module (pybind11 keeps some docstrings by pointer)
 inline const char* keep(std::string text) {
   static std::list<std::string> kept;
   return kept.emplace_back(std::move(text)).c_str();
-}
-
-// a centre as (x, y[, z]), or None: accepts a point or an optional one
-template <class Centre>
-py::object centreToPython(const Centre& centre) {
-  if constexpr (std::is_same_v<Centre, Vec2> || std::is_same_v<Centre, Vec3>)
-    return toPython(centre);
-  else
-    return centre ? py::object(toPython(*centre)) : py::object(py::none());
 }
 
 // the resolution argument, checked
@@ -145,6 +128,13 @@ void defineIntrospection(py::class_<Locator>& c, Method method) {
   const std::string name(methodInfo(method).name);
   c.def_property_readonly_static(
       "method", [name](const py::object&) { return name; }, "the method's name");
+}
+
+// the read-only property `centre` of a locator that has one
+template <class Locator>
+void defineCentre(py::class_<Locator>& c, const char* doc) {
+  c.def_property_readonly(
+      "centre", [](const Locator& l) { return centreToPython(l.centre()); }, doc);
 }
 
 // The Python class for `Locator`, which implements `method`.

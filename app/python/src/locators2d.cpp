@@ -9,10 +9,9 @@ void bindLocators2D(py::module_& m) {
   bindLocator<SlabLocator>(m, "SlabLocator", Method2D::Slab);
   bindLocator<UniformLocator>(m, "UniformLocator", Method2D::Uniform)
       .def_property_readonly("slab_count", &UniformLocator::slabCount, "the number of slabs");
-  bindLocator<PolarLocator>(m, "PolarLocator", Method2D::Polar)
-      .def_property_readonly(
-          "centre", [](const PolarLocator& l) { return centreToPython(l.centre()); },
-          "(x, y): the centre of the polar slabs, strictly inside the polygon")
+  auto polar = bindLocator<PolarLocator>(m, "PolarLocator", Method2D::Polar);
+  defineCentre(polar, "(x, y): the centre of the polar slabs, strictly inside the polygon");
+  polar
       .def_property_readonly("slabs_per_octant", &PolarLocator::slabsPerOctant,
                              "the resolution: slabs in each of the 8 octants")
       .def_property_readonly(

@@ -5,14 +5,11 @@ namespace convexloc::python {
 
 void bindLocators3D(py::module_& m) {
   bindLocator<HalfspaceLocator>(m, "HalfspaceLocator", Method3D::Halfspace);
-  bindLocator<WalkLocator>(m, "WalkLocator", Method3D::Walk)
-      .def_property_readonly(
-          "centre", [](const WalkLocator& l) { return centreToPython(l.centre()); },
-          "(x, y, z) strictly inside, or None (then every query tests all faces)");
-  bindLocator<CubemapLocator>(m, "CubemapLocator", Method3D::Cubemap)
-      .def_property_readonly(
-          "centre", [](const CubemapLocator& l) { return centreToPython(l.centre()); },
-          "(x, y, z): the centre of the cube map, or None (then there are no cells)")
+  auto walk = bindLocator<WalkLocator>(m, "WalkLocator", Method3D::Walk);
+  defineCentre(walk, "(x, y, z) strictly inside, or None (then every query tests all faces)");
+  auto cubemap = bindLocator<CubemapLocator>(m, "CubemapLocator", Method3D::Cubemap);
+  defineCentre(cubemap, "(x, y, z): the centre of the cube map, or None (then no cells)");
+  cubemap
       .def_property_readonly("resolution", &CubemapLocator::resolution,
                              "G: the base grid is G x G on each cube face (0: no cells)")
       .def_property_readonly("cube_half_size", &CubemapLocator::cubeHalfSize,

@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "arrays.hpp"
@@ -35,12 +36,6 @@ py::array_t<std::int64_t> triangleArray(std::span<const ConvexPolyhedron::Triang
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (std::size_t k = 0; k < 3; ++k) to[3 * i + k] = triangles[i][k];
   return out;
-}
-
-// ((xlo, ylo), (xhi, yhi)) and its 3D twin
-template <class Box>
-py::tuple boundsToPython(const Box& box) {
-  return py::make_tuple(toPython(box.lo), toPython(box.hi));
 }
 
 // === Arrays in
@@ -105,19 +100,20 @@ MeshData meshFrom(const py::object& vertices, const py::object& faces) {
   return mesh;
 }
 
-// a path argument (str or os.PathLike) as text
-std::string pathText(const py::object& path) {
-  return py::str(py::module_::import("os").attr("fspath")(path));
+// a path argument (str or os.PathLike) as text, refused as the tool refuses a directory
+std::string filePath(const py::object& pathArg) {
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(pathArg));
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw FileFailure(ErrorKind::File, path, 0, "cannot open: it is a directory");
+  return path;
 }
 
 // === Readers
 
 // the polygon in a file of "x y" lines, reported as the command-line tool reports it
 ConvexPolygon readPolygon(const py::object& pathArg) {
-  const std::string path = pathText(pathArg);
-  std::error_code ec;
-  if (path != "-" && std::filesystem::is_directory(path, ec))
-    throw FileFailure(ErrorKind::File, path, 0, "cannot open: it is a directory");
+  const std::string path = filePath(pathArg);
   py::gil_scoped_release released;
   PointList list;
   aboutFile(path, [&] { list = readPoints2D(path); });
@@ -131,10 +127,7 @@ ConvexPolygon readPolygon(const py::object& pathArg) {
 
 // the polyhedron in an OFF or OBJ file; every complaint about the mesh is about the file
 ConvexPolyhedron readPolyhedron(const py::object& pathArg) {
-  const std::string path = pathText(pathArg);
-  std::error_code ec;
-  if (path != "-" && std::filesystem::is_directory(path, ec))
-    throw FileFailure(ErrorKind::File, path, 0, "cannot open: it is a directory");
+  const std::string path = filePath(pathArg);
   py::gil_scoped_release released;
   MeshData mesh;
   aboutFile(path, [&] { mesh = readMesh(path); });
@@ -147,101 +140,113 @@ ConvexPolyhedron readPolyhedron(const py::object& pathArg) {
 
 // === Classes
 
+// a span a shape holds, as a numpy array (a copy)
+template <class Item>
+py::array arrayOf(std::span<const Item> items) {
+  if constexpr (std::is_same_v<Item, std::uint32_t>)
+    return indexArray(items);
+  else if constexpr (std::is_same_v<Item, ConvexPolyhedron::Triangle>)
+    return triangleArray(items);
+  else
+    return coordinateArray<Item>(items);
+}
+
+// the read-only property `name`: what `get` returns, as an array
+template <class Shape, class Item>
+void arrayProperty(py::class_<Shape>& c, const char* name,
+                   std::span<const Item> (Shape::*get)() const noexcept, const char* doc) {
+  c.def_property_readonly(
+      name, [get](const Shape& s) { return arrayOf((s.*get)()); }, doc);
+}
+
+// the read-only property `bounds`: the exact box as ((lo...), (hi...))
+template <class Shape>
+void boundsProperty(py::class_<Shape>& c, const char* doc) {
+  c.def_property_readonly(
+      "bounds",
+      [](const Shape& s) {
+        return py::make_tuple(toPython(s.bounds().lo), toPython(s.bounds().hi));
+      },
+      doc);
+}
+
 void bindPolygon(py::module_& m) {
-  py::class_<ConvexPolygon>(
-      m, "Polygon",
-      "A strictly convex polygon, validated once: counter-clockwise, repeated "
-      "and collinear vertices dropped.")
-      .def(py::init([](const py::object& vertices) {
-             const py::array points = pointArray(vertices, 2, "vertices");
-             const std::span<const Vec2> read = pointsOf<Vec2>(points);
-             py::gil_scoped_release released;
-             return ConvexPolygon(read);
-           }),
-           py::arg("vertices"),
-           "Validates the (N, 2) vertices (either orientation). Raises GeometryError naming "
-           "the witness: not convex, fewer than 3 distinct vertices, a non-finite coordinate.")
-      .def_property_readonly(
-          "vertices", [](const ConvexPolygon& p) { return coordinateArray(p.vertices()); },
-          "(N, 2) float64: the vertices, counter-clockwise")
-      .def("__len__", &ConvexPolygon::size, "the number of vertices (and of edges)")
-      .def_property_readonly(
-          "bounds", [](const ConvexPolygon& p) { return boundsToPython(p.bounds()); },
-          "((xmin, ymin), (xmax, ymax)), exact")
-      .def_property_readonly("area", &ConvexPolygon::area,
-                             "the area (for display, not for decisions)")
-      .def_property_readonly(
-          "source_index", [](const ConvexPolygon& p) { return indexArray(p.sourceIndex()); },
-          "int64: each kept vertex's index in the input")
-      .def_property_readonly("dropped_count", &ConvexPolygon::droppedCount,
-                             "input vertices dropped as repeated or collinear")
-      .def_property_readonly("was_clockwise", &ConvexPolygon::wasClockwise,
-                             "whether the input was clockwise and got reversed")
-      .def("__repr__", [](const ConvexPolygon& p) {
-        return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
-      });
+  using P = ConvexPolygon;
+  py::class_<P> c(m, "Polygon",
+                  "A strictly convex polygon, validated once: counter-clockwise, repeated and "
+                  "collinear vertices dropped.");
+  c.def(py::init([](const py::object& vertices) {
+          const py::array points = pointArray(vertices, 2, "vertices");
+          const std::span<const Vec2> read = pointsOf<Vec2>(points);
+          py::gil_scoped_release released;
+          return P(read);
+        }),
+        py::arg("vertices"),
+        "Validates the (N, 2) vertices (either orientation). Raises GeometryError naming the "
+        "witness: not convex, fewer than 3 distinct vertices, a non-finite coordinate.");
+  arrayProperty(c, "vertices", &P::vertices, "(N, 2) float64: the vertices, counter-clockwise");
+  arrayProperty(c, "source_index", &P::sourceIndex, "int64: each vertex's index in the input");
+  boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
+  c.def("__len__", &P::size, "the number of vertices (and of edges)");
+  c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
+  c.def_property_readonly("dropped_count", &P::droppedCount,
+                          "input vertices dropped as repeated or collinear");
+  c.def_property_readonly("was_clockwise", &P::wasClockwise,
+                          "whether the input was clockwise and got reversed");
+  c.def("__repr__", [](const P& p) {
+    return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
+  });
+}
+
+// the constructor from a mesh, and the hull of a cloud
+void definePolyhedronMakers(py::class_<ConvexPolyhedron>& c) {
+  c.def(py::init([](const py::object& vertices, const py::object& faces) {
+          const MeshData mesh = meshFrom(vertices, faces);
+          py::gil_scoped_release released;
+          return ConvexPolyhedron(mesh);
+        }),
+        py::arg("vertices"), py::arg("faces"),
+        "Validates the mesh of (V, 3) vertices and faces (an (F, k) integer array or "
+        "sequences of 0-based vertex indices; faces of more than 3 vertices are triangulated). "
+        "Raises GeometryError naming the witness.");
+  c.def_static(
+      "hull",
+      [](const py::object& points) {
+        const py::array cloud = pointArray(points, 3, "points");
+        const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
+        py::gil_scoped_release released;
+        return ConvexPolyhedron::hullOf(read);
+      },
+      py::arg("points"),
+      "The convex hull of (M, 3) points (Qhull), validated exactly. Raises GeometryError when "
+      "the points are fewer than 4, not finite or coplanar.");
 }
 
 void bindPolyhedron(py::module_& m) {
   using P = ConvexPolyhedron;
-  py::class_<P>(m, "Polyhedron",
-                "A closed convex polyhedron, validated once, as triangles counter-clockwise seen "
-                "from outside.")
-      .def(py::init([](const py::object& vertices, const py::object& faces) {
-             const MeshData mesh = meshFrom(vertices, faces);
-             py::gil_scoped_release released;
-             return P(mesh);
-           }),
-           py::arg("vertices"), py::arg("faces"),
-           "Validates the mesh of (V, 3) vertices and faces (an (F, k) integer array or "
-           "sequences of 0-based vertex indices; faces of more than 3 vertices are "
-           "triangulated). Raises GeometryError naming the witness.")
-      .def_static(
-          "hull",
-          [](const py::object& points) {
-            const py::array cloud = pointArray(points, 3, "points");
-            const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
-            py::gil_scoped_release released;
-            return P::hullOf(read);
-          },
-          py::arg("points"),
-          "The convex hull of (M, 3) points (Qhull), validated exactly. Raises GeometryError "
-          "when the points are fewer than 4, not finite or coplanar.")
-      .def_property_readonly(
-          "vertices", [](const P& p) { return coordinateArray(p.vertices()); },
-          "(V, 3) float64: the vertices the triangles use")
-      .def_property_readonly(
-          "triangles", [](const P& p) { return triangleArray(p.triangles()); },
-          "(F, 3) int64: the triangles, counter-clockwise from outside")
-      .def_property_readonly(
-          "neighbours", [](const P& p) { return triangleArray(p.neighbours()); },
-          "(F, 3) int64: [t, k] is the triangle across edge k of t")
-      .def_property_readonly("face_count", &P::faceCount, "the number of triangles")
-      .def_property_readonly("vertex_count", &P::vertexCount, "the number of vertices")
-      .def_property_readonly(
-          "centre",
-          [](const P& p) -> py::object {
-            if (auto c = p.centre()) return toPython(*c);
-            return py::none();
-          },
-          "(x, y, z) strictly inside, or None for a sliver thinner than doubles")
-      .def_property_readonly(
-          "bounds", [](const P& p) { return boundsToPython(p.bounds()); },
-          "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact")
-      .def_property_readonly("volume", &P::volume, "the volume (for display)")
-      .def_property_readonly("area", &P::area, "the surface area (for display)")
-      .def_property_readonly(
-          "source_face", [](const P& p) { return indexArray(p.sourceFace()); },
-          "int64: each triangle's input face")
-      .def_property_readonly(
-          "source_vertex", [](const P& p) { return indexArray(p.sourceVertex()); },
-          "int64: each vertex's index in the input")
-      .def_property_readonly("was_inverted", &P::wasInverted,
-                             "whether the input was clockwise from outside and got reversed")
-      .def("__repr__", [](const P& p) {
-        return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
-               std::to_string(p.vertexCount()) + " vertices>";
-      });
+  py::class_<P> c(m, "Polyhedron",
+                  "A closed convex polyhedron, validated once, as triangles counter-clockwise "
+                  "seen from outside.");
+  definePolyhedronMakers(c);
+  arrayProperty(c, "vertices", &P::vertices, "(V, 3) float64: the vertices the triangles use");
+  arrayProperty(c, "triangles", &P::triangles, "(F, 3) int64: counter-clockwise from outside");
+  arrayProperty(c, "neighbours", &P::neighbours, "(F, 3) int64: [t, k] is across edge k of t");
+  arrayProperty(c, "source_face", &P::sourceFace, "int64: each triangle's input face");
+  arrayProperty(c, "source_vertex", &P::sourceVertex, "int64: each vertex's index in the input");
+  boundsProperty(c, "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact");
+  c.def_property_readonly(
+      "centre", [](const P& p) { return centreToPython(p.centre()); },
+      "(x, y, z) strictly inside, or None for a sliver thinner than doubles");
+  c.def_property_readonly("face_count", &P::faceCount, "the number of triangles");
+  c.def_property_readonly("vertex_count", &P::vertexCount, "the number of vertices");
+  c.def_property_readonly("volume", &P::volume, "the volume (for display)");
+  c.def_property_readonly("area", &P::area, "the surface area (for display)");
+  c.def_property_readonly("was_inverted", &P::wasInverted,
+                          "whether the input was clockwise from outside and got reversed");
+  c.def("__repr__", [](const P& p) {
+    return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
+           std::to_string(p.vertexCount()) + " vertices>";
+  });
 }
 
 }  // namespace
