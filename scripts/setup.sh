@@ -8,7 +8,10 @@
 #                            fuzz targets of tests/fuzz only (warnings are not errors here:
 #                            the g++ builds hold that line, clang's warnings differ)
 #   --bench     build-bench/ Release, g++: convexloc-bench with GEOS and CGAL beside it
-#                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox)
+#                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox, and
+#                            python3-shapely, python3-scipy for tests/bench/python_peers.py)
+# Every variant installs pybind11-dev, python3-numpy and python3-pytest: the plain and bench
+# builds make the Python module (build*/python; the sanitized and fuzz builds leave it out).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,8 +29,11 @@ done
 
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libqhull-dev libcli11-dev libgtest-dev
           libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
-          xvfb xauth libgl1-mesa-dri clang-14 libclang-rt-14-dev)
-if [[ $variant == bench ]]; then packages+=(libgeos-dev libcgal-dev gnuplot-nox); fi
+          xvfb xauth libgl1-mesa-dri clang-14 libclang-rt-14-dev
+          python3-dev pybind11-dev python3-numpy python3-pytest)
+if [[ $variant == bench ]]; then
+  packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-shapely python3-scipy)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

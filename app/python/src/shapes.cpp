@@ -1,0 +1,265 @@
+// convexloc Python module — Polygon, Polyhedron and the file readers.
+//
+// A shape is validated once, by core, with the GIL released; what it exposes is copied out
+// as numpy arrays (coordinates float64, indices int64) and tuples. The readers report a bad
+// file as the command-line tool does: "FILE:LINE: problem" (errors.hpp).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "convexloc/mesh_reader.hpp"
+#include "convexloc/polygon.hpp"
+#include "convexloc/polyhedron.hpp"
+#include "convexloc/text_reader.hpp"
+#include "errors.hpp"
+
+namespace convexloc::python {
+
+namespace {
+
+// === Arrays out
+
+// the triangles as an (F, 3) int64 array
+py::array_t<std::int64_t> triangleArray(std::span<const ConvexPolyhedron::Triangle> triangles) {
+  py::array_t<std::int64_t> out({static_cast<py::ssize_t>(triangles.size()), py::ssize_t{3}});
+  std::int64_t* to = out.mutable_data();
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) to[3 * i + k] = triangles[i][k];
+  return out;
+}
+
+// === Arrays in
+
+// a vertex index of face `f`, checked to fit the 32-bit indices of a mesh
+std::uint32_t vertexIndex(long long value, std::size_t f) {
+  if (value < 0 || value > std::numeric_limits<std::uint32_t>::max())
+    throw py::value_error("faces: face " + std::to_string(f) + " has vertex index " +
+                          std::to_string(value) + ", which no vertex has");
+  return static_cast<std::uint32_t>(value);
+}
+
+// faces given as an (F, k) integer array: every face has k vertices
+bool addFaceRows(MeshData& mesh, const py::object& faces) {
+  py::array rows;
+  try {
+    rows = py::module_::import("numpy").attr("asarray")(faces);
+  } catch (const py::error_already_set&) {
+    return false;  // ragged: numpy will not make one array of it
+  }
+  const char kind = rows.dtype().kind();
+  if (rows.ndim() != 2 || (kind != 'i' && kind != 'u')) return false;
+  const py::array_t<long long, py::array::c_style | py::array::forcecast> ints(rows);
+  const auto count = static_cast<std::size_t>(ints.shape(0));
+  const auto width = static_cast<std::size_t>(ints.shape(1));
+  std::vector<std::uint32_t> face(width);
+  for (std::size_t f = 0; f < count; ++f) {
+    for (std::size_t k = 0; k < width; ++k) face[k] = vertexIndex(ints.data()[f * width + k], f);
+    mesh.addFace(face);
+  }
+  return true;
+}
+
+// faces given as any sequence of sequences of integers
+void addFaceLists(MeshData& mesh, const py::object& faces) {
+  std::vector<std::uint32_t> face;
+  std::size_t f = 0;
+  for (const py::handle polygon : py::iter(faces)) {
+    face.clear();
+    for (const py::handle index : py::iter(polygon)) {
+      if (!PyIndex_Check(index.ptr()))
+        throw py::type_error("faces: face " + std::to_string(f) + " holds " +
+                             std::string(py::repr(index)) + ", not a vertex index");
+      const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(index.ptr()));
+      if (!number) throw py::error_already_set();
+      int overflow = 0;
+      const long long value = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
+      face.push_back(vertexIndex(overflow ? -1 : value, f));
+    }
+    mesh.addFace(face);
+    ++f;
+  }
+}
+
+// the mesh of `vertices` ((V, 3) array-like) and `faces` (sequences of vertex indices)
+MeshData meshFrom(const py::object& vertices, const py::object& faces) {
+  MeshData mesh;
+  const py::array points = pointArray(vertices, 3, "vertices");
+  const std::span<const Vec3> read = pointsOf<Vec3>(points);
+  mesh.vertices.assign(read.begin(), read.end());
+  if (!addFaceRows(mesh, faces)) addFaceLists(mesh, faces);
+  return mesh;
+}
+
+// a path argument (str or os.PathLike) as text, refused as the tool refuses a directory
+std::string filePath(const py::object& pathArg) {
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(pathArg));
+  std::error_code ec;
+  if (path != "-" && std::filesystem::is_directory(path, ec))
+    throw FileFailure(ErrorKind::File, path, 0, "cannot open: it is a directory");
+  return path;
+}
+
+// === Readers
+
+// the polygon in a file of "x y" lines, reported as the command-line tool reports it
+ConvexPolygon readPolygon(const py::object& pathArg) {
+  const std::string path = filePath(pathArg);
+  py::gil_scoped_release released;
+  PointList list;
+  aboutFile(path, [&] { list = readPoints2D(path); });
+  if (list.points.empty())
+    throw FileFailure(ErrorKind::Parse, path, 0,
+                      "no vertices: a polygon file lists one vertex 'x y' per line");
+  std::optional<ConvexPolygon> polygon;
+  aboutFile(path, [&] { polygon.emplace(list.points, list.lines); });
+  return std::move(*polygon);
+}
+
+// the polyhedron in an OFF or OBJ file; every complaint about the mesh is about the file
+ConvexPolyhedron readPolyhedron(const py::object& pathArg) {
+  const std::string path = filePath(pathArg);
+  py::gil_scoped_release released;
+  MeshData mesh;
+  aboutFile(path, [&] { mesh = readMesh(path); });
+  try {
+    return ConvexPolyhedron(mesh);
+  } catch (const convexloc::Error& e) {
+    throw FileFailure(kindOf(e), path, e.line(), e.what());
+  }
+}
+
+// === Classes
+
+// a span a shape holds, as a numpy array (a copy)
+template <class Item>
+py::array arrayOf(std::span<const Item> items) {
+  if constexpr (std::is_same_v<Item, std::uint32_t>)
+    return indexArray(items);
+  else if constexpr (std::is_same_v<Item, ConvexPolyhedron::Triangle>)
+    return triangleArray(items);
+  else
+    return coordinateArray<Item>(items);
+}
+
+// the read-only property `name`: what `get` returns, as an array
+template <class Shape, class Item>
+void arrayProperty(py::class_<Shape>& c, const char* name,
+                   std::span<const Item> (Shape::*get)() const noexcept, const char* doc) {
+  c.def_property_readonly(
+      name, [get](const Shape& s) { return arrayOf((s.*get)()); }, doc);
+}
+
+// the read-only property `bounds`: the exact box as ((lo...), (hi...))
+template <class Shape>
+void boundsProperty(py::class_<Shape>& c, const char* doc) {
+  c.def_property_readonly(
+      "bounds",
+      [](const Shape& s) {
+        return py::make_tuple(toPython(s.bounds().lo), toPython(s.bounds().hi));
+      },
+      doc);
+}
+
+void bindPolygon(py::module_& m) {
+  using P = ConvexPolygon;
+  py::class_<P> c(m, "Polygon",
+                  "A strictly convex polygon, validated once: counter-clockwise, repeated and "
+                  "collinear vertices dropped.");
+  c.def(py::init([](const py::object& vertices) {
+          const py::array points = pointArray(vertices, 2, "vertices");
+          const std::span<const Vec2> read = pointsOf<Vec2>(points);
+          py::gil_scoped_release released;
+          return P(read);
+        }),
+        py::arg("vertices"),
+        "Validates the (N, 2) vertices (either orientation). Raises GeometryError naming the "
+        "witness: not convex, fewer than 3 distinct vertices, a non-finite coordinate.");
+  arrayProperty(c, "vertices", &P::vertices, "(N, 2) float64: the vertices, counter-clockwise");
+  arrayProperty(c, "source_index", &P::sourceIndex, "int64: each vertex's index in the input");
+  boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
+  c.def("__len__", &P::size, "the number of vertices (and of edges)");
+  c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
+  c.def_property_readonly("dropped_count", &P::droppedCount,
+                          "input vertices dropped as repeated or collinear");
+  c.def_property_readonly("was_clockwise", &P::wasClockwise,
+                          "whether the input was clockwise and got reversed");
+  c.def("__repr__", [](const P& p) {
+    return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
+  });
+}
+
+// the constructor from a mesh, and the hull of a cloud
+void definePolyhedronMakers(py::class_<ConvexPolyhedron>& c) {
+  c.def(py::init([](const py::object& vertices, const py::object& faces) {
+          const MeshData mesh = meshFrom(vertices, faces);
+          py::gil_scoped_release released;
+          return ConvexPolyhedron(mesh);
+        }),
+        py::arg("vertices"), py::arg("faces"),
+        "Validates the mesh of (V, 3) vertices and faces (an (F, k) integer array or "
+        "sequences of 0-based vertex indices; faces of more than 3 vertices are triangulated). "
+        "Raises GeometryError naming the witness.");
+  c.def_static(
+      "hull",
+      [](const py::object& points) {
+        const py::array cloud = pointArray(points, 3, "points");
+        const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
+        py::gil_scoped_release released;
+        return ConvexPolyhedron::hullOf(read);
+      },
+      py::arg("points"),
+      "The convex hull of (M, 3) points (Qhull), validated exactly. Raises GeometryError when "
+      "the points are fewer than 4, not finite or coplanar.");
+}
+
+void bindPolyhedron(py::module_& m) {
+  using P = ConvexPolyhedron;
+  py::class_<P> c(m, "Polyhedron",
+                  "A closed convex polyhedron, validated once, as triangles counter-clockwise "
+                  "seen from outside.");
+  definePolyhedronMakers(c);
+  arrayProperty(c, "vertices", &P::vertices, "(V, 3) float64: the vertices the triangles use");
+  arrayProperty(c, "triangles", &P::triangles, "(F, 3) int64: counter-clockwise from outside");
+  arrayProperty(c, "neighbours", &P::neighbours, "(F, 3) int64: [t, k] is across edge k of t");
+  arrayProperty(c, "source_face", &P::sourceFace, "int64: each triangle's input face");
+  arrayProperty(c, "source_vertex", &P::sourceVertex, "int64: each vertex's index in the input");
+  boundsProperty(c, "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact");
+  c.def_property_readonly(
+      "centre", [](const P& p) { return centreToPython(p.centre()); },
+      "(x, y, z) strictly inside, or None for a sliver thinner than doubles");
+  c.def_property_readonly("face_count", &P::faceCount, "the number of triangles");
+  c.def_property_readonly("vertex_count", &P::vertexCount, "the number of vertices");
+  c.def_property_readonly("volume", &P::volume, "the volume (for display)");
+  c.def_property_readonly("area", &P::area, "the surface area (for display)");
+  c.def_property_readonly("was_inverted", &P::wasInverted,
+                          "whether the input was clockwise from outside and got reversed");
+  c.def("__repr__", [](const P& p) {
+    return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
+           std::to_string(p.vertexCount()) + " vertices>";
+  });
+}
+
+}  // namespace
+
+void bindShapes(py::module_& m) {
+  bindPolygon(m);
+  bindPolyhedron(m);
+  m.def("read_polygon", &readPolygon, py::arg("path"),
+        "Reads a polygon file (one vertex 'x y' per line). Raises ParseError, GeometryError or "
+        "FileError with the command-line tool's message, 'FILE:LINE: problem'.");
+  m.def("read_polyhedron", &readPolyhedron, py::arg("path"),
+        "Reads an .off or .obj polyhedron. Raises ParseError, GeometryError or FileError with "
+        "the command-line tool's message, 'FILE:LINE: problem'; UsageError for another extension.");
+}
+
+}  // namespace convexloc::python
