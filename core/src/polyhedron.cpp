@@ -44,7 +44,7 @@ long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]) {
 ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh) : ConvexPolyhedron(mesh, nullptr) {}
 
 ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32_t>* suspects) {
-  detail::PolyhedronBuilder check(mesh, suspects);
+  detail::PolyhedronBuilder check(*this, mesh, suspects);
   check.checkArrays();
   check.checkFiniteVertices();
   check.checkFaces();
@@ -57,18 +57,7 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
   check.checkConvexEdges();
   check.findCentre();
   check.checkWindsOnce();
-  bounds_ = check.bounds();
-  vertices_ = std::move(check.vertices);
-  triangles_ = std::move(check.triangles);
-  neighbours_ = std::move(check.neighbours);
-  sourceFace_ = std::move(check.sourceFace);
-  sourceVertex_ = std::move(check.sourceVertex);
-  centre_ = check.centre;
-  inputFaces_ = mesh.faceCount();
-  merged_ = check.merged;
-  unused_ = check.unused;
-  slivers_ = check.slivers;
-  inverted_ = check.inverted;
+  check.findBounds();
 }
 
 int ConvexPolyhedron::side(std::size_t t, Vec3 p) const noexcept {

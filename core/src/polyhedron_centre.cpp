@@ -117,8 +117,8 @@ void scaleAxes(std::vector<Vec3>& rel) {
 }  // namespace
 
 void PolyhedronBuilder::findCentre() {
-  const std::vector<Vec3>& v = vertices;
-  const std::vector<Triangle>& tri = triangles;
+  const std::vector<Vec3>& v = out_.vertices_;
+  const std::vector<Triangle>& tri = out_.triangles_;
   auto insideAll = [&](Vec3 c, std::uint32_t& hint) {
     if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) return false;
     if (orient3d(v[tri[hint][0]], v[tri[hint][1]], v[tri[hint][2]], c) <= 0) return false;
@@ -132,17 +132,17 @@ void PolyhedronBuilder::findCentre() {
   std::uint32_t hint = 0;
   for (Vec3 c : centreCandidates(v, tri, tetra_))
     if (insideAll(c, hint)) {
-      centre = c;
+      out_.centre_ = c;
       return;
     }
 }
 
 std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
-  const std::vector<Vec3>& v = vertices;
+  const std::vector<Vec3>& v = out_.vertices_;
   std::vector<Vec3> rel(v.size());
   mpq_class g[3];  // the exact centre when there is no double one
-  if (centre) {
-    const Vec3 c = *centre;
+  if (out_.centre_) {
+    const Vec3 c = *out_.centre_;
     for (std::size_t i = 0; i < v.size(); ++i) rel[i] = {v[i].x - c.x, v[i].y - c.y, v[i].z - c.z};
   } else {
     // no double point works: decide with the exact centroid g of the tetrahedron found above,
@@ -153,8 +153,9 @@ std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
       g[1] += mpq_class(v[k].y) / 4;
       g[2] += mpq_class(v[k].z) / 4;
     }
-    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-      const Vec3 p = v[triangles[t][0]], q = v[triangles[t][1]], r = v[triangles[t][2]];
+    for (std::uint32_t t = 0; t < out_.triangles_.size(); ++t) {
+      const Vec3 p = v[out_.triangles_[t][0]], q = v[out_.triangles_[t][1]],
+                 r = v[out_.triangles_[t][2]];
       if (rationalOrient(p, q, r, g) > 0) continue;
       std::uint32_t out = tetra_[0];
       for (std::uint32_t k : tetra_)
@@ -171,11 +172,11 @@ std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
     overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
   if (overflow)
     for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!centre) {
+      if (!out_.centre_) {
         rel[i] = minusRational(v[i], g, true);
         continue;
       }
-      const Vec3 c = *centre;
+      const Vec3 c = *out_.centre_;
       rel[i] = {v[i].x * 0.5 - c.x * 0.5, v[i].y * 0.5 - c.y * 0.5, v[i].z * 0.5 - c.z * 0.5};
     }
   scaleAxes(rel);
@@ -188,21 +189,22 @@ void PolyhedronBuilder::checkWindsOnce() const {
   // 4 pi and 8 pi
   const std::vector<Vec3> rel = directionsFromInside();
   double total = 0;
-  for (const Triangle& t : triangles) total += solidAngle(rel[t[0]], rel[t[1]], rel[t[2]]);
+  for (const Triangle& t : out_.triangles_) total += solidAngle(rel[t[0]], rel[t[1]], rel[t[2]]);
   const double turns = total / (4 * std::numbers::pi);
   if (!(turns < 1.5))
     throw GeometryError("not convex: the surface winds " + std::to_string(std::lround(turns)) +
                         " times around its inside" +
-                        (centre ? " point " + show(*centre) : std::string()));
+                        (out_.centre_ ? " point " + show(*out_.centre_) : std::string()));
 }
 
-Box3 PolyhedronBuilder::bounds() const {
-  Box3 box{vertices[0], vertices[0]};
-  for (const Vec3& w : vertices) {
+void PolyhedronBuilder::findBounds() {
+  const std::vector<Vec3>& v = out_.vertices_;
+  Box3& box = out_.bounds_;
+  box = {v[0], v[0]};
+  for (const Vec3& w : v) {
     box.lo = {std::min(box.lo.x, w.x), std::min(box.lo.y, w.y), std::min(box.lo.z, w.z)};
     box.hi = {std::max(box.hi.x, w.x), std::max(box.hi.y, w.y), std::max(box.hi.z, w.z)};
   }
-  return box;
 }
 
 }  // namespace convexloc::detail

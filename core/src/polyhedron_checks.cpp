@@ -51,22 +51,24 @@ int edgeSlot(const ConvexPolyhedron::Triangle& t, std::uint32_t p, std::uint32_t
 
 }  // namespace
 
-PolyhedronBuilder::PolyhedronBuilder(const MeshData& mesh, std::vector<std::uint32_t>* suspects)
-    : mesh_(mesh), suspects_(suspects) {}
+PolyhedronBuilder::PolyhedronBuilder(ConvexPolyhedron& out, const MeshData& mesh,
+                                     std::vector<std::uint32_t>* suspects)
+    : out_(out), mesh_(mesh), suspects_(suspects) {}
 
 // === names of witnesses
 
 std::string PolyhedronBuilder::vertexName(std::uint32_t k) const {
-  return "vertex " + std::to_string(sourceVertex[k]) + ' ' + show(vertices[k]);
+  return "vertex " + std::to_string(out_.sourceVertex_[k]) + ' ' + show(out_.vertices_[k]);
 }
 
 std::string PolyhedronBuilder::edgeName(std::uint32_t a, std::uint32_t b) const {
-  return "edge " + std::to_string(sourceVertex[a]) + '-' + std::to_string(sourceVertex[b]) +
-         " from " + show(vertices[a]) + " to " + show(vertices[b]);
+  return "edge " + std::to_string(out_.sourceVertex_[a]) + '-' +
+         std::to_string(out_.sourceVertex_[b]) + " from " + show(out_.vertices_[a]) + " to " +
+         show(out_.vertices_[b]);
 }
 
 std::string PolyhedronBuilder::faceName(std::uint32_t t) const {
-  return "face " + std::to_string(sourceFace[t]);
+  return "face " + std::to_string(out_.sourceFace_[t]);
 }
 
 std::size_t PolyhedronBuilder::vertexLine(std::size_t i) const {
@@ -78,12 +80,12 @@ std::size_t PolyhedronBuilder::faceLine(std::size_t f) const {
 }
 
 std::size_t PolyhedronBuilder::triangleLine(std::uint32_t t) const {
-  return faceLine(sourceFace[t]);
+  return faceLine(out_.sourceFace_[t]);
 }
 
 void PolyhedronBuilder::blame(const std::vector<std::uint32_t>& corners) const {
   if (suspects_)
-    for (std::uint32_t w : corners) suspects_->push_back(sourceVertex[w]);
+    for (std::uint32_t w : corners) suspects_->push_back(out_.sourceVertex_[w]);
 }
 
 // === the mesh as given
@@ -115,6 +117,7 @@ void PolyhedronBuilder::checkFiniteVertices() const {
 void PolyhedronBuilder::checkFaces() {
   const std::size_t n = mesh_.vertices.size(), m = mesh_.faceCount();
   if (m == 0) throw GeometryError("the mesh has no faces", n ? vertexLine(n - 1) : 0);
+  out_.inputFaces_ = m;
   used_.assign(n, 0);
   for (std::size_t f = 0; f < m; ++f) {
     auto face = mesh_.face(f);
@@ -146,7 +149,7 @@ void PolyhedronBuilder::mergeVertices() {
   order.reserve(n);
   for (std::uint32_t i = 0; i < n; ++i)
     if (used_[i]) order.push_back(i);
-  unused = n - order.size();
+  out_.unused_ = n - order.size();
   auto less = [&](std::uint32_t a, std::uint32_t b) {
     const Vec3 &p = pts[a], &q = pts[b];
     if (p.x != q.x) return p.x < q.x;
@@ -159,21 +162,21 @@ void PolyhedronBuilder::mergeVertices() {
   for (std::size_t k = 0; k < order.size(); ++k) {
     bool same = k > 0 && pts[order[k]] == pts[order[k - 1]];
     rep[order[k]] = same ? rep[order[k - 1]] : order[k];
-    merged += same;
+    out_.merged_ += same;
   }
   for (std::uint32_t i = 0; i < n; ++i)
     if (used_[i] && rep[i] == i) {
-      id_[i] = static_cast<std::uint32_t>(vertices.size());
-      vertices.push_back(pts[i]);
-      sourceVertex.push_back(i);
+      id_[i] = static_cast<std::uint32_t>(out_.vertices_.size());
+      out_.vertices_.push_back(pts[i]);
+      out_.sourceVertex_.push_back(i);
     }
   for (std::uint32_t i = 0; i < n; ++i)
     if (used_[i]) id_[i] = id_[rep[i]];
 }
 
 void PolyhedronBuilder::fanTriangulate() {
-  triangles.reserve(triangleBound_);
-  sourceFace.reserve(triangleBound_);
+  out_.triangles_.reserve(triangleBound_);
+  out_.sourceFace_.reserve(triangleBound_);
   std::vector<std::uint32_t> poly, sorted;
   for (std::size_t f = 0; f < mesh_.faceCount(); ++f) {
     poly.clear();
@@ -191,18 +194,18 @@ void PolyhedronBuilder::fanTriangulate() {
       throw GeometryError("face " + std::to_string(f) + " visits " + vertexName(*twice) + " twice",
                           faceLine(f));
     for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
-      triangles.push_back({poly[0], poly[i], poly[i + 1]});
-      sourceFace.push_back(static_cast<std::uint32_t>(f));
+      out_.triangles_.push_back({poly[0], poly[i], poly[i + 1]});
+      out_.sourceFace_.push_back(static_cast<std::uint32_t>(f));
     }
   }
 }
 
 void PolyhedronBuilder::pairEdges() {
   // half-edges are bucketed by their smaller vertex (counting sort), then sorted per bucket
-  const std::vector<Triangle>& tri = triangles;
+  const std::vector<Triangle>& tri = out_.triangles_;
   const auto nt = static_cast<std::uint32_t>(tri.size());
-  const auto nv = static_cast<std::uint32_t>(vertices.size());
-  neighbours.assign(nt, {kNone, kNone, kNone});
+  const auto nv = static_cast<std::uint32_t>(out_.vertices_.size());
+  out_.neighbours_.assign(nt, {kNone, kNone, kNone});
   auto head = [&](std::uint32_t h) { return tri[h / 3][h % 3]; };
   auto tail = [&](std::uint32_t h) { return tri[h / 3][(h % 3 + 1) % 3]; };
   auto other = [&](std::uint32_t h) { return std::max(head(h), tail(h)); };
@@ -232,7 +235,7 @@ void PolyhedronBuilder::pairEdges() {
       if (count > 2) {
         std::string faces;
         for (auto k = it; k != run && k - it < 4; ++k)
-          faces += (k == it ? "" : ", ") + std::to_string(sourceFace[*k / 3]);
+          faces += (k == it ? "" : ", ") + std::to_string(out_.sourceFace_[*k / 3]);
         if (count > 4) faces += ", ...";
         throw GeometryError("not a manifold: " + edgeName(head(h1), tail(h1)) + " is shared by " +
                                 std::to_string(count) + " triangles (faces " + faces + ")",
@@ -244,19 +247,19 @@ void PolyhedronBuilder::pairEdges() {
                                 " both run along " + edgeName(head(h1), tail(h1)) +
                                 " in the same direction (orient every face the same way)",
                             triangleLine(t2));
-      neighbours[t1][h1 % 3] = t2;
-      neighbours[t2][h2 % 3] = t1;
+      out_.neighbours_[t1][h1 % 3] = t2;
+      out_.neighbours_[t2][h2 % 3] = t1;
       it = run;
     }
   }
 }
 
 void PolyhedronBuilder::checkOnePieceSphere() const {
-  const auto nt = static_cast<std::uint32_t>(triangles.size());
+  const auto nt = static_cast<std::uint32_t>(out_.triangles_.size());
   std::vector<std::uint32_t> parent(nt);
   std::iota(parent.begin(), parent.end(), 0u);
   for (std::uint32_t t = 0; t < nt; ++t)
-    for (std::uint32_t u : neighbours[t]) parent[findRoot(parent, t)] = findRoot(parent, u);
+    for (std::uint32_t u : out_.neighbours_[t]) parent[findRoot(parent, t)] = findRoot(parent, u);
   std::size_t pieces = 0;
   std::uint32_t stray = kNone;
   const std::uint32_t root0 = findRoot(parent, 0);
@@ -268,7 +271,7 @@ void PolyhedronBuilder::checkOnePieceSphere() const {
     throw GeometryError("the surface has " + std::to_string(pieces) + " separate pieces (" +
                             faceName(stray) + " is not connected to " + faceName(0) + ")",
                         triangleLine(stray));
-  const long long chi = static_cast<long long>(vertices.size()) - 3LL * nt / 2 + nt;
+  const long long chi = static_cast<long long>(out_.vertices_.size()) - 3LL * nt / 2 + nt;
   if (chi != 2)
     throw GeometryError(
         "the surface is not a sphere: V - E + F = " + std::to_string(chi) +
@@ -278,7 +281,7 @@ void PolyhedronBuilder::checkOnePieceSphere() const {
 // === the geometry
 
 void PolyhedronBuilder::findTetrahedron() {
-  const std::vector<Vec3>& v = vertices;
+  const std::vector<Vec3>& v = out_.vertices_;
   const auto nv = static_cast<std::uint32_t>(v.size());
   tetra_[2] = tetra_[3] = kNone;
   for (std::uint32_t i = 2; i < nv && tetra_[2] == kNone; ++i)
@@ -296,8 +299,8 @@ void PolyhedronBuilder::findTetrahedron() {
 // positive area, and cover the same region of the surface. A flat triangle whose neighbour
 // is flat too waits for a later round.
 void PolyhedronBuilder::flipSlivers() {
-  const std::vector<Vec3>& v = vertices;
-  std::vector<Triangle>&tri = triangles, &nb = neighbours;
+  const std::vector<Vec3>& v = out_.vertices_;
+  std::vector<Triangle>&tri = out_.triangles_, &nb = out_.neighbours_;
   const auto nt = static_cast<std::uint32_t>(tri.size());
   std::vector<std::uint8_t> flat(nt, 0);
   std::vector<std::uint32_t> pending, later;
@@ -322,9 +325,9 @@ void PolyhedronBuilder::flipSlivers() {
       tri[u] = {b, c, d}, nb[u] = {nbc, ncd, t};
       nb[nda][edgeSlot(tri[nda], a, d)] = t;
       nb[nbc][edgeSlot(tri[nbc], c, b)] = u;
-      sourceFace[t] = sourceFace[u];
+      out_.sourceFace_[t] = out_.sourceFace_[u];
       flat[t] = 0;
-      ++slivers;
+      ++out_.slivers_;
     }
     if (later.size() == pending.size()) {
       const std::uint32_t t = later.front();
@@ -342,8 +345,8 @@ void PolyhedronBuilder::flipSlivers() {
 // it without folding back over the triangle. Where some edges are convex and others reflex,
 // the minority is the reflex side (the mesh may be inverted as a whole).
 void PolyhedronBuilder::checkConvexEdges() {
-  const std::vector<Vec3>& v = vertices;
-  std::vector<Triangle>&tri = triangles, &nb = neighbours;
+  const std::vector<Vec3>& v = out_.vertices_;
+  std::vector<Triangle>&tri = out_.triangles_, &nb = out_.neighbours_;
   const auto nt = static_cast<std::uint32_t>(tri.size());
   std::size_t convex = 0, reflex = 0;
   std::uint32_t firstConvex = kNone, firstReflex = kNone;
@@ -375,8 +378,8 @@ void PolyhedronBuilder::checkConvexEdges() {
     throwReflex(firstReflex, firstConvex, reflex <= convex);
   }
   if (convex == 0 && reflex == 0) throw GeometryError("zero volume: every face lies in one plane");
-  inverted = convex == 0;
-  if (inverted)
+  out_.inverted_ = convex == 0;
+  if (out_.inverted_)
     for (std::uint32_t t = 0; t < nt; ++t) {
       std::swap(tri[t][1], tri[t][2]);
       nb[t] = {nb[t][2], nb[t][1], nb[t][0]};
@@ -386,8 +389,9 @@ void PolyhedronBuilder::checkConvexEdges() {
 void PolyhedronBuilder::throwReflex(std::uint32_t firstReflex, std::uint32_t firstConvex,
                                     bool reflexIsMinority) const {
   const std::uint32_t h = reflexIsMinority ? firstReflex : firstConvex;
-  const std::uint32_t t = h / 3, k = h % 3, u = neighbours[t][k];
-  throw GeometryError("not convex: reflex " + edgeName(triangles[t][k], triangles[t][(k + 1) % 3]) +
+  const std::uint32_t t = h / 3, k = h % 3, u = out_.neighbours_[t][k];
+  throw GeometryError("not convex: reflex " +
+                          edgeName(out_.triangles_[t][k], out_.triangles_[t][(k + 1) % 3]) +
                           " between " + faceName(t) + " and " + faceName(u),
                       std::max(triangleLine(t), triangleLine(u)));
 }

@@ -28,13 +28,16 @@ long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]);
 // "(x, y, z)" with enough digits to find the point again
 std::string show(Vec3 p);
 
-// Validates and normalises a mesh, step by step; the steps run in the order declared.
+// Validates and normalises a mesh into a ConvexPolyhedron, step by step; the steps run in
+// the order declared.
 class PolyhedronBuilder {
  public:
   using Triangle = ConvexPolyhedron::Triangle;
 
-  // `suspects`, when given, receives the input vertices a failed convexity check blames
-  PolyhedronBuilder(const MeshData& mesh, std::vector<std::uint32_t>* suspects);
+  // fills `out` from `mesh`; `suspects`, when given, receives the input vertices a failed
+  // convexity check blames
+  PolyhedronBuilder(ConvexPolyhedron& out, const MeshData& mesh,
+                    std::vector<std::uint32_t>* suspects);
 
   // === the mesh as given (polyhedron_checks.cpp)
   // faceStart and the line vectors agree with the data; not too many vertices (UsageError)
@@ -66,17 +69,7 @@ class PolyhedronBuilder {
   // the surface wraps around its inside exactly once
   void checkWindsOnce() const;
   // the exact bounding box of the vertices
-  Box3 bounds() const;
-
-  // the result
-  std::vector<Vec3> vertices;
-  std::vector<Triangle> triangles;
-  std::vector<Triangle> neighbours;
-  std::vector<std::uint32_t> sourceFace;
-  std::vector<std::uint32_t> sourceVertex;
-  std::optional<Vec3> centre;
-  std::size_t merged = 0, unused = 0, slivers = 0;
-  bool inverted = false;
+  void findBounds();
 
  private:
   // "vertex K (x, y, z)" for vertex k, K its input index
@@ -98,6 +91,7 @@ class PolyhedronBuilder {
   // per axis so that no product in a solid angle overflows or underflows
   std::vector<Vec3> directionsFromInside() const;
 
+  ConvexPolyhedron& out_;
   const MeshData& mesh_;
   std::vector<std::uint32_t>* suspects_;
   std::vector<std::uint8_t> used_;         // input vertex used by a face
