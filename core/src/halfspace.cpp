@@ -26,16 +26,13 @@ void HalfspaceLocator::locate(std::span<const Vec3> points,
 }
 
 Trace3D HalfspaceLocator::trace(Vec3 p) const {
-  Trace3D t;
-  t.method = Method3D::Halfspace;
-  detail::TraceSink3D sink{t};
-  if (!detail::isFinite(p)) {
-    sink.nonFinite();
-    t.result = Location::Outside;
-    return t;
-  }
-  t.result = detail::testAll(surface_, p, sink);
-  return t;
+  return detail::traced(Method3D::Halfspace, std::nullopt, [&](auto& sink) {
+    if (!detail::isFinite(p)) {
+      sink.nonFinite();
+      return Location::Outside;
+    }
+    return detail::testAll(surface_, p, sink);
+  });
 }
 
 Stats3D HalfspaceLocator::stats() const {

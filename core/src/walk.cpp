@@ -88,12 +88,7 @@ void WalkLocator::locate(std::span<const Vec3> points, std::span<Location> out) 
 }
 
 Trace3D WalkLocator::trace(Vec3 p) const {
-  Trace3D t;
-  t.method = Method3D::Walk;
-  t.centre = centre_;
-  detail::TraceSink3D sink{t};
-  t.result = run(p, sink);
-  return t;
+  return detail::traced(Method3D::Walk, centre_, [&](auto& sink) { return run(p, sink); });
 }
 
 Stats3D WalkLocator::stats() const {

@@ -118,11 +118,17 @@ struct SurfaceCopy {
 
 class HalfspaceLocator {
  public:
+  // keeps a copy of the surface; needs no centre
   explicit HalfspaceLocator(const ConvexPolyhedron& polyhedron);
+  // the sign of every face plane, in order, up to the first outer side
   Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, over the shorter of the two spans
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the plane tests locate(p) makes
   Trace3D trace(Vec3 p) const;
+  // faces, vertices, memory and build time; no cells
   Stats3D stats() const;
+  // none: the method has no cells
   std::vector<Cell3D> cells() const { return {}; }
 
  private:
@@ -135,13 +141,19 @@ class HalfspaceLocator {
 
 class WalkLocator {
  public:
+  // keeps the surface and its adjacency, and about F^(1/3) start faces spread over it
   explicit WalkLocator(const ConvexPolyhedron& polyhedron);
   // the centre, when the polyhedron has one (else every query tests all faces)
   std::optional<Vec3> centre() const noexcept { return centre_; }
+  // walks from the start face nearest p's direction, then tests one plane
   Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, over the shorter of the two spans
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the faces visited, every edge test, the final plane test
   Trace3D trace(Vec3 p) const;
+  // faces, vertices, memory and build time; no cells
   Stats3D stats() const;
+  // none: the walk has no cells
   std::vector<Cell3D> cells() const { return {}; }
 
  private:
@@ -173,9 +185,14 @@ class CubemapLocator {
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
+  // aims at p's cell; its radii decide, else its faces' planes (or a walk in a crowded cell)
   Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, in stages that overlap the tables' cache misses (AVX2 where the
+  // CPU has it); the same answers
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the cube face and cell, the radii, the plane tests or the walk
   Trace3D trace(Vec3 p) const;
+  // cells, nodes, entries per cell, levels, memory and build time
   Stats3D stats() const;
   // every leaf cell, cube face by cube face
   std::vector<Cell3D> cells() const;

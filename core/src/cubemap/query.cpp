@@ -29,12 +29,7 @@ Location CubemapLocator::locate(Vec3 p) const noexcept {
 }
 
 Trace3D CubemapLocator::trace(Vec3 p) const {
-  Trace3D t;
-  t.method = Method3D::Cubemap;
-  t.centre = centre();
-  detail::TraceSink3D sink{t};
-  t.result = run(p, sink);
-  return t;
+  return detail::traced(Method3D::Cubemap, centre(), [&](auto& sink) { return run(p, sink); });
 }
 
 }  // namespace convexloc

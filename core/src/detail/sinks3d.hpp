@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "convexloc/locate3d.hpp"
 
@@ -54,6 +55,17 @@ struct TraceSink3D {
   void nonFinite() { t.nonFinite = true; }
   void atCentre() { t.atCentre = true; }
 };
+
+// the trace of one query: `query(sink)` runs it into a TraceSink3D, its answer the result
+template <class Query>
+Trace3D traced(Method3D method, std::optional<Vec3> centre, Query&& query) {
+  Trace3D t;
+  t.method = method;
+  t.centre = centre;
+  TraceSink3D sink{t};
+  t.result = query(sink);
+  return t;
+}
 
 }  // namespace
 }  // namespace convexloc::detail
