@@ -108,7 +108,7 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   }
 
   // Qhull works in doubles and overflows on coordinates near 1e190 (it squares them for its
-  // normals, and crashed on such input); it only decides which points form the hull, which
+  // normals); it only decides which points form the hull, which
   // is then checked exactly, so it gets the coordinates scaled by one power of two (exact
   // but for points 2^1000 times smaller than the largest, which may become zero there).
   double largest = 0.0;
