@@ -9,6 +9,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/polyhedron_build.hpp"
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
@@ -94,12 +95,7 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   {
     std::size_t b = 1, c = 0, d = 0;
     while (b < points.size() && points[b] == points[0]) ++b;
-    auto line = [&](std::size_t i) {
-      const Vec3 p = points[0], q = points[b], r = points[i];
-      return orient2d({p.x, p.y}, {q.x, q.y}, {r.x, r.y}) == 0 &&
-             orient2d({p.y, p.z}, {q.y, q.z}, {r.y, r.z}) == 0 &&
-             orient2d({p.z, p.x}, {q.z, q.x}, {r.z, r.x}) == 0;
-    };
+    auto line = [&](std::size_t i) { return detail::collinear(points[0], points[b], points[i]); };
     for (c = b + 1; c < points.size() && line(c); ++c) {
     }
     for (d = c + 1; d < points.size() && orient3d(points[0], points[b], points[c], points[d]) == 0;
@@ -112,7 +108,7 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   }
 
   // Qhull works in doubles and overflows on coordinates near 1e190 (it squares them for its
-  // normals, and crashed on such input); it only decides which points form the hull, which
+  // normals); it only decides which points form the hull, which
   // is then checked exactly, so it gets the coordinates scaled by one power of two (exact
   // but for points 2^1000 times smaller than the largest, which may become zero there).
   double largest = 0.0;

@@ -102,20 +102,37 @@ struct Cell3D {
 // faces per cell above which a cubemap cell is searched by a walk
 inline constexpr std::size_t kCrowdedCell3D = 8;
 
+namespace detail {
+// the surface a 3D locator keeps its own copy of, so that the polyhedron may go away
+struct SurfaceCopy {
+  std::vector<Vec3> vertices;
+  std::vector<ConvexPolyhedron::Triangle> faces;  // ConvexPolyhedron::triangles()
+  SurfaceCopy() = default;
+  explicit SurfaceCopy(const ConvexPolyhedron& polyhedron);
+  // the bytes both buffers hold
+  std::size_t bytes() const noexcept;
+};
+}  // namespace detail
+
 // === halfspace, O(F): inside iff on the inner side of every face plane (eq. 2)
 
 class HalfspaceLocator {
  public:
+  // keeps a copy of the surface; needs no centre
   explicit HalfspaceLocator(const ConvexPolyhedron& polyhedron);
+  // the sign of every face plane, in order, up to the first outer side
   Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, over the shorter of the two spans
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the plane tests locate(p) makes
   Trace3D trace(Vec3 p) const;
+  // faces, vertices, memory and build time; no cells
   Stats3D stats() const;
+  // none: the method has no cells
   std::vector<Cell3D> cells() const { return {}; }
 
  private:
-  std::vector<Vec3> v_;
-  std::vector<ConvexPolyhedron::Triangle> tri_;
+  detail::SurfaceCopy surface_;
   double buildSeconds_ = 0.0;
 };
 
@@ -124,29 +141,36 @@ class HalfspaceLocator {
 
 class WalkLocator {
  public:
+  // keeps the surface and its adjacency, and about F^(1/3) start faces spread over it
   explicit WalkLocator(const ConvexPolyhedron& polyhedron);
-  Location locate(Vec3 p) const noexcept;
-  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
-  Trace3D trace(Vec3 p) const;
-  Stats3D stats() const;
-  std::vector<Cell3D> cells() const { return {}; }
   // the centre, when the polyhedron has one (else every query tests all faces)
   std::optional<Vec3> centre() const noexcept { return centre_; }
+  // walks from the start face nearest p's direction, then tests one plane
+  Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, over the shorter of the two spans
+  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the faces visited, every edge test, the final plane test
+  Trace3D trace(Vec3 p) const;
+  // faces, vertices, memory and build time; no cells
+  Stats3D stats() const;
+  // none: the walk has no cells
+  std::vector<Cell3D> cells() const { return {}; }
 
  private:
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
-  std::vector<Vec3> v_;
-  std::vector<ConvexPolyhedron::Triangle> tri_;
-  std::vector<ConvexPolyhedron::Triangle> nb_;
-  std::vector<std::uint32_t> starts_;           // faces a walk may start from
-  std::vector<std::array<float, 3>> startDir_;  // their directions from the centre, unit length
+  detail::SurfaceCopy surface_;
+  std::vector<ConvexPolyhedron::Triangle> neighbours_;  // ConvexPolyhedron::neighbours()
+  std::vector<std::uint32_t> startFaces_;               // faces a walk may start from
+  std::vector<std::array<float, 3>> startDirections_;   // theirs from the centre, unit length
   std::optional<Vec3> centre_;
-  std::uint32_t cap_ = 0;
+  std::uint32_t maxVisits_ = 0;  // faces a walk visits before it gives up and tests all
   double buildSeconds_ = 0.0;
 };
 
 // === cubemap, O(1): the paper's "spherical" subdivision
+
+class CubemapBuilder;
 
 // A centre c strictly inside; the direction d = p - c picks a cube face by its dominant axis
 // and a point (s, t) = (d_u, d_v) / |d_major| in [-1, 1]^2 on it; a G x G grid per cube face,
@@ -154,15 +178,21 @@ class WalkLocator {
 // projection meets it (built conservatively with the query's own index function); the query
 // tests p against those faces' planes, unless the cell's two radii decide first (most points
 // of a large polyhedron). Memory stays within 128 bytes per face plus 32 KiB (the constant
-// lets a small polyhedron have a grid worth drawing).
+// lets a small polyhedron have a grid worth drawing). The correctness argument heads
+// core/src/cubemap/index.hpp.
 class CubemapLocator {
  public:
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
+  // aims at p's cell; its radii decide, else its faces' planes (or a walk in a crowded cell)
   Location locate(Vec3 p) const noexcept;
+  // locate(p) for each point, in stages that overlap the tables' cache misses (AVX2 where the
+  // CPU has it); the same answers
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
+  // the cube face and cell, the radii, the plane tests or the walk
   Trace3D trace(Vec3 p) const;
+  // cells, nodes, entries per cell, levels, memory and build time
   Stats3D stats() const;
   // every leaf cell, cube face by cube face
   std::vector<Cell3D> cells() const;
@@ -170,12 +200,13 @@ class CubemapLocator {
   // all faces)
   std::optional<Vec3> centre() const noexcept;
   // G, the base grid's cells per side on each cube face (0 when there are no cells)
-  std::uint32_t resolution() const noexcept { return g_; }
+  std::uint32_t resolution() const noexcept { return resolution_; }
   // half the side of the cube, centred on the centre, that cells() draws on (it encloses
   // the polyhedron)
-  double cubeHalfSize() const noexcept { return half_; }
+  double cubeHalfSize() const noexcept { return cubeHalfSize_; }
 
  private:
+  friend class CubemapBuilder;
   // A leaf also keeps two squared distances from the centre, rounded outward: a point of the
   // cell nearer than sqrt(in2) is inside (nearer than every point of the listed faces that
   // the cell's pyramid sees), one farther than sqrt(out2) outside (beyond where its ray
@@ -191,38 +222,39 @@ class CubemapLocator {
   // where a query's direction points: cube face, coordinates on it, deepest-level cell
   struct Aim {
     int face = 0;
-    double s = 0.0, t = 0.0, d2 = 0.0;
-    std::uint64_t X = 0, Y = 0;
-    std::uint32_t node = 0;  // the base cell
+    double s = 0.0, t = 0.0, d2 = 0.0;   // d2: squared distance from the centre
+    std::uint64_t deepI = 0, deepJ = 0;  // the cell's column and row at the deepest level
+    std::uint32_t baseCell = 0;          // the base cell (a node index) holding it
   };
   // 1: aimed; 0: p is the centre; -1: no cell (not finite, no centre, direction overflows)
   [[gnu::always_inline]] int aim(Vec3 p, Aim& a) const noexcept;
-  // the leaf holding cell (X, Y) of the deepest level, down from `node` at `level` (which
-  // becomes the leaf's level)
-  [[gnu::always_inline]] std::uint32_t leafAt(std::uint64_t X, std::uint64_t Y, std::uint32_t node,
-                                              int& level) const noexcept;
-  void buildRadii();
+  // the leaf holding cell (deepI, deepJ) of the deepest level, down from `node` at `level`
+  // (which becomes the leaf's level)
+  [[gnu::always_inline]] std::uint32_t leafAt(std::uint64_t deepI, std::uint64_t deepJ,
+                                              std::uint32_t node, int& level) const noexcept;
+  // the whole query; run and fromLeaf stay out of line, apart from the inline aim and radii
+  // that decide most points in locate() and the batch
   template <class Sink>
-  Location run(Vec3 p, Sink& sink) const noexcept;
+  [[gnu::noinline]] Location run(Vec3 p, Sink& sink) const noexcept;
   // p's answer from its leaf (d2: its squared distance from the centre): the radii, else
   // the leaf's faces, or a walk
   template <class Sink>
-  Location fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sink) const noexcept;
+  [[gnu::noinline]] Location fromLeaf(Vec3 p, double d2, const Node& leaf,
+                                      Sink& sink) const noexcept;
   // visit(node, cube face, level, i, j) for every leaf, cube face by cube face, each base
   // cell's quadtree depth first, children in order
   template <class Visit>
   void forEachLeaf(Visit&& visit) const;
-  std::vector<Vec3> v_;
-  std::vector<ConvexPolyhedron::Triangle> tri_;
-  std::vector<ConvexPolyhedron::Triangle> nb_;
+  detail::SurfaceCopy surface_;
+  std::vector<ConvexPolyhedron::Triangle> neighbours_;  // ConvexPolyhedron::neighbours()
   Table<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
   Table<std::uint32_t> entries_;  // each leaf's faces
-  Vec3 c_{};
+  Vec3 centre_{};
   bool centred_ = false;
-  std::uint32_t g_ = 1;
-  int depth_ = 0;       // the deepest level a cell may have
-  double scale_ = 0.0;  // G * 2^(depth - 1): (s + 1) * scale_ is the index at the deepest level
-  double half_ = 1.0;
+  std::uint32_t resolution_ = 1;  // G
+  int deepestLevel_ = 0;          // the deepest level a cell may have
+  double deepScale_ = 0.0;        // G * 2^(deepest - 1): (s + 1) * deepScale_ is the deepest index
+  double cubeHalfSize_ = 1.0;
   double buildSeconds_ = 0.0;
 };
 

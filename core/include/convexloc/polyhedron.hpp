@@ -63,6 +63,10 @@ struct MeshData {
 
 // === The polyhedron
 
+namespace detail {
+class PolyhedronBuilder;
+}
+
 // A closed convex polyhedron with positive volume, as triangles counter-clockwise from
 // outside. Immutable once built.
 class ConvexPolyhedron {
@@ -134,6 +138,7 @@ class ConvexPolyhedron {
   double area() const noexcept;
 
  private:
+  friend class detail::PolyhedronBuilder;
   ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32_t>* suspects);
 
   std::vector<Vec3> vertices_;

@@ -1,0 +1,534 @@
+// convexloc — the cube map's build: the base grid and the quadtree of crowded cells, flat.
+//
+// Each face's cone from the centre is projected onto the cube faces it meets as a polygon
+// relaxed beyond every rounding (see cubemap/index.hpp), and rasterised onto the cells with
+// the query's own cell index. The base grid (6 G^2 cells) is coarsened until it fits the
+// memory budget; then crowded cells are split into 4, breadth first, while the budget
+// allows; a cell that no split helps (many faces meeting at one vertex) stays crowded and is
+// searched by a walk. Nodes and entries are stored flat (CSR), so memory is O(F) whatever
+// the faces' sizes.
+#include "cubemap/build.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+
+#include "convexloc/error.hpp"
+#include "convexloc/timing.hpp"
+#include "cubemap/index.hpp"
+
+namespace convexloc {
+namespace cubemap {
+namespace {
+
+constexpr double kEps = 0x1p-53;
+// how far, in (s, t) units, a query's computed coordinates may stray: far above their error
+constexpr double kMargin = 0x1p-40;
+// extra room that keeps rounding in the build's clipping from losing a face
+constexpr double kSlack = 0x1p-42;
+constexpr double kReach = kMargin + kSlack;
+// error of a computed edge-plane normal component, per unit of its permanent
+constexpr double kNormalError = 5.25 * kEps;
+// absolute slack for products that underflow in the scaled normals
+constexpr double kUnderflow = 0x1p-1060;
+// relative margin by which all three vertices must miss a cube face to skip it
+constexpr double kReject = 0x1p-30;
+// the most cells per side at any level: 2^31
+constexpr int kMaxSideBits = 31;
+// the largest G accepted
+constexpr std::uint32_t kMaxResolution = 8192;
+// The default G is at least this: where the faces are few, each cell's radii then bound
+// only the part of a face the cell sees, and a thinner shell is left to the face tests; the
+// grid still fits the constant part of the memory budget.
+constexpr std::uint32_t kSmallestDefault = 16;
+// the part of the memory budget that does not grow with the faces
+constexpr std::size_t kFixedBudget = 32 * 1024;
+
+// the cone of face t seen from c, scaled exactly; false when something is not finite
+bool coneOf(const std::vector<Vec3>& v, const ConvexPolyhedron::Triangle& t, Vec3 c,
+            const PowerOfTwo& scale, Cone& k) {
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]];
+    k.d[i][0] = scale(p.x - c.x);
+    k.d[i][1] = scale(p.y - c.y);
+    k.d[i][2] = scale(p.z - c.z);
+  }
+  bool ok = true;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]], q = v[t[(i + 1) % 3]];
+    const double* d = k.d[i];
+    const double e[3] = {scale(q.x - p.x), scale(q.y - p.y), scale(q.z - p.z)};
+    double perm = 0;
+    for (int a = 0; a < 3; ++a) {
+      const int u = (a + 1) % 3, w = (a + 2) % 3;
+      const double l = d[u] * e[w], r = d[w] * e[u];
+      k.n[i][a] = l - r;
+      perm += std::fabs(l) + std::fabs(r);
+      ok &= std::isfinite(k.n[i][a]);
+    }
+    k.bound[i] = kNormalError * perm + kUnderflow;
+    ok &= std::isfinite(perm);
+  }
+  return ok;
+}
+
+// keeps the part of P where a + b s + c t >= 0 (Sutherland-Hodgman)
+void clip(Poly& P, double a, double b, double c) {
+  Poly out;
+  for (int i = 0; i < P.n; ++i) {
+    const Vec2 p = P.p[i], q = P.p[(i + 1) % P.n];
+    const double fp = a + b * p.x + c * p.y, fq = a + b * q.x + c * q.y;
+    if (fp >= 0) out.p[out.n++] = p;
+    if ((fp >= 0) != (fq >= 0)) {
+      const double r = fp / (fp - fq);
+      out.p[out.n++] = {p.x + r * (q.x - p.x), p.y + r * (q.y - p.y)};
+    }
+  }
+  P = out;
+}
+
+// The polygon P of the face's cone on cube face `face` (see the notes above); false when
+// the cone surely misses the face's square.
+bool onCubeFace(const Cone& k, int face, Poly& P) {
+  const int a = face / 2, u = (a + 1) % 3, w = (a + 2) % 3;
+  const double sigma = (face & 1) ? -1.0 : 1.0;
+  // quick rejection: all three directions strictly on the outer side of one of the
+  // pyramid's bounding planes (or behind it), by a relative margin far above rounding
+  for (int rule = 0; rule < 5; ++rule) {
+    bool all = true;
+    for (int i = 0; i < 3 && all; ++i) {
+      const double* d = k.d[i];
+      const double da = sigma * d[a];
+      const double f = rule == 0   ? da
+                       : rule == 1 ? da + d[u]
+                       : rule == 2 ? da - d[u]
+                       : rule == 3 ? da + d[w]
+                                   : da - d[w];
+      all = f < -kReject * (std::fabs(d[a]) + std::fabs(d[u]) + std::fabs(d[w]));
+    }
+    if (all) return false;
+  }
+  const double L = 1 + kReach;
+  P.n = 4;
+  P.p[0] = {-L, -L};
+  P.p[1] = {L, -L};
+  P.p[2] = {L, L};
+  P.p[3] = {-L, L};
+  for (int i = 0; i < 3; ++i) {
+    const double alpha = sigma * k.n[i][a], beta = k.n[i][u], gamma = k.n[i][w];
+    const double relax = k.bound[i] + kSlack * (std::fabs(beta) + std::fabs(gamma)) +
+                         4 * kEps * (std::fabs(alpha) + std::fabs(beta) + std::fabs(gamma));
+    clip(P, alpha + relax, beta, gamma);
+    if (P.n == 0) return false;
+  }
+  return true;
+}
+
+// The bounding box, in (s, t) of cube face `face`, of face t's projection when all three
+// vertices lie strictly in front of that cube face (then the projection is the triangle of
+// the projected vertices), grown by far more than the rounding of their coordinates; as a
+// polygon (corners 0 and 2 are the low and high ones). False otherwise.
+bool projectedBox(const std::vector<Vec3>& v, const ConvexPolyhedron::Triangle& t, Vec3 c, int face,
+                  Poly& B) {
+  const int a = face / 2, u = (a + 1) % 3, w = (a + 2) % 3;
+  const double sigma = (face & 1) ? -1.0 : 1.0;
+  double lo[2] = {0, 0}, hi[2] = {0, 0}, big = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 p = v[t[i]];
+    const double d[3] = {p.x - c.x, p.y - c.y, p.z - c.z};
+    const double major = sigma * d[a];
+    if (!(major > 0)) return false;
+    const double st[2] = {d[u] / major, d[w] / major};
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = i ? std::min(lo[k], st[k]) : st[k];
+      hi[k] = i ? std::max(hi[k], st[k]) : st[k];
+      big = std::max(big, std::fabs(st[k]));
+    }
+  }
+  if (!(big < 0x1p40)) return false;  // also false for NaN
+  const double grow = 0x1p-50 * (1 + big);
+  B.n = 4;
+  B.p[0] = {lo[0] - grow, lo[1] - grow};
+  B.p[1] = {hi[0] + grow, lo[1] - grow};
+  B.p[2] = {hi[0] + grow, hi[1] + grow};
+  B.p[3] = {lo[0] - grow, hi[1] + grow};
+  return true;
+}
+
+// Narrows [first, last] to the cells, at the level with K = (cells per side) / 2, whose
+// range of one coordinate grown by kReach meets [lo, hi] (empty when first > last).
+inline void cellRange(double lo, double hi, double K, std::int64_t& first, std::int64_t& last) {
+  first = std::max(first, static_cast<std::int64_t>(std::ceil((lo - kReach + 1) * K)) - 1);
+  last = std::min(last, static_cast<std::int64_t>(std::floor((hi + kReach + 1) * K)));
+}
+
+// Calls cell(i, j) for every cell at the level with K = (cells per side) / 2, within the
+// index window [i0, i1] x [j0, j1], whose square grown by kReach meets P.
+template <class F>
+void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1, std::int64_t j0,
+               std::int64_t j1, F&& cell) {
+  double tmin = P.p[0].y, tmax = P.p[0].y;
+  for (int k = 1; k < P.n; ++k) {
+    tmin = std::min(tmin, P.p[k].y);
+    tmax = std::max(tmax, P.p[k].y);
+  }
+  std::int64_t jlo = j0, jhi = j1;
+  cellRange(tmin, tmax, K, jlo, jhi);
+  for (std::int64_t j = jlo; j <= jhi; ++j) {
+    const double ta = -1 + static_cast<double>(j) / K - kReach;
+    const double tb = -1 + static_cast<double>(j + 1) / K + kReach;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int k = 0; k < P.n; ++k) {
+      const Vec2 p = P.p[k], q = P.p[(k + 1) % P.n];
+      if (p.y >= ta && p.y <= tb) {
+        lo = std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+      }
+      for (double y : {ta, tb})
+        if ((p.y < y) != (q.y < y)) {
+          const double x = p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+    }
+    if (lo > hi) continue;
+    std::int64_t ilo = i0, ihi = i1;
+    cellRange(lo, hi, K, ilo, ihi);
+    for (std::int64_t i = ilo; i <= ihi; ++i) cell(i, j);
+  }
+}
+
+// the deepest level for base resolution g: at most 2^31 cells per side
+int depthFor(std::uint32_t g) {
+  const int bits = static_cast<int>(std::bit_width(g - 1));
+  return std::min(kMaxLevel, kMaxSideBits - bits);
+}
+
+}  // namespace
+}  // namespace cubemap
+
+using namespace cubemap;
+
+namespace {
+
+// the box (s0, s1, t0, t1) as a polygon
+Poly boxPoly(const std::array<double, 4>& b) {
+  Poly B;
+  B.n = 4;
+  B.p[0] = {b[0], b[2]}, B.p[1] = {b[1], b[2]}, B.p[2] = {b[1], b[3]}, B.p[3] = {b[0], b[3]};
+  return B;
+}
+
+}  // namespace
+
+CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution) {
+  const auto t0 = Clock::now();
+  CubemapBuilder(*this, polyhedron, resolution).build();
+  buildSeconds_ = secondsSince(t0);
+}
+
+// === base grid
+
+CubemapBuilder::CubemapBuilder(CubemapLocator& locator, const ConvexPolyhedron& polyhedron,
+                               std::uint32_t resolution)
+    : locator_(locator) {
+  if (resolution > kMaxResolution)
+    throw UsageError("cubemap: the resolution is at most " + std::to_string(kMaxResolution));
+  locator_.surface_ = detail::SurfaceCopy(polyhedron);
+  locator_.neighbours_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
+  locator_.resolution_ =
+      resolution ? resolution : defaultResolution(locator_.surface_.faces.size());
+  centre_ = polyhedron.centre();
+}
+
+std::uint32_t CubemapBuilder::defaultResolution(std::size_t faces) {
+  // about 4 faces per base cell up to G = 160, so that few cells are crowded and refined and
+  // a batch meets few inner nodes; beyond, about 8, which keeps the build of millions of
+  // faces fast
+  const double perCell8 = std::sqrt(static_cast<double>(faces) / 8),
+               perCell4 = std::min(std::sqrt(static_cast<double>(faces) / 4), 160.0);
+  return static_cast<std::uint32_t>(std::clamp<double>(std::round(std::max(perCell8, perCell4)),
+                                                       kSmallestDefault, kMaxResolution));
+}
+
+void CubemapBuilder::build() {
+  CubemapLocator& L = locator_;
+  if (!aimFromCentre() || !buildBaseGrid()) {
+    L.resolution_ = 0;  // no cells: every query tests all faces
+    return;
+  }
+  L.centred_ = true;
+  L.deepScale_ = std::ldexp(static_cast<double>(L.resolution_), L.deepestLevel_ - 1);
+  refineCrowdedCells();
+  compactEntries();
+  L.nodes_.shrink_to_fit();
+  L.entries_.shrink_to_fit();
+  setLeafRadii();
+}
+
+bool CubemapBuilder::aimFromCentre() {
+  CubemapLocator& L = locator_;
+  double extent = 0;
+  if (centre_) {
+    const Vec3 c = L.centre_ = *centre_;
+    for (const Vec3& p : L.surface_.vertices)
+      extent = std::max({extent, std::fabs(p.x - c.x), std::fabs(p.y - c.y), std::fabs(p.z - c.z)});
+  }
+  // no centre (a polyhedron thinner than the double grid), or one so vast that its
+  // directions overflow
+  if (!centre_ || !std::isfinite(extent) || !(extent > 0)) return false;
+  L.cubeHalfSize_ = extent;
+  scale_ = PowerOfTwo(-std::ilogb(extent));  // extent scaled into [1, 2)
+  return true;
+}
+
+std::size_t CubemapBuilder::memoryBudget() const {
+  // 120 bytes per face in all, plus kFixedBudget (so that small polyhedra, the ones a
+  // lecturer draws, still get a grid worth showing, and fast radii)
+  const CubemapLocator& L = locator_;
+  const std::size_t fixed =
+      sizeof(CubemapLocator) + L.surface_.bytes() + detail::bytesOf(L.neighbours_);
+  const std::size_t total = 120 * L.surface_.faces.size() + kFixedBudget;
+  return total > fixed ? total - fixed : 0;
+}
+
+template <class Visit>
+bool CubemapBuilder::forEachProjection(Visit&& visit) const {
+  const detail::SurfaceCopy& surface = locator_.surface_;
+  Cone k;
+  Poly P;
+  const auto faces = static_cast<std::uint32_t>(surface.faces.size());
+  for (std::uint32_t f = 0; f < faces; ++f) {
+    if (!coneOf(surface.vertices, surface.faces[f], locator_.centre_, scale_, k)) return false;
+    for (int cf = 0; cf < 6; ++cf)
+      if (onCubeFace(k, cf, P)) visit(f, cf, P);
+  }
+  return true;
+}
+
+bool CubemapBuilder::buildBaseGrid() {
+  budget_ = memoryBudget();
+  std::vector<std::uint32_t> counts;
+  if (!fitBaseGrid(counts)) return false;  // a direction overflowed
+  fillBaseCells(counts);
+  return true;
+}
+
+bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
+  std::uint32_t& g = locator_.resolution_;
+  while (g > 1 && 6 * static_cast<std::size_t>(g) * g * sizeof(Node) > budget_) g /= 2;
+  for (;;) {
+    locator_.deepestLevel_ = depthFor(g);
+    const std::size_t cells = 6 * static_cast<std::size_t>(g) * g;
+    counts.assign(cells + 1, 0);
+    const double K = levelScale(g, 0);
+    const std::int64_t last = g - 1;
+    std::size_t entries = 0;
+    const bool ok = forEachProjection([&](std::uint32_t, int cf, const Poly& P) {
+      rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
+        ++counts[baseCellIndex(cf, i, j, g)];
+        ++entries;
+      });
+    });
+    if (!ok) return false;
+    if (g == 1 || cells * sizeof(Node) + entries * sizeof(std::uint32_t) <= budget_) return true;
+    g = std::max<std::uint32_t>(1, g / 2);
+  }
+}
+
+void CubemapBuilder::fillBaseCells(const std::vector<std::uint32_t>& counts) {
+  CubemapLocator& L = locator_;
+  const std::uint32_t g = L.resolution_;
+  const std::size_t baseCells = 6 * static_cast<std::size_t>(g) * g;
+  L.nodes_.resize(baseCells);
+  std::uint32_t at = 0;
+  for (std::size_t c = 0; c < baseCells; ++c) {
+    L.nodes_[c] = {at, counts[c]};
+    at += counts[c];
+  }
+  L.entries_.resize(at);
+  std::vector<std::uint32_t> cursor(baseCells);
+  for (std::size_t c = 0; c < baseCells; ++c) cursor[c] = L.nodes_[c].first;
+  const double K = levelScale(g, 0);
+  const std::int64_t last = g - 1;
+  forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
+    rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
+      L.entries_[cursor[baseCellIndex(cf, i, j, g)]++] = f;
+    });
+  });
+}
+
+// === quadtree
+
+void CubemapBuilder::refineCrowdedCells() {
+  CubemapLocator& L = locator_;
+  queueCrowdedBaseCells();
+  live_ = L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t);
+  liveEntries_ = L.entries_.size();
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const Pending q = queue_[head];
+    if (q.level >= L.deepestLevel_) continue;
+    const Node parent = L.nodes_[q.node];
+    sortFaces(q, parent);
+    const int levels = chainLevels(q);
+    const std::size_t added = listChildren(q, levels);
+    if (levels == 1 && splitIsFutile(parent, added)) continue;
+    const std::size_t grown = live_ + 4 * sizeof(Node) * levels + added * sizeof(std::uint32_t) -
+                              parent.count * sizeof(std::uint32_t);
+    if (grown > budget_ || L.entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
+      break;
+    commitChildren(q, levels);
+    live_ = grown;
+    liveEntries_ = liveEntries_ + added - parent.count;
+    if (L.entries_.size() > 2 * liveEntries_ + (1u << 20)) compactEntries();
+  }
+}
+
+void CubemapBuilder::queueCrowdedBaseCells() {
+  const CubemapLocator& L = locator_;
+  for (std::size_t c = 0; c < L.nodes_.size(); ++c)
+    if (L.nodes_[c].count > kCrowdedCell3D) {
+      const BaseCell base = baseCellAt(c, L.resolution_);
+      queue_.push_back(
+          {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});
+    }
+}
+
+void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
+  // a small face in front of the cube face goes by its box (a superset of its projection,
+  // so still conservative); others by their polygon
+  const CubemapLocator& L = locator_;
+  const std::vector<Vec3>& v = L.surface_.vertices;
+  const double K1 = levelScale(L.resolution_, q.level + 1);
+  small_.clear(), large_.clear(), smallBoxes_.clear(), largePolys_.clear();
+  std::array<double, 4>& all = smallBounds_;
+  all = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
+  Cone k;
+  Poly P, B;
+  for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
+    const std::uint32_t f = L.entries_[e];
+    const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
+    if (projectedBox(v, t, L.centre_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
+        B.p[2].y - B.p[0].y <= 1 / K1) {
+      small_.push_back(f);
+      smallBoxes_.push_back({B.p[0].x, B.p[2].x, B.p[0].y, B.p[2].y});
+      all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x), std::min(all[2], B.p[0].y),
+             std::max(all[3], B.p[2].y)};
+    } else if (coneOf(v, t, L.centre_, scale_, k) && onCubeFace(k, q.face, P)) {
+      large_.push_back(f);
+      largePolys_.push_back(P);
+    }
+  }
+}
+
+void CubemapBuilder::smallFacesCells(double K, std::int64_t& i0, std::int64_t& i1, std::int64_t& j0,
+                                     std::int64_t& j1) const {
+  cellRange(smallBounds_[0], smallBounds_[1], K, i0, i1);
+  cellRange(smallBounds_[2], smallBounds_[3], K, j0, j1);
+}
+
+int CubemapBuilder::chainLevels(const Pending& q) const {
+  // while all the small faces stay in one cell, descend several levels at once; only the
+  // large faces are placed in the cells beside the chain
+  const CubemapLocator& L = locator_;
+  int deepest = q.level;
+  if (small_.size() > kCrowdedCell3D) {
+    for (int level = q.level + 1; level <= L.deepestLevel_; ++level) {
+      const std::int64_t n = static_cast<std::int64_t>(L.resolution_) << level;
+      std::int64_t i0 = 0, i1 = n - 1, j0 = 0, j1 = n - 1;
+      smallFacesCells(levelScale(L.resolution_, level), i0, i1, j0, j1);
+      if (i0 != i1 || j0 != j1) break;
+      deepest = level;
+    }
+  }
+  return deepest >= q.level + 2 ? deepest - q.level : 1;
+}
+
+std::size_t CubemapBuilder::listChildren(const Pending& q, int levels) {
+  std::size_t added = 0;
+  std::int64_t ci = q.i, cj = q.j;  // the chain's cell at the level above
+  for (int l = 0; l < levels; ++l) {
+    const double K = levelScale(locator_.resolution_, q.level + 1 + l);
+    const std::int64_t i0 = 2 * ci, j0 = 2 * cj;
+    std::vector<std::uint32_t>(&lists)[4] = lists_[l];
+    for (auto& list : lists) list.clear();
+    auto placer = [&](std::uint32_t f) {
+      return
+          [&, f](std::int64_t i, std::int64_t j) { lists[(j - j0) * 2 + (i - i0)].push_back(f); };
+    };
+    for (std::size_t m = 0; m < large_.size(); ++m)
+      rasterise(largePolys_[m], K, i0, i0 + 1, j0, j0 + 1, placer(large_[m]));
+    if (l + 1 == levels) {
+      for (std::size_t m = 0; m < small_.size(); ++m)
+        rasterise(boxPoly(smallBoxes_[m]), K, i0, i0 + 1, j0, j0 + 1, placer(small_[m]));
+    } else {
+      // the chain's cell at this level: the one cell every small box meets
+      std::int64_t i1 = i0 + 1, j1 = j0 + 1, ii = i0, jj = j0;
+      smallFacesCells(K, ii, i1, jj, j1);
+      ci = ii, cj = jj;
+      lists[(cj - j0) * 2 + (ci - i0)].clear();  // an inner node: its faces go deeper
+    }
+    for (auto& list : lists) added += list.size();
+  }
+  return added;
+}
+
+bool CubemapBuilder::splitIsFutile(const Node& parent, std::size_t added) const {
+  // an ordinary split: stop where a child keeps every face while the others share many (a
+  // vertex all of them meet, which no split separates; a walk searches it instead)
+  std::size_t most = 0;
+  for (const auto& list : lists_[0]) most = std::max(most, list.size());
+  return most == parent.count && added - most > parent.count / 2;
+}
+
+void CubemapBuilder::commitChildren(const Pending& q, int levels) {
+  // an inner chain cell gets its children at the next level
+  std::uint32_t node = q.node;
+  std::int64_t ci = q.i, cj = q.j;
+  for (int l = 0; l < levels; ++l) {
+    const int level = q.level + 1 + l;
+    const std::uint32_t first = addChildren(node, 2 * ci, 2 * cj, q.face, level, lists_[l]);
+    if (l + 1 == levels) break;
+    std::int64_t i1 = 2 * ci + 1, j1 = 2 * cj + 1, ii = 2 * ci, jj = 2 * cj;
+    smallFacesCells(levelScale(locator_.resolution_, level), ii, i1, jj, j1);
+    node = first + static_cast<std::uint32_t>((jj - 2 * cj) * 2 + (ii - 2 * ci));
+    ci = ii, cj = jj;
+  }
+}
+
+std::uint32_t CubemapBuilder::addChildren(std::uint32_t node, std::int64_t i0, std::int64_t j0,
+                                          std::uint8_t face, int level,
+                                          std::vector<std::uint32_t> (&lists)[4]) {
+  CubemapLocator& L = locator_;
+  const auto first = static_cast<std::uint32_t>(L.nodes_.size());
+  for (int c = 0; c < 4; ++c) {
+    L.nodes_.push_back({static_cast<std::uint32_t>(L.entries_.size()),
+                        static_cast<std::uint32_t>(lists[c].size())});
+    L.entries_.insert(L.entries_.end(), lists[c].begin(), lists[c].end());
+    if (lists[c].size() > kCrowdedCell3D)
+      queue_.push_back(
+          {first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+           static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
+  }
+  L.nodes_[node] = {first, kInner};
+  return first;
+}
+
+void CubemapBuilder::compactEntries() {
+  CubemapLocator& L = locator_;
+  Table<std::uint32_t> kept;
+  kept.reserve(liveEntries_);
+  for (Node& nd : L.nodes_) {
+    if (nd.count == kInner) continue;
+    const auto first = static_cast<std::uint32_t>(kept.size());
+    kept.insert(kept.end(), L.entries_.begin() + nd.first,
+                L.entries_.begin() + nd.first + nd.count);
+    nd.first = first;
+  }
+  L.entries_.swap(kept);
+}
+
+}  // namespace convexloc

@@ -1,0 +1,130 @@
+// convexloc (internal) — the cube map's build, as a class whose steps are named member
+// functions: choose G, aim from the centre, fit the base grid to the memory budget, fill the
+// base cells, split crowded cells into quadtrees, flatten, then the radii (cubemap/radii.cpp).
+// What makes the lists conservative: cubemap/index.hpp.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "convexloc/geometry.hpp"
+#include "convexloc/locate3d.hpp"
+
+namespace convexloc {
+
+namespace cubemap {
+
+// a convex polygon in (s, t) with at most 4 + 3 vertices
+struct Poly {
+  Vec2 p[8];
+  int n = 0;
+};
+
+// a face's cone from the centre: edge-plane normals with their error bounds, and the vertex
+// directions (all scaled by a power of two)
+struct Cone {
+  double n[3][3];
+  double bound[3];
+  double d[3][3];
+};
+
+// exact scaling by a power of two: x * 2^shift
+struct PowerOfTwo {
+  int shift = 0;
+  double factor = 1.0;  // 2^shift, when that is a normal double
+  explicit PowerOfTwo(int s) : shift(s), factor(s > -1000 && s < 1000 ? std::ldexp(1.0, s) : 0.0) {}
+  double operator()(double x) const { return factor != 0.0 ? x * factor : std::ldexp(x, shift); }
+};
+
+// the deepest quadtree level
+inline constexpr int kMaxLevel = 30;
+
+}  // namespace cubemap
+
+// Builds a CubemapLocator in place; one use.
+class CubemapBuilder {
+ public:
+  // copies the surface and chooses G; throws UsageError for a resolution above the largest
+  CubemapBuilder(CubemapLocator& locator, const ConvexPolyhedron& polyhedron,
+                 std::uint32_t resolution);
+  // runs every step; without a usable centre the locator gets no cells (G = 0)
+  void build();
+
+ private:
+  using Node = CubemapLocator::Node;
+  // a cell waiting to be split: its node, place and level
+  struct Pending {
+    std::uint32_t node;
+    std::uint32_t i, j;
+    std::uint8_t face, level;
+  };
+
+  // === base grid (build.cpp)
+  // the default G for `faces` faces
+  static std::uint32_t defaultResolution(std::size_t faces);
+  // the centre and the cube around it that holds the polyhedron; false when there is none
+  // or the directions from it overflow
+  bool aimFromCentre();
+  // the base grid, coarsened to fit, and its lists; false when a direction overflows
+  bool buildBaseGrid();
+  // what the cells may use: 120 bytes per face and kFixedBudget in all, less the surface
+  std::size_t memoryBudget() const;
+  // visit(face, cube face, polygon) for every cube face each face's cone meets; false when a
+  // direction overflows
+  template <class Visit>
+  bool forEachProjection(Visit&& visit) const;
+  // coarsens G until the base grid fits the budget; counts[c]: faces of base cell c
+  bool fitBaseGrid(std::vector<std::uint32_t>& counts);
+  // lists each base cell's faces, in CSR form
+  void fillBaseCells(const std::vector<std::uint32_t>& counts);
+
+  // === quadtree (build.cpp)
+  // splits crowded cells, breadth first, while the budget allows
+  void refineCrowdedCells();
+  void queueCrowdedBaseCells();
+  // sorts the parent's faces into the small ones (placed by their projected boxes) and the
+  // others (by their cones' polygons)
+  void sortFaces(const Pending& q, const Node& parent);
+  // how many levels the split goes down at once: more than 1 where every small face stays in
+  // one cell (a chain)
+  int chainLevels(const Pending& q) const;
+  // narrows [i0, i1] x [j0, j1] to the cells at scale K that the small faces' boxes meet
+  void smallFacesCells(double K, std::int64_t& i0, std::int64_t& i1, std::int64_t& j0,
+                       std::int64_t& j1) const;
+  // fills the children's lists, level by level down the chain; returns how many entries
+  std::size_t listChildren(const Pending& q, int levels);
+  // a split where one child keeps every face while the others share many gains nothing
+  bool splitIsFutile(const Node& parent, std::size_t added) const;
+  // appends the children down the chain, top down
+  void commitChildren(const Pending& q, int levels);
+  // appends the 4 children of `node` (whose children start at cell i0, j0 of `level`) with
+  // their lists; queues the crowded ones; returns the index of the first
+  std::uint32_t addChildren(std::uint32_t node, std::int64_t i0, std::int64_t j0, std::uint8_t face,
+                            int level, std::vector<std::uint32_t> (&lists)[4]);
+  // rewrites the entries with the leaves' lists only
+  void compactEntries();
+
+  // === radii (radii.cpp)
+  // each leaf's two radii; inner nodes get NaN
+  void setLeafRadii();
+
+  CubemapLocator& locator_;
+  std::optional<Vec3> centre_;    // the polyhedron's
+  cubemap::PowerOfTwo scale_{0};  // brings the cube's half-size into [1, 2)
+  std::size_t budget_ = 0;        // bytes the cells may use
+  // the refinement's state
+  std::vector<Pending> queue_;
+  std::size_t live_ = 0;         // bytes the nodes and the leaves' entries use
+  std::size_t liveEntries_ = 0;  // entries the leaves list
+  std::vector<std::uint32_t> small_, large_;
+  std::vector<std::array<double, 4>> smallBoxes_;  // (s0, s1, t0, t1)
+  std::array<double, 4> smallBounds_{};            // the box around all of them
+  std::vector<cubemap::Poly> largePolys_;
+  std::vector<std::uint32_t> lists_[cubemap::kMaxLevel + 1][4];
+};
+
+}  // namespace convexloc

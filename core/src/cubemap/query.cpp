@@ -1,0 +1,35 @@
+// convexloc — the cube map's single-point queries: locate(p) and trace(p).
+#include "cubemap/query.hpp"
+
+#include <optional>
+
+#include "cubemap/index.hpp"
+#include "detail/radii.hpp"
+#include "detail/sinks3d.hpp"
+
+namespace convexloc {
+
+std::optional<Vec3> CubemapLocator::centre() const noexcept {
+  if (!centred_) return std::nullopt;
+  return centre_;
+}
+
+Location CubemapLocator::locate(Vec3 p) const noexcept {
+  // Most points: aimed at a base cell that is a leaf and decided by its radii (an inner
+  // node's NaN radii decide nothing). All in line, no call: a caller's loop of independent
+  // points then keeps several cells' memory reads in flight at once.
+  Aim a;
+  if (aim(p, a) > 0) {
+    const Node& nd = nodes_[a.baseCell];
+    if (detail::radiiDecide(a.d2, nd.in2, nd.out2))
+      return detail::insideOrOutside(a.d2 > static_cast<double>(nd.out2));
+  }
+  detail::NoSink3D sink;
+  return run(p, sink);
+}
+
+Trace3D CubemapLocator::trace(Vec3 p) const {
+  return detail::traced(Method3D::Cubemap, centre(), [&](auto& sink) { return run(p, sink); });
+}
+
+}  // namespace convexloc
