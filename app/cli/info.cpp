@@ -139,16 +139,18 @@ void reportHistogram(Output& out, const Stats& s, const char* what) {
 }
 
 // one method in detail
-void reportMethod(Output& out, const Locator2D& locator) {
+void reportMethod(Output& out, const Locator2D& locator, const ConvexPolygon& polygon) {
   const Method2D m = locator.method();
   const Stats2D s = locator.stats();
   out.put(format("Method %s\n", std::string(toString(m)).c_str()));
   field(out, "how", describe(m));
   if (const auto* polar = locator.get<PolarLocator>()) {
+    // without a centre the report names the fan's apex, vertex 0, where queries start
+    const Vec2 centre = polar->centre().value_or(polygon.vertex(0));
     field(out, "centre",
-          exact(polar->centre()) + (s.entries == 0 ? "  (no double point lies strictly inside: "
-                                                     "every query bisects the fan)"
-                                                   : ""));
+          exact(centre) + (s.entries == 0 ? "  (no double point lies strictly inside: "
+                                            "every query bisects the fan)"
+                                          : ""));
     field(out, "slabs per octant",
           format("%u (%u cells)", polar->slabsPerOctant(), polar->cellCount()));
   }
@@ -220,7 +222,7 @@ void info2D(const InfoOptions& o) {
   out.put("Shape " + displayName(o.shape) + "\n\n");
   reportPolygon(out, polygon, input);
   if (one)
-    reportMethod(out, locators.front());
+    reportMethod(out, locators.front(), polygon);
   else
     reportTable(out, locators, o.resolution);
   out.finish();
