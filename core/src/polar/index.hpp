@@ -58,7 +58,7 @@ inline constexpr OctantLayout kOctantLayout[8] = {{0, false}, {1, true}, {7, tru
 }
 
 // the squared distance of p from c, as the query computes it
-[[gnu::always_inline]] inline double distance2(Vec2 p, Vec2 c) {
+inline double distance2(Vec2 p, Vec2 c) {
   const double dx = p.x - c.x, dy = p.y - c.y;
   return dx * dx + dy * dy;
 }

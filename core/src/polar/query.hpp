@@ -37,10 +37,12 @@ Location PolarLocator::searchRange(Vec2 p, std::uint32_t first, std::uint32_t co
   return s > 0 ? Location::Inside : (s == 0 ? Location::Boundary : Location::Outside);
 }
 
+// The whole query. locate() and the batch first try their inline fast path (the radii, two
+// edges) and call this for the rest, so it stays out of line: one copy, outside their loops.
 template <class Sink>
-Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
+[[gnu::noinline]] Location PolarLocator::run(Vec2 p, Sink& sink) const noexcept {
   if (entries_.empty()) return detail::fanLocate(ring(), p, sink);  // no centre strictly inside
-  std::int64_t c = polar::cellIndex(index_, p);
+  std::int64_t c = cellIndex(p);
   if (c < 0) {
     if (p == index_.centre) {
       sink.atCentre();
