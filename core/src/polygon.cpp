@@ -109,9 +109,9 @@ void rejectCollinear(const Input& in) {
   std::size_t far = 1;
   while (far < n && in[far] == in[0]) ++far;
   if (far == n)
-    throw GeometryError("fewer than 3 distinct vertices: all " + std::to_string(n) + " are " +
-                            show(in[0]),
-                        in.lastLine());
+    throw GeometryError(
+        "fewer than 3 distinct vertices: all " + std::to_string(n) + " are " + show(in[0]),
+        in.lastLine());
   bool flat = true;
   for (std::size_t i = far + 1; i < n && flat; ++i) flat = orient2d(in[0], in[far], in[i]) == 0;
   if (!flat) return;
@@ -124,8 +124,9 @@ void rejectCollinear(const Input& in) {
     throw GeometryError("fewer than 3 distinct vertices (" + std::to_string(distinct) +
                             " distinct among " + std::to_string(n) + ")",
                         in.lastLine());
-  throw GeometryError("all " + std::to_string(n) + " vertices are collinear: the polygon has no area",
-                      in.lastLine());
+  throw GeometryError(
+      "all " + std::to_string(n) + " vertices are collinear: the polygon has no area",
+      in.lastLine());
 }
 
 // whether b must go from a-b-c (a repeat, or on the segment from a to c); throws where the

@@ -46,29 +46,29 @@ struct RayTest {
 struct Trace2D {
   Method2D method = Method2D::Halfplane;
   Location result = Location::Outside;
-  bool outsideBox = false;       // decided by the bounding box before any cell
-  std::int64_t cell = -1;        // slab or polar cell index; -1 when none was used
-  int octant = -1;               // polar: 0..7 counter-clockwise from +x, else -1
-  bool crowded = false;          // the cell held many edges and was searched by bisection
-  bool atCentre = false;         // polar: the point is the centre itself
-  bool byRadius = false;         // polar: decided by the cell's radii, before any edge test
-  double distance = 0.0;         // polar: |p - centre| (approximate, for display)
-  double innerRadius = 0.0;      // polar: nearer than this to the centre, a point of the cell
-  double outerRadius = 0.0;      //   is inside; farther than outerRadius, outside
-  Vec2 apex{};                   // wedge: vertex 0; polar: the centre (vertex 0 on the fan)
-  std::vector<RayTest> rays;     // bisection steps (wedge, crowded polar cells)
-  std::vector<EdgeTest> edges;   // edges tested, in order
+  bool outsideBox = false;      // decided by the bounding box before any cell
+  std::int64_t cell = -1;       // slab or polar cell index; -1 when none was used
+  int octant = -1;              // polar: 0..7 counter-clockwise from +x, else -1
+  bool crowded = false;         // the cell held many edges and was searched by bisection
+  bool atCentre = false;        // polar: the point is the centre itself
+  bool byRadius = false;        // polar: decided by the cell's radii, before any edge test
+  double distance = 0.0;        // polar: |p - centre| (approximate, for display)
+  double innerRadius = 0.0;     // polar: nearer than this to the centre, a point of the cell
+  double outerRadius = 0.0;     //   is inside; farther than outerRadius, outside
+  Vec2 apex{};                  // wedge: vertex 0; polar: the centre (vertex 0 on the fan)
+  std::vector<RayTest> rays;    // bisection steps (wedge, crowded polar cells)
+  std::vector<EdgeTest> edges;  // edges tested, in order
 };
 
 // Size and shape of a subdivision. Methods without cells report zero cells.
 struct Stats2D {
   std::size_t edges = 0;
   std::size_t cells = 0;
-  std::size_t entries = 0;        // sum over cells of the edges listed
+  std::size_t entries = 0;  // sum over cells of the edges listed
   std::size_t maxPerCell = 0;
   double meanPerCell = 0.0;
-  std::size_t crowdedCells = 0;   // cells searched by bisection rather than tested edge by edge
-  std::size_t bytes = 0;          // memory the locator holds, vertices included
+  std::size_t crowdedCells = 0;  // cells searched by bisection rather than tested edge by edge
+  std::size_t bytes = 0;         // memory the locator holds, vertices included
   double bytesPerEdge = 0.0;
   double buildSeconds = 0.0;
   std::vector<std::size_t> histogram;  // histogram[k]: cells holding k edges; the last bucket
@@ -78,12 +78,12 @@ struct Stats2D {
 // One cell of a subdivision, for drawing and teaching.
 struct Cell2D {
   std::uint32_t index = 0;
-  int octant = -1;                     // polar only
-  std::vector<Vec2> outline;           // the cell clipped to the locator's box, CCW
-  Vec2 dirLo{}, dirHi{};               // polar: directions of the two bounding rays
-  Vec2 hitLo{}, hitHi{};               // polar: where those rays leave the box
-  double y0 = 0.0, y1 = 0.0;           // slab, uniform: the y range
-  std::vector<std::uint32_t> edges;    // edges listed in the cell
+  int octant = -1;                   // polar only
+  std::vector<Vec2> outline;         // the cell clipped to the locator's box, CCW
+  Vec2 dirLo{}, dirHi{};             // polar: directions of the two bounding rays
+  Vec2 hitLo{}, hitHi{};             // polar: where those rays leave the box
+  double y0 = 0.0, y1 = 0.0;         // slab, uniform: the y range
+  std::vector<std::uint32_t> edges;  // edges listed in the cell
 };
 
 // edges per cell above which a cell is searched by bisection
@@ -263,8 +263,7 @@ class PolarLocator {
   template <class Sink>
   Location run(Vec2 p, Sink& sink) const noexcept;
   template <class Sink>
-  Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count,
-                       Sink& sink) const noexcept;
+  Location searchRange(Vec2 p, std::uint32_t first, std::uint32_t count, Sink& sink) const noexcept;
   // the vertexCount_ vertices (vertices_ repeats the first two at its end)
   std::span<const Vec2> ring() const noexcept { return {vertices_.data(), vertexCount_}; }
 

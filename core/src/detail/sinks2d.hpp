@@ -82,7 +82,9 @@ inline Location testEdges(std::span<const Vec2> v, const std::uint32_t* first,
 
 // p has an infinite or NaN coordinate: no polygon contains it, and no predicate may see it
 // (the exact fallback cannot represent it)
-inline bool nonFinite(Vec2 p) { return !(std::isfinite(p.x) && std::isfinite(p.y)); }
+inline bool nonFinite(Vec2 p) {
+  return !(std::isfinite(p.x) && std::isfinite(p.y));
+}
 
 // p outside the closed box
 inline bool outsideBox(const Box2& b, Vec2 p) {

@@ -37,7 +37,8 @@ __attribute__((target("avx2"))) std::size_t polarAimAvx2(const Vec2* p, std::siz
                                                          const PolarParams& a, std::int64_t* cell,
                                                          double* d2) noexcept {
   const __m256d cx = _mm256_set1_pd(a.centre.x), cy = _mm256_set1_pd(a.centre.y);
-  const __m256d sign = _mm256_set1_pd(-0.0), inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+  const __m256d sign = _mm256_set1_pd(-0.0),
+                inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
   const __m256d qd = _mm256_set1_pd(a.slabScale), last = _mm256_set1_pd(a.lastSlab);
   const __m256i base = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a.base));
@@ -57,14 +58,16 @@ __attribute__((target("avx2"))) std::size_t polarAimAvx2(const Vec2* p, std::siz
     const __m256d good = _mm256_and_pd(_mm256_cmp_pd(_mm256_add_pd(ax, ay), inf, _CMP_LT_OQ),
                                        _mm256_cmp_pd(hi, zero, _CMP_NEQ_OQ));
     // lanes that are not good may divide 0 by 0: masked to 0 before converting
-    const __m256d k = _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_div_pd(lo, hi), qd), last));
+    const __m256d k =
+        _mm256_and_pd(good, _mm256_min_pd(_mm256_mul_pd(_mm256_div_pd(lo, hi), qd), last));
     const __m128i slab = _mm256_cvttpd_epi32(k);
     // sign bits of dx and dy as 0 / 1 in 32-bit lanes (a lambda would lose the target)
     const __m128i sx = _mm256_castsi256_si128(
         _mm256_permutevar8x32_epi32(_mm256_srli_epi64(_mm256_castpd_si256(dx), 63), low32));
     const __m128i sy = _mm256_castsi256_si128(
         _mm256_permutevar8x32_epi32(_mm256_srli_epi64(_mm256_castpd_si256(dy), 63), low32));
-    const __m128i steep = _mm256_cvttpd_epi32(_mm256_and_pd(_mm256_cmp_pd(ay, ax, _CMP_GT_OQ), one));
+    const __m128i steep =
+        _mm256_cvttpd_epi32(_mm256_and_pd(_mm256_cmp_pd(ay, ax, _CMP_GT_OQ), one));
     const __m128i octant =
         _mm_or_si128(_mm_or_si128(_mm_slli_epi32(sx, 2), _mm_slli_epi32(sy, 1)), steep);
     const __m256i index = _mm256_castsi128_si256(octant);
@@ -72,7 +75,7 @@ __attribute__((target("avx2"))) std::size_t polarAimAvx2(const Vec2* p, std::siz
     const __m128i st = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(step, index));
     __m128i c = _mm_add_epi32(b, _mm_mullo_epi32(st, slab));
     const __m128i bad = _mm256_cvtpd_epi32(_mm256_andnot_pd(good, one));  // 1 where not good
-    c = _mm_or_si128(c, _mm_sub_epi32(_mm_setzero_si128(), bad));        // -1 there
+    c = _mm_or_si128(c, _mm_sub_epi32(_mm_setzero_si128(), bad));         // -1 there
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(cell + j), _mm256_cvtepi32_epi64(c));
     _mm256_storeu_pd(d2 + j, _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)));
   }
@@ -107,11 +110,9 @@ inline long long radiiWord(const void* radii, std::int64_t c) noexcept {
 // FMA), so every lane gets the scalar answer. Lanes with no cell read cell 0 and are open.
 // Writes the 4 verdicts, appends the open lanes to `pending` at `left` and prefetches their
 // offsets, as the scalar loop does; returns how many points it did (a multiple of 4).
-__attribute__((target("avx2"))) std::size_t polarDecideAvx2(const std::int64_t* cell, const double* d2,
-                                                            std::size_t m, const void* radii,
-                                                            const std::uint32_t* offsets, Location* o,
-                                                            std::uint32_t* pending,
-                                                            std::size_t& left) noexcept {
+__attribute__((target("avx2"))) std::size_t polarDecideAvx2(
+    const std::int64_t* cell, const double* d2, std::size_t m, const void* radii,
+    const std::uint32_t* offsets, Location* o, std::uint32_t* pending, std::size_t& left) noexcept {
   // a local count: `left` itself might alias the stores through `pending` and `o`, which
   // would keep it in memory and chain every group to the previous one's store
   std::size_t open = left;
@@ -123,7 +124,8 @@ __attribute__((target("avx2"))) std::size_t polarDecideAvx2(const std::int64_t* 
     for (int k = 0; k < 4; ++k) c[k] = std::max<std::int64_t>(cell[j + k], 0);
     const __m256i r = _mm256_permutevar8x32_epi32(
         _mm256_setr_epi64x(radiiWord(radii, c[0]), radiiWord(radii, c[1]), radiiWord(radii, c[2]),
-                           radiiWord(radii, c[3])), halves);
+                           radiiWord(radii, c[3])),
+        halves);
     const __m256d in2 = _mm256_cvtps_pd(_mm_castsi128_ps(_mm256_castsi256_si128(r)));
     const __m256d out2 = _mm256_cvtps_pd(_mm_castsi128_ps(_mm256_extracti128_si256(r, 1)));
     const __m256d d = _mm256_loadu_pd(d2 + j);
@@ -134,8 +136,8 @@ __attribute__((target("avx2"))) std::size_t polarDecideAvx2(const std::int64_t* 
     static_assert(sizeof(Location) == 1);
     std::memcpy(o + j, &verdicts, 4);
     // open: no cell, or not decided (a NaN product compares false, as in the scalar code)
-    const __m256d decided =
-        _mm256_cmp_pd(_mm256_mul_pd(_mm256_sub_pd(d, in2), _mm256_sub_pd(d, out2)), zero, _CMP_GT_OQ);
+    const __m256d decided = _mm256_cmp_pd(
+        _mm256_mul_pd(_mm256_sub_pd(d, in2), _mm256_sub_pd(d, out2)), zero, _CMP_GT_OQ);
     const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + j));
     const __m256i none = _mm256_cmpgt_epi64(_mm256_setzero_si256(), ci);
     const auto lanes = static_cast<std::uint32_t>((_mm256_movemask_pd(decided) ^ 15) |
@@ -151,11 +153,13 @@ __attribute__((target("avx2"))) std::size_t polarDecideAvx2(const std::int64_t* 
   return j;
 }
 #else
-std::size_t polarAimAvx2(const Vec2*, std::size_t, const PolarParams&, std::int64_t*, double*) noexcept {
+std::size_t polarAimAvx2(const Vec2*, std::size_t, const PolarParams&, std::int64_t*,
+                         double*) noexcept {
   return 0;
 }
 std::size_t polarDecideAvx2(const std::int64_t*, const double*, std::size_t, const void*,
-                            const std::uint32_t*, Location*, std::uint32_t*, std::size_t&) noexcept {
+                            const std::uint32_t*, Location*, std::uint32_t*,
+                            std::size_t&) noexcept {
   return 0;
 }
 #endif
@@ -177,8 +181,8 @@ void PolarLocator::locate(std::span<const Vec2> points, std::span<Location> out)
   // that the vector stage's loads hit it anyway and the pass costs more than it hides. The
   // scalar stage always runs it.
   const bool prefetchRadii = !vector || radii_.size() * sizeof(Radii) > (std::size_t{1} << 20);
-  PolarParams params{index_.centre, index_.slabScale,
-                     static_cast<double>(index_.slabsPerOctant - 1), {}, {}};
+  PolarParams params{
+      index_.centre, index_.slabScale, static_cast<double>(index_.slabsPerOctant - 1), {}, {}};
   for (int i = 0; i < 8; ++i) {
     params.base[i] = static_cast<std::int32_t>(index_.cellBase[i]);
     params.step[i] = static_cast<std::int32_t>(index_.cellStep[i]);

@@ -38,9 +38,8 @@ struct OctantLayout {
   std::uint32_t octant;
   bool falling;
 };
-inline constexpr OctantLayout kOctantLayout[8] = {{0, false}, {1, true}, {7, true},
-                                                  {6, false}, {3, true}, {2, false},
-                                                  {4, false}, {5, true}};
+inline constexpr OctantLayout kOctantLayout[8] = {{0, false}, {1, true},  {7, true},  {6, false},
+                                                  {3, true},  {2, false}, {4, false}, {5, true}};
 
 // the cell p maps to, or -1 for the centre itself, a non-finite point, or one too far for
 // the arithmetic

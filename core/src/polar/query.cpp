@@ -12,7 +12,9 @@
 
 namespace convexloc {
 
-std::int64_t PolarLocator::cellIndex(Vec2 p) const noexcept { return polar::cellIndex(index_, p); }
+std::int64_t PolarLocator::cellIndex(Vec2 p) const noexcept {
+  return polar::cellIndex(index_, p);
+}
 
 Location PolarLocator::locate(Vec2 p) const noexcept {
   const std::int64_t c = polar::cellIndex(index_, p);

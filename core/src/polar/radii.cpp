@@ -59,8 +59,7 @@ double pieceBounds(Vec2 a, Vec2 b, Vec2 c, double angleLo, double angleHi, doubl
   const L size = std::fabs(ux) + std::fabs(uy);
   constexpr L kMiss = std::numeric_limits<L>::infinity();
   auto along = [&](double angle) {
-    const Vec2 d =
-        polar::directionOf(angle < 0 ? angle + 8 : (angle >= 8 ? angle - 8 : angle));
+    const Vec2 d = polar::directionOf(angle < 0 ? angle + 8 : (angle >= 8 ? angle - 8 : angle));
     const L den = L(d.x) * uy - L(d.y) * ux;  // > 0: the ray meets the line ahead of c
     if (!(den > 0x1p-30L * (std::fabs(L(d.x)) + std::fabs(L(d.y))) * size)) return kMiss;
     return -(L(d.x) * wy - L(d.y) * wx) / den;
