@@ -5,7 +5,6 @@
 
 #include "convexloc/locate2d.hpp"
 #include "convexloc/predicates.hpp"
-#include "convexloc/timing.hpp"
 #include "detail/sink_queries.hpp"
 #include "detail/sinks2d.hpp"
 #include "detail/stats2d.hpp"
@@ -13,9 +12,7 @@
 namespace convexloc {
 
 HalfplaneLocator::HalfplaneLocator(const ConvexPolygon& polygon) {
-  const auto t0 = Clock::now();
-  vertices_ = detail::copyVertices(polygon);
-  buildSeconds_ = secondsSince(t0);
+  vertices_ = detail::copyVertices(polygon, buildSeconds_);
 }
 
 // every edge in order, stopping at the first outer side

@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "convexloc/locate2d.hpp"
-#include "convexloc/timing.hpp"
 #include "detail/fan.hpp"
 #include "detail/sink_queries.hpp"
 #include "detail/sinks2d.hpp"
@@ -14,9 +13,7 @@
 namespace convexloc {
 
 WedgeLocator::WedgeLocator(const ConvexPolygon& polygon) {
-  const auto t0 = Clock::now();
-  vertices_ = detail::copyVertices(polygon);
-  buildSeconds_ = secondsSince(t0);
+  vertices_ = detail::copyVertices(polygon, buildSeconds_);
 }
 
 template <class Sink>
