@@ -19,8 +19,8 @@ namespace convexloc::detail {
 template <class Derived, class Point, class Trace>
 class SinkQueries {
  public:
-  // the class of p (exact)
-  Location locate(Point p) const noexcept;
+  // the class of p (exact); one copy, out of line, which the batch calls point after point
+  [[gnu::noinline]] Location locate(Point p) const noexcept;
   // out[i] = locate(points[i]) over the shorter of the two spans; allocates nothing
   void locate(std::span<const Point> points, std::span<Location> out) const noexcept;
   // the steps locate(p) takes, and its answer
