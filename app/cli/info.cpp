@@ -183,21 +183,12 @@ void reportShape(Output& out, const ConvexPolyhedron& p, std::size_t verticesRea
 
 // === One method in detail
 
-// the polar centre as reported, whether the locator gives a point or an optional one: without
-// one, vertex 0, the fan's apex where queries start
-template <class Centre>
-Vec2 reportedCentre(const Centre& centre, Vec2 apex) {
-  if constexpr (std::is_same_v<Centre, Vec2>)
-    return centre;
-  else
-    return centre.value_or(apex);
-}
-
 // the lines only polar and uniform have: the centre and the slabs
 void reportDetails(Output& out, const Locator2D& locator, const ConvexPolygon& polygon,
                    const Stats2D& s, std::uint32_t) {
   if (const auto* polar = locator.get<PolarLocator>()) {
-    const Vec2 centre = reportedCentre(polar->centre(), polygon.vertex(0));
+    // without a centre, vertex 0: the apex of the fan every query then bisects
+    const Vec2 centre = polar->centre().value_or(polygon.vertex(0));
     field(out, "centre",
           exact(centre) + (s.entries == 0 ? "  (no double point lies strictly inside: "
                                             "every query bisects the fan)"

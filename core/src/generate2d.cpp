@@ -87,7 +87,8 @@ std::optional<PolygonKind> parsePolygonKind(std::string_view name) {
 
 std::vector<Vec2> convexHull(std::span<const Vec2> points) {
   std::vector<Vec2> p(points.begin(), points.end());
-  std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(p.begin(), p.end(),
+            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
   if (p.size() < 3) return p;
   std::vector<Vec2> h(2 * p.size());
@@ -134,14 +135,18 @@ std::vector<Vec2> generatePolygon(PolygonKind kind, std::size_t n, std::uint64_t
       for (int side = 0; side < 4; ++side)
         for (std::size_t i = 0; i < k; ++i) {
           double t = static_cast<double>(i);
-          Vec2 p = side == 0 ? Vec2{t, 0} : side == 1 ? Vec2{s, t} : side == 2 ? Vec2{s - t, s} : Vec2{0, s - t};
+          Vec2 p = side == 0   ? Vec2{t, 0}
+                   : side == 1 ? Vec2{s, t}
+                   : side == 2 ? Vec2{s - t, s}
+                               : Vec2{0, s - t};
           v.push_back(p);
           if (i == 0) v.push_back(p);
         }
       return v;
     }
     case PolygonKind::Triangle:
-      v = {{rng.uniform(-1, 1), rng.uniform(-1, 1)}, {rng.uniform(-1, 1), rng.uniform(-1, 1)},
+      v = {{rng.uniform(-1, 1), rng.uniform(-1, 1)},
+           {rng.uniform(-1, 1), rng.uniform(-1, 1)},
            {rng.uniform(-1, 1), rng.uniform(-1, 1)}};
       break;
   }
@@ -149,8 +154,8 @@ std::vector<Vec2> generatePolygon(PolygonKind kind, std::size_t n, std::uint64_t
   return convexHull(v);
 }
 
-std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count, std::uint64_t seed,
-                                 bool nearBoundary) {
+std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count,
+                                 std::uint64_t seed, bool nearBoundary) {
   Rng rng(seed);
   Box2 b = polygon.bounds();
   double wx = 0.1 * (b.hi.x - b.lo.x), wy = 0.1 * (b.hi.y - b.lo.y);
@@ -169,7 +174,7 @@ std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count
     Vec2 on{a.x + t * (c.x - a.x), a.y + t * (c.y - a.y)};
     switch (rng.below(5)) {
       case 0: out.push_back(a); break;  // a vertex
-      case 1: {                          // one ulp off a vertex
+      case 1: {                         // one ulp off a vertex
         double dx = rng.below(2) ? inf : -inf, dy = rng.below(2) ? inf : -inf;
         out.push_back({std::nextafter(a.x, dx), std::nextafter(a.y, dy)});
         break;
@@ -190,7 +195,8 @@ std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count
       }
       case 3: {  // one ulp off the segment, either side
         double d = rng.below(2) ? inf : -inf;
-        out.push_back(rng.below(2) ? Vec2{std::nextafter(on.x, d), on.y} : Vec2{on.x, std::nextafter(on.y, d)});
+        out.push_back(rng.below(2) ? Vec2{std::nextafter(on.x, d), on.y}
+                                   : Vec2{on.x, std::nextafter(on.y, d)});
         break;
       }
       default: {  // a hair inside or outside along the normal

@@ -1,11 +1,21 @@
 // convexloc — validation and normalisation of convex polygons.
+//
+// The constructor is a pipeline of checks, each throwing its own GeometryError naming its
+// witness: the input itself (sizes, finite coordinates), all points collinear, the ring
+// without repeats and collinear middle vertices (a spike doubles back), every turn the same
+// way (else a crossing or a reflex vertex), and the edge directions winding once. A ring
+// whose turns are all strict left turns and whose edge directions turn once around is the
+// boundary of a strictly convex polygon.
 #include "convexloc/polygon.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <deque>
+#include <span>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
@@ -52,99 +62,141 @@ bool segmentsMeet(Vec2 p, Vec2 q, Vec2 r, Vec2 s) {
   return false;
 }
 
-}  // namespace
+// the input points with their source lines, to name a witness in an error
+struct Input {
+  std::span<const Vec2> points;
+  std::span<const std::size_t> lines;
 
-ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::size_t> lines) {
-  const std::size_t n = points.size();
-  auto lineOf = [&](std::size_t input) -> std::size_t {
-    return lines.empty() ? 0 : lines[input];
-  };
-  auto name = [&](std::size_t input) {
-    return "vertex " + std::to_string(input + 1) + ' ' + show(points[input]);
-  };
-  if (!lines.empty() && lines.size() != n)
+  std::size_t size() const { return points.size(); }
+  Vec2 operator[](std::size_t i) const { return points[i]; }
+  std::size_t lineOf(std::size_t i) const { return lines.empty() ? 0 : lines[i]; }
+  // the line of the last point: where a whole-polygon problem is reported
+  std::size_t lastLine() const { return points.empty() ? 0 : lineOf(points.size() - 1); }
+  std::string name(std::size_t i) const {
+    return "vertex " + std::to_string(i + 1) + ' ' + show(points[i]);
+  }
+};
+
+// the input ring as indices of input points, with how many repeats it dropped
+struct Ring {
+  std::deque<std::uint32_t> at;
+  std::size_t repeated = 0;
+};
+
+// === Checks, in order; each throws its own error naming its witness
+
+// the sizes and every coordinate finite
+void checkInput(const Input& in) {
+  const std::size_t n = in.size();
+  if (!in.lines.empty() && in.lines.size() != n)
     throw UsageError("ConvexPolygon: lines must be empty or match the points");
   if (n > kMaxPolygonVertices)
     throw GeometryError("too many vertices: " + std::to_string(n) + " (the limit is " +
                         std::to_string(kMaxPolygonVertices) + ")");
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
-      throw GeometryError(name(i) + " has a coordinate that is not a finite number", lineOf(i));
+    if (!std::isfinite(in[i].x) || !std::isfinite(in[i].y))
+      throw GeometryError(in.name(i) + " has a coordinate that is not a finite number",
+                          in.lineOf(i));
   }
-  std::size_t lastLine = n == 0 ? 0 : lineOf(n - 1);
   if (n < 3)
-    throw GeometryError("a polygon needs at least 3 vertices, got " + std::to_string(n), lastLine);
+    throw GeometryError("a polygon needs at least 3 vertices, got " + std::to_string(n),
+                        in.lastLine());
+}
 
-  // all collinear: report that, rather than whatever a later check would trip on
-  {
-    std::size_t far = 1;
-    while (far < n && points[far] == points[0]) ++far;
-    if (far == n)
-      throw GeometryError("fewer than 3 distinct vertices: all " + std::to_string(n) +
-                              " are " + show(points[0]),
-                          lastLine);
-    bool flat = true;
-    for (std::size_t i = far + 1; i < n && flat; ++i)
-      flat = orient2d(points[0], points[far], points[i]) == 0;
-    if (flat) {
-      // distinct count, for a precise message when there are only two
-      std::vector<Vec2> sorted(points.begin(), points.end());
-      std::sort(sorted.begin(), sorted.end(),
-                [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-      std::size_t distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
-      if (distinct < 3)
-        throw GeometryError("fewer than 3 distinct vertices (" + std::to_string(distinct) +
-                                " distinct among " + std::to_string(n) + ")",
-                            lastLine);
-      throw GeometryError("all " + std::to_string(n) +
-                              " vertices are collinear: the polygon has no area",
-                          lastLine);
-    }
-  }
+// all collinear: report that, rather than whatever a later check would trip on
+void rejectCollinear(const Input& in) {
+  const std::size_t n = in.size();
+  std::size_t far = 1;
+  while (far < n && in[far] == in[0]) ++far;
+  if (far == n)
+    throw GeometryError(
+        "fewer than 3 distinct vertices: all " + std::to_string(n) + " are " + show(in[0]),
+        in.lastLine());
+  bool flat = true;
+  for (std::size_t i = far + 1; i < n && flat; ++i) flat = orient2d(in[0], in[far], in[i]) == 0;
+  if (!flat) return;
+  // distinct count, for a precise message when there are only two
+  std::vector<Vec2> sorted(in.points.begin(), in.points.end());
+  std::sort(sorted.begin(), sorted.end(),
+            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::size_t distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
+  if (distinct < 3)
+    throw GeometryError("fewer than 3 distinct vertices (" + std::to_string(distinct) +
+                            " distinct among " + std::to_string(n) + ")",
+                        in.lastLine());
+  throw GeometryError(
+      "all " + std::to_string(n) + " vertices are collinear: the polygon has no area",
+      in.lastLine());
+}
 
-  // drop repeats and collinear middle vertices; a spike (doubling back) is an error
-  std::deque<std::uint32_t> ring;
-  auto collapse = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    // true when b must go; throws when a-b-c doubles back
-    if (points[a] == points[b] || points[b] == points[c]) return true;
-    if (orient2d(points[a], points[b], points[c]) != 0) return false;
-    if (points[a] == points[c] || !between(points[a], points[b], points[c]))
-      throw GeometryError("the boundary doubles back on itself at " + name(b) +
-                              ": the polygon is self-intersecting",
-                          lineOf(b));
-    return true;
-  };
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!ring.empty() && points[ring.back()] == points[i]) {
-      ++repeated_;
+// whether b must go from a-b-c (a repeat, or on the segment from a to c); throws where the
+// boundary doubles back at b
+bool collapses(const Input& in, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  if (in[a] == in[b] || in[b] == in[c]) return true;
+  if (orient2d(in[a], in[b], in[c]) != 0) return false;
+  if (in[a] == in[c] || !between(in[a], in[b], in[c]))
+    throw GeometryError("the boundary doubles back on itself at " + in.name(b) +
+                            ": the polygon is self-intersecting",
+                        in.lineOf(b));
+  return true;
+}
+
+// the ring without repeated vertices and collinear middle ones, along the input and then
+// across its wrap; a spike (doubling back) is an error
+Ring simplify(const Input& in) {
+  Ring r;
+  std::deque<std::uint32_t>& ring = r.at;
+  for (std::uint32_t i = 0; i < in.size(); ++i) {
+    if (!ring.empty() && in[ring.back()] == in[i]) {
+      ++r.repeated;
       continue;
     }
     ring.push_back(i);
     while (ring.size() >= 3 &&
-           collapse(ring[ring.size() - 3], ring[ring.size() - 2], ring[ring.size() - 1])) {
+           collapses(in, ring[ring.size() - 3], ring[ring.size() - 2], ring[ring.size() - 1])) {
       ring.erase(ring.end() - 2);
     }
   }
   for (bool changed = true; changed && ring.size() >= 3;) {
     changed = false;
-    if (points[ring.back()] == points[ring.front()]) {
+    if (in[ring.back()] == in[ring.front()]) {
       ring.pop_back();
-      ++repeated_;
+      ++r.repeated;
       changed = true;
-    } else if (collapse(ring[ring.size() - 2], ring.back(), ring.front())) {
+    } else if (collapses(in, ring[ring.size() - 2], ring.back(), ring.front())) {
       ring.pop_back();
       changed = true;
-    } else if (collapse(ring.back(), ring.front(), ring[1])) {
+    } else if (collapses(in, ring.back(), ring.front(), ring[1])) {
       ring.pop_front();
       changed = true;
     }
   }
   if (ring.size() < 3)
     throw GeometryError("fewer than 3 vertices remain after dropping repeated and collinear ones",
-                        lastLine);
+                        in.lastLine());
+  return r;
+}
 
+// two edges of a ring with turns both ways that cross, where the search is affordable: a
+// crossing is the better diagnosis than a reflex vertex
+void rejectCrossing(const Input& in, const std::deque<std::uint32_t>& ring) {
   const std::size_t m = ring.size();
-  auto at = [&](std::size_t k) { return points[ring[k % m]]; };
+  if (m > 4096) return;
+  auto at = [&](std::size_t k) { return in[ring[k % m]]; };
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j == m - 1) continue;  // neighbours through the wrap
+      if (segmentsMeet(at(i), at(i + 1), at(j), at(j + 1)))
+        throw GeometryError("self-intersecting: the edge from " + in.name(ring[i]) +
+                                " crosses the edge from " + in.name(ring[j]),
+                            in.lineOf(ring[j]));
+    }
+}
+
+// whether the ring turns clockwise; throws unless every turn goes the same way
+bool clockwiseTurns(const Input& in, const std::deque<std::uint32_t>& ring) {
+  const std::size_t m = ring.size();
+  auto at = [&](std::size_t k) { return in[ring[k % m]]; };
   std::vector<int> turn(m);
   std::size_t left = 0, right = 0;
   for (std::size_t k = 0; k < m; ++k) {
@@ -152,43 +204,53 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::
     (turn[k] > 0 ? left : right) += 1;
   }
   if (left > 0 && right > 0) {
-    // a crossing is the better diagnosis when there is one; look for it where affordable
-    if (m <= 4096) {
-      for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = i + 2; j < m; ++j) {
-          if (i == 0 && j == m - 1) continue;  // neighbours through the wrap
-          if (segmentsMeet(at(i), at(i + 1), at(j), at(j + 1)))
-            throw GeometryError("self-intersecting: the edge from " + name(ring[i]) +
-                                    " crosses the edge from " + name(ring[j]),
-                                lineOf(ring[j]));
-        }
-    }
+    rejectCrossing(in, ring);
     int majority = left >= right ? 1 : -1;
     std::size_t k = 0;
     while (turn[k] == majority) ++k;
-    throw GeometryError("not convex: reflex " + name(ring[k]), lineOf(ring[k]));
+    throw GeometryError("not convex: reflex " + in.name(ring[k]), in.lineOf(ring[k]));
   }
-  clockwise_ = right > 0;
-  if (clockwise_) std::reverse(ring.begin(), ring.end());
+  return right > 0;
+}
 
-  // locally convex; convex and simple only if the edge directions turn once around
+// a counter-clockwise ring that turns left everywhere is convex and simple only if its edge
+// directions turn once around
+void checkWinding(const Input& in, const std::deque<std::uint32_t>& ring) {
+  const std::size_t m = ring.size();
+  auto at = [&](std::size_t k) { return in[ring[k % m]]; };
   std::size_t wraps = 0;
   for (std::size_t k = 0; k < m; ++k) {
     if (!angleBefore(at(k), at(k + 1), at(k + 1), at(k + 2))) {
       if (++wraps == 2)
         throw GeometryError("self-intersecting: the boundary winds around more than once (at " +
-                                name(ring[(k + 1) % m]) + ")",
-                            lineOf(ring[(k + 1) % m]));
+                                in.name(ring[(k + 1) % m]) + ")",
+                            in.lineOf(ring[(k + 1) % m]));
     }
   }
+}
 
-  vertices_.reserve(m);
-  source_.reserve(m);
-  for (std::uint32_t idx : ring) {
+}  // namespace
+
+// === The pipeline
+
+ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::size_t> lines) {
+  const Input in{points, lines};
+  checkInput(in);
+  rejectCollinear(in);
+  Ring ring = simplify(in);
+  repeated_ = ring.repeated;
+  clockwise_ = clockwiseTurns(in, ring.at);
+  if (clockwise_) std::reverse(ring.at.begin(), ring.at.end());
+  checkWinding(in, ring.at);
+
+  // keep the ring, each vertex's input index, and the bounding box
+  vertices_.reserve(ring.at.size());
+  source_.reserve(ring.at.size());
+  for (std::uint32_t idx : ring.at) {
     vertices_.push_back(points[idx]);
     source_.push_back(idx);
   }
-  dropped_ = n - m;
+  dropped_ = points.size() - ring.at.size();
   bounds_ = {vertices_[0], vertices_[0]};
   for (Vec2 v : vertices_) {
     bounds_.lo.x = std::min(bounds_.lo.x, v.x);

@@ -42,7 +42,9 @@ void scaled(mpz_class& out, double v, int lo) {
   if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
 }
 
-int sign(const mpz_class& v) { return mpz_sgn(v.get_mpz_t()); }
+int sign(const mpz_class& v) {
+  return mpz_sgn(v.get_mpz_t());
+}
 
 }  // namespace
 
@@ -88,6 +90,8 @@ int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
   return sign(t[2]);
 }
 
-unsigned long long exactFallbackCount() noexcept { return tFallbacks; }
+unsigned long long exactFallbackCount() noexcept {
+  return tFallbacks;
+}
 
 }  // namespace convexloc

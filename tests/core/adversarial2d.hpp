@@ -167,7 +167,8 @@ inline std::vector<Vec2> boundaryPoints(const convexloc::ConvexPolygon& polygon,
 inline std::vector<Vec2> polarPoints(const convexloc::PolarLocator& polar,
                                      const convexloc::ConvexPolygon& polygon) {
   std::vector<Vec2> out;
-  const Vec2 c = polar.centre();
+  // without a centre, the fan's apex (vertex 0) stands in for it, as the query uses it
+  const Vec2 c = polar.centre().value_or(polygon.vertex(0));
   const Box2 box = polar.box();
   addUlpRing(out, c, 2);
   const double size = std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y);

@@ -126,6 +126,7 @@ TEST(Batch, PolarVectorAndScalarCodeAgree) {
     pts.insert(pts.end(), hard.begin(), hard.end());
     expectVectorAndScalarAgree(
         polar, std::move(pts),
-        {Vec2{kInf, 0}, Vec2{0, std::nan("")}, Vec2{kBig, -kBig}, Vec2{-kBig, 0}, polar.centre()});
+        {Vec2{kInf, 0}, Vec2{0, std::nan("")}, Vec2{kBig, -kBig}, Vec2{-kBig, 0},
+         polar.centre().value_or(polygon.vertex(0))});  // vertex 0: the fan's apex
   }
 }

@@ -51,8 +51,10 @@ std::vector<Location> concreteBatch(const ConvexPolygon& polygon, Config config,
 std::vector<Vec2> queryPoints(const shapes::ShapeCase& shape, const ConvexPolygon& polygon) {
   Rng rng(0x5eed0000u + shape.input.size());
   const PolarLocator polar(polygon);
+  // without a centre, the fan's apex (vertex 0) stands in for it, as the query uses it
+  const Vec2 centre = polar.centre().value_or(polygon.vertex(0));
   std::vector<Vec2> points =
-      adversarial::randomPoints(polygon.bounds(), polar.centre(), shape.randomPoints, rng);
+      adversarial::randomPoints(polygon.bounds(), centre, shape.randomPoints, rng);
   std::vector<Vec2> near = generatePoints(polygon, 2000, 77, true);
   points.insert(points.end(), near.begin(), near.end());
   auto append = [&](const std::vector<Vec2>& more) {

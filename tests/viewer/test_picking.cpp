@@ -47,7 +47,7 @@ TEST(Picking, PolarCellUnderAPointIsTheOneCoreMapsItTo) {
     ASSERT_GE(picked, 0);
     EXPECT_EQ(cells[static_cast<std::size_t>(picked)].index, c.index);
     // and the cell core's own index function gives the same answer there
-    EXPECT_EQ(polar.cellOf(m), static_cast<std::int64_t>(c.index));
+    EXPECT_EQ(polar.cellIndex(m), static_cast<std::int64_t>(c.index));
   }
 }
 

@@ -16,7 +16,7 @@ namespace convexloc {
 
 // a small, portable random source (SplitMix64)
 class Rng {
-public:
+ public:
   explicit Rng(std::uint64_t seed) : s_(seed) {}
   std::uint64_t next() noexcept {
     std::uint64_t z = (s_ += 0x9e3779b97f4a7c15ULL);
@@ -31,7 +31,7 @@ public:
   // uniform integer in [0, n)
   std::uint64_t below(std::uint64_t n) noexcept { return n ? next() % n : 0; }
 
-private:
+ private:
   std::uint64_t s_;
 };
 
@@ -51,7 +51,7 @@ enum class PolygonKind : std::uint8_t {
 std::string_view toString(PolygonKind k);
 std::optional<PolygonKind> parsePolygonKind(std::string_view name);
 inline constexpr PolygonKind kAllPolygonKinds[] = {
-    PolygonKind::Regular, PolygonKind::Random,     PolygonKind::Ellipse,    PolygonKind::Sliver,
+    PolygonKind::Regular,   PolygonKind::Random, PolygonKind::Ellipse,    PolygonKind::Sliver,
     PolygonKind::TinyEdges, PolygonKind::Offset, PolygonKind::Degenerate, PolygonKind::Triangle};
 
 // The vertex list of a polygon of that kind with about `n` vertices (n >= 3), counter-
@@ -64,8 +64,8 @@ std::vector<Vec2> generatePolygon(PolygonKind kind, std::size_t n, std::uint64_t
 // `count` query points for `polygon`: uniform in its bounding box enlarged by 10% on each
 // side, or, with `nearBoundary`, hard cases: vertices, points exactly on edges, points one
 // ulp off vertices and edges, and points a hair inside or outside.
-std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count, std::uint64_t seed,
-                                 bool nearBoundary);
+std::vector<Vec2> generatePoints(const ConvexPolygon& polygon, std::size_t count,
+                                 std::uint64_t seed, bool nearBoundary);
 
 // The strictly convex hull of `points` (exact predicates), counter-clockwise.
 std::vector<Vec2> convexHull(std::span<const Vec2> points);

@@ -16,7 +16,7 @@ inline constexpr std::size_t kMaxPolygonVertices = std::size_t{1} << 31;
 // A strictly convex polygon with counter-clockwise vertices: every turn is exactly a left
 // turn and the boundary winds once. Immutable once built.
 class ConvexPolygon {
-public:
+ public:
   // Validates `points` (either orientation) and normalises them: orientation becomes
   // counter-clockwise, repeated vertices and vertices exactly on the segment joining their
   // neighbours are dropped (the region is unchanged). Throws GeometryError naming the
@@ -49,7 +49,7 @@ public:
   // the signed area, in double precision (for display, never for a decision)
   double area() const noexcept;
 
-private:
+ private:
   std::vector<Vec2> vertices_;
   std::vector<std::uint32_t> source_;
   Box2 bounds_{};

@@ -37,8 +37,7 @@ inline int crossFiltered(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
     double bound = kCcwBound * permanent + kUnderflowSlack;
     if (det > bound) return 1;
     if (-det > bound) return -1;
-  } else if (permanent == 0.0 && (p1.x == p0.x || q1.y == q0.y) &&
-             (p1.y == p0.y || q1.x == q0.x)) {
+  } else if (permanent == 0.0 && (p1.x == p0.x || q1.y == q0.y) && (p1.y == p0.y || q1.x == q0.x)) {
     return 0;  // both products are exact zeros (axis-aligned data), not underflow
   }
   return crossExact(p0, p1, q0, q1);
@@ -47,7 +46,9 @@ inline int crossFiltered(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
 
 // Sign of (a - c) x (b - c): +1 when a, b, c turn counter-clockwise, -1 clockwise,
 // 0 when exactly collinear.
-inline int orient2d(Vec2 a, Vec2 b, Vec2 c) noexcept { return detail::crossFiltered(c, a, c, b); }
+inline int orient2d(Vec2 a, Vec2 b, Vec2 c) noexcept {
+  return detail::crossFiltered(c, a, c, b);
+}
 
 // Sign of the cross product (b - a) x (d - c) of two segment directions.
 inline int crossDiff2d(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
