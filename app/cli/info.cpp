@@ -12,7 +12,6 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "commands.hpp"
