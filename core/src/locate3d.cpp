@@ -1083,6 +1083,14 @@ inline std::uint32_t CubemapLocator::leafAt(std::uint64_t X, std::uint64_t Y, st
   return node;
 }
 
+std::span<const std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const noexcept {
+  Aim a;
+  if (aim(p, a) <= 0) return {};
+  int level = 0;
+  const Node& leaf = nodes_[leafAt(a.X, a.Y, a.node, level)];
+  return {entries_.data() + leaf.first, leaf.count};
+}
+
 template <class Sink>
 Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
   Aim a;
