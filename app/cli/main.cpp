@@ -189,6 +189,8 @@ int run(int argc, char** argv) {
                       "Hard cases: vertices, points on edges (and faces), one ulp off them "
                       "(default: uniform in the bounding box grown by 10%)");
 
+  const IntersectCommand intersect = addIntersect(app);
+
   // after the subcommands, which would otherwise inherit it
   app.footer(std::string(kFormat) + kExamples);
   classify->footer(kFormat);
@@ -218,6 +220,8 @@ int run(int argc, char** argv) {
       generatePolygon(polygonOptions);
     } else if (*genPolyhedron) {
       generatePolyhedron(polyhedronOptions);
+    } else if (*intersect.sub) {
+      intersect.run();
     } else if (*genPoints) {
       if (isPolyhedronPath(pointsOptions.shape))
         generatePoints3D(pointsOptions);
