@@ -20,6 +20,13 @@ constexpr std::string_view toString(Crossing c) {
   return "?";
 }
 
+// The vertices where a line's (plane's) side function is largest and smallest, and its exact
+// signs there: what every method's trace reports.
+struct ExtremeVertices {
+  std::uint32_t largest = 0, smallest = 0;
+  int largestSign = 0, smallestSign = 0;
+};
+
 // The crossing of a line (plane) from the exact signs of its side function at the vertices
 // where it is largest and smallest: crosses when they are strictly opposite, touches when
 // one is zero and the other is not strictly opposite, misses otherwise.

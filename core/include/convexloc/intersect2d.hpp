@@ -78,11 +78,9 @@ struct Segment2D {
 struct LineTrace {
   LineMethod method = LineMethod::Dual;
   Crossing crossing = Crossing::Misses;
-  std::uint32_t maxVertex = 0;   // a vertex where f is largest
-  std::uint32_t minVertex = 0;   // a vertex where f is smallest
-  int maxSign = 0, minSign = 0;  // the exact signs of f there
-  std::int64_t cell = -1;        // dual: the polar cell of the line's normal, -1 when none
-  std::uint32_t startMax = 0;    // dual: the vertices the cell proposed
+  ExtremeVertices extremes;    // where f is largest and smallest, its exact signs there
+  std::int64_t cell = -1;      // dual: the polar cell of the line's normal, -1 when none
+  std::uint32_t startMax = 0;  // dual: the vertices the cell proposed
   std::uint32_t startMin = 0;
   std::uint32_t climbSteps = 0;   // dual: moves from the proposals to the extremes
   bool bisected = false;          // dual: a climb ran long and bisection finished it
@@ -131,10 +129,9 @@ class LineIntersector {
   const PolarLocator* dualLocator() const noexcept;
 
  private:
-  struct Extremes;
   // the vertices where f is largest and smallest, and their exact signs; records in `trace`
   // when given
-  Extremes extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept;
+  ExtremeVertices extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept;
   LineMethod method_;
   std::vector<Vec2> ring_;
   std::unique_ptr<detail::DualPolar2D> dual_;

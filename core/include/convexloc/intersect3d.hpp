@@ -51,11 +51,9 @@ bool collinear(Vec3 a, Vec3 b, Vec3 c) noexcept;
 struct PlaneTrace {
   PlaneMethod method = PlaneMethod::Dual;
   Crossing crossing = Crossing::Misses;
-  std::uint32_t maxVertex = 0;   // a vertex where G is largest
-  std::uint32_t minVertex = 0;   // a vertex where G is smallest
-  int maxSign = 0, minSign = 0;  // the exact signs of G there
-  bool proposed = false;         // dual: the cube map proposed both starting vertices
-  std::uint32_t startMax = 0;    // dual: the proposals
+  ExtremeVertices extremes;    // where G is largest and smallest, its exact signs there
+  bool proposed = false;       // dual: the cube map proposed both starting vertices
+  std::uint32_t startMax = 0;  // dual: the proposals
   std::uint32_t startMin = 0;
   std::uint32_t listedMax = 0;  // dual: faces of the dual listed in the two cells
   std::uint32_t listedMin = 0;

@@ -19,6 +19,7 @@
 #include "intersect/dual_polar.hpp"
 #include "intersect/hits2d.hpp"
 #include "intersect/ring2d.hpp"
+#include "intersect/scan.hpp"
 
 namespace convexloc {
 
@@ -27,6 +28,7 @@ namespace {
 // moves a climb from the dual's proposal may take before bisection takes over
 constexpr std::uint32_t kClimbMoves = 8;
 
+// one method: its enum value, what --method takes, the cost of one query
 struct LineMethodInfo {
   LineMethod method;
   std::string_view name, cost;
@@ -35,14 +37,6 @@ constexpr std::array<LineMethodInfo, 3> kLineMethods = {
     {{LineMethod::Vertices, "vertices", "O(N)"},
      {LineMethod::Bisection, "bisection", "O(log N)"},
      {LineMethod::Dual, "dual", "O(1)"}}};
-
-// a vertex where f is largest, by comparing every vertex with the best so far: O(N)
-std::uint32_t scanLargest(std::span<const Vec2> ring, detail::LineProbe& line) noexcept {
-  std::uint32_t best = 0;
-  for (std::uint32_t i = 1; i < ring.size(); ++i)
-    if (line.rise(ring[best], ring[i]) > 0) best = i;
-  return best;
-}
 
 }  // namespace
 
@@ -60,11 +54,6 @@ std::optional<LineMethod> parseLineMethod(std::string_view name) noexcept {
   return std::nullopt;
 }
 
-struct LineIntersector::Extremes {
-  std::uint32_t largest = 0, smallest = 0;
-  int largestSign = 0, smallestSign = 0;
-};
-
 LineIntersector::LineIntersector(const ConvexPolygon& polygon, LineMethod method)
     : method_(method), ring_(polygon.vertices().begin(), polygon.vertices().end()) {
   const auto t0 = Clock::now();
@@ -76,17 +65,16 @@ LineIntersector::~LineIntersector() = default;
 LineIntersector::LineIntersector(LineIntersector&&) noexcept = default;
 LineIntersector& LineIntersector::operator=(LineIntersector&&) noexcept = default;
 
-LineIntersector::Extremes LineIntersector::extremes(Vec2 p1, Vec2 p2,
-                                                    LineTrace* trace) const noexcept {
+ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept {
   detail::LineProbe up{p1, p2}, down = up.reversed();
-  Extremes e;
+  ExtremeVertices e;
   detail::ExtremePair start;
   std::int64_t cell = -1;
   std::uint32_t steps = 0;
   bool bisected = false;
   if (method_ == LineMethod::Vertices) {
-    e.largest = scanLargest(ring_, up);
-    e.smallest = scanLargest(ring_, down);
+    e.largest = detail::scanLargest<Vec2>(ring_, up);
+    e.smallest = detail::scanLargest<Vec2>(ring_, down);
   } else if (method_ == LineMethod::Dual && dual_->propose(p1, p2, start, cell)) {
     e.largest = start.largest;
     e.smallest = start.smallest;
@@ -102,10 +90,7 @@ LineIntersector::Extremes LineIntersector::extremes(Vec2 p1, Vec2 p2,
   e.largestSign = orient2d(p1, p2, ring_[e.largest]);
   e.smallestSign = orient2d(p1, p2, ring_[e.smallest]);
   if (trace) {
-    trace->maxVertex = e.largest;
-    trace->minVertex = e.smallest;
-    trace->maxSign = e.largestSign;
-    trace->minSign = e.smallestSign;
+    trace->extremes = e;
     trace->cell = cell;
     trace->startMax = start.largest;
     trace->startMin = start.smallest;
@@ -118,7 +103,7 @@ LineIntersector::Extremes LineIntersector::extremes(Vec2 p1, Vec2 p2,
 
 Crossing LineIntersector::classify(Vec2 p1, Vec2 p2) const noexcept {
   if (method_ == LineMethod::Vertices) return detail::crossingBySides(ring_, p1, p2);
-  const Extremes e = extremes(p1, p2, nullptr);
+  const ExtremeVertices e = extremes(p1, p2, nullptr);
   return crossingOf(e.largestSign, e.smallestSign);
 }
 
@@ -129,7 +114,7 @@ void LineIntersector::classify(std::span<const Vec2> lines,
 
 LineHit LineIntersector::intersect(Vec2 p1, Vec2 p2) const noexcept {
   if (method_ == LineMethod::Vertices) return detail::hitsBySides(ring_, p1, p2);
-  const Extremes e = extremes(p1, p2, nullptr);
+  const ExtremeVertices e = extremes(p1, p2, nullptr);
   return detail::hitsFromExtremes(ring_, p1, p2, e.largest, e.smallest, e.largestSign,
                                   e.smallestSign);
 }
@@ -137,7 +122,7 @@ LineHit LineIntersector::intersect(Vec2 p1, Vec2 p2) const noexcept {
 LineTrace LineIntersector::trace(Vec2 p1, Vec2 p2) const {
   LineTrace t;
   t.method = method_;
-  const Extremes e = extremes(p1, p2, &t);
+  const ExtremeVertices e = extremes(p1, p2, &t);
   t.crossing = crossingOf(e.largestSign, e.smallestSign);
   return t;
 }

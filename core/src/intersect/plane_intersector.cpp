@@ -17,17 +17,11 @@
 #include "convexloc/timing.hpp"
 #include "intersect/graph3d.hpp"
 #include "intersect/plane_dual.hpp"
+#include "intersect/scan.hpp"
 
 namespace convexloc {
 
 namespace {
-
-struct PlaneMethodInfo {
-  PlaneMethod method;
-  std::string_view name, cost;
-};
-constexpr std::array<PlaneMethodInfo, 2> kPlaneMethods = {
-    {{PlaneMethod::Vertices, "vertices", "O(V)"}, {PlaneMethod::Dual, "dual", "O(1)"}}};
 
 // the crossing from every vertex's side: O(V)
 Crossing crossingBySides(std::span<const Vec3> vertices, Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
@@ -42,27 +36,19 @@ Crossing crossingBySides(std::span<const Vec3> vertices, Vec3 q1, Vec3 q2, Vec3 
   return on ? Crossing::Touches : Crossing::Misses;
 }
 
-// a vertex where G is largest, by comparing every vertex with the best so far: O(V)
-std::uint32_t scanLargest(std::span<const Vec3> vertices, detail::PlaneProbe& plane) noexcept {
-  std::uint32_t best = 0;
-  for (std::uint32_t i = 1; i < vertices.size(); ++i)
-    if (plane.rise(vertices[best], vertices[i]) > 0) best = i;
-  return best;
-}
-
 }  // namespace
 
 std::string_view toString(PlaneMethod m) noexcept {
-  return kPlaneMethods[static_cast<std::size_t>(m)].name;
+  return m == PlaneMethod::Dual ? "dual" : "vertices";
 }
 
 std::string_view costOf(PlaneMethod m) noexcept {
-  return kPlaneMethods[static_cast<std::size_t>(m)].cost;
+  return m == PlaneMethod::Dual ? "O(1)" : "O(V)";
 }
 
 std::optional<PlaneMethod> parsePlaneMethod(std::string_view name) noexcept {
-  for (const PlaneMethodInfo& m : kPlaneMethods)
-    if (m.name == name) return m.method;
+  for (const PlaneMethod m : kAllPlaneMethods)
+    if (toString(m) == name) return m;
   return std::nullopt;
 }
 
@@ -93,20 +79,21 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
   PlaneTrace t;
   t.method = method_;
   detail::PlaneProbe up{q1, q2, q3}, down = up.swapped();
+  ExtremeVertices& e = t.extremes;
   if (method_ == PlaneMethod::Vertices) {
-    t.maxVertex = scanLargest(vertices_, up);
-    t.minVertex = scanLargest(vertices_, down);
+    e.largest = detail::scanLargest<Vec3>(vertices_, up);
+    e.smallest = detail::scanLargest<Vec3>(vertices_, down);
   } else {
     t.proposed = dual_->propose(q1, q2, q3, t.startMax, t.startMin, t.listedMax, t.listedMin);
-    t.maxVertex = t.startMax;
-    t.minVertex = t.startMin;
+    e.largest = t.startMax;
+    e.smallest = t.startMin;
     constexpr std::uint32_t kNoLimit = std::numeric_limits<std::uint32_t>::max();
-    detail::climbToLargest(*graph_, vertices_, up, t.maxVertex, kNoLimit, t.climbSteps);
-    detail::climbToLargest(*graph_, vertices_, down, t.minVertex, kNoLimit, t.climbSteps);
+    detail::climbToLargest(*graph_, vertices_, up, e.largest, kNoLimit, t.climbSteps);
+    detail::climbToLargest(*graph_, vertices_, down, e.smallest, kNoLimit, t.climbSteps);
   }
-  t.maxSign = orient3d(q1, q2, q3, vertices_[t.maxVertex]);
-  t.minSign = orient3d(q1, q2, q3, vertices_[t.minVertex]);
-  t.crossing = crossingOf(t.maxSign, t.minSign);
+  e.largestSign = orient3d(q1, q2, q3, vertices_[e.largest]);
+  e.smallestSign = orient3d(q1, q2, q3, vertices_[e.smallest]);
+  t.crossing = crossingOf(e.largestSign, e.smallestSign);
   if (tracing) t.comparisons = up.comparisons + down.comparisons;
   return t;
 }
