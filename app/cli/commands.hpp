@@ -20,6 +20,10 @@
 #include "convexloc/polygon.hpp"
 #include "convexloc/polyhedron.hpp"
 
+namespace CLI {
+class App;
+}
+
 namespace convexloc::cli {
 
 // === Exit codes
@@ -132,6 +136,16 @@ void generatePolygon(const GeneratePolygonOptions& o);  // generate.cpp
 void generatePolyhedron(const GeneratePolyhedronOptions& o);
 void generatePoints2D(const GeneratePointsOptions& o);
 void generatePoints3D(const GeneratePointsOptions& o);
+
+// === Commands that register their own subcommand
+
+// a subcommand, and what runs when the command line names it
+struct Command {
+  CLI::App* sub = nullptr;
+  std::function<void()> action;
+};
+// `intersect SHAPE LINES [--method] [--clip]` (intersect.cpp)
+Command addIntersect(CLI::App& app);
 
 // === Output
 

@@ -129,12 +129,6 @@ int usageError(const CLI::App& app, const std::string& message) {
 
 // === Commands: one small function each, declaring its subcommand and what it runs
 
-// a subcommand, and what runs when the command line names it
-struct Command {
-  CLI::App* sub = nullptr;
-  std::function<void()> action;
-};
-
 // A subcommand being declared, and the options the command line fills for it; they live as
 // long as the action that reads them.
 template <class Options>
@@ -276,6 +270,7 @@ std::vector<Command> addCommands(CLI::App& app) {
   commands.push_back(addGeneratePolygon(*generate));
   commands.push_back(addGeneratePolyhedron(*generate));
   commands.push_back(addGeneratePoints(*generate));
+  commands.push_back(addIntersect(app));
   return commands;
 }
 

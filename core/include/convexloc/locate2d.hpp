@@ -240,6 +240,11 @@ class PolarLocator {
   // the cell a point maps to, or -1 for the centre and for directions too large to compute
   // (the index function of queries and build alike)
   std::int64_t cellIndex(Vec2 p) const noexcept;
+  // the edges cell `cell` (0 <= cell < cellCount()) lists, counter-clockwise
+  std::span<const std::uint32_t> cellEdges(std::int64_t cell) const noexcept {
+    const auto c = static_cast<std::size_t>(cell);
+    return {entries_.data() + offsets_[c], offsets_[c + 1] - offsets_[c]};
+  }
   // the box the cells are drawn to (the polygon's bounding box)
   Box2 box() const noexcept { return box_; }
 

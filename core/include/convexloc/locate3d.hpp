@@ -204,6 +204,9 @@ class CubemapLocator {
   // half the side of the cube, centred on the centre, that cells() draws on (it encloses
   // the polyhedron)
   double cubeHalfSize() const noexcept { return cubeHalfSize_; }
+  // the faces listed in the leaf cell p maps to (the ones a query of p would test); empty
+  // for the centre and where there is no cell
+  std::span<const std::uint32_t> cellFaces(Vec3 p) const noexcept;
 
  private:
   friend class CubemapBuilder;

@@ -28,6 +28,14 @@ Location CubemapLocator::locate(Vec3 p) const noexcept {
   return run(p, sink);
 }
 
+std::span<const std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const noexcept {
+  Aim a;
+  if (aim(p, a) <= 0) return {};
+  int level = 0;
+  const Node& leaf = nodes_[leafAt(a.deepI, a.deepJ, a.baseCell, level)];
+  return {entries_.data() + leaf.first, leaf.count};
+}
+
 Trace3D CubemapLocator::trace(Vec3 p) const {
   return detail::traced(Method3D::Cubemap, centre(), [&](auto& sink) { return run(p, sink); });
 }

@@ -1,0 +1,148 @@
+// convexloc — LineIntersector: one method chosen at build time, the answers it shares.
+//
+// Every method reaches a vertex where f is largest and one where it is smallest (the
+// vertices method by its scan), and the crossing is read from their exact signs
+// (crossingOf). Only how the two vertices are found differs: bisection (O(log N)), or the
+// dual table's proposals and a short climb (O(1), see dual_polar.cpp).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "convexloc/intersect2d.hpp"
+#include "convexloc/predicates.hpp"
+#include "convexloc/table.hpp"
+#include "convexloc/timing.hpp"
+#include "intersect/dual_polar.hpp"
+#include "intersect/hits2d.hpp"
+#include "intersect/ring2d.hpp"
+#include "intersect/scan.hpp"
+
+namespace convexloc {
+
+namespace {
+
+// moves a climb from the dual's proposal may take before bisection takes over
+constexpr std::uint32_t kClimbMoves = 8;
+
+// one method: its enum value, what --method takes, the cost of one query
+struct LineMethodInfo {
+  LineMethod method;
+  std::string_view name, cost;
+};
+constexpr std::array<LineMethodInfo, 3> kLineMethods = {
+    {{LineMethod::Vertices, "vertices", "O(N)"},
+     {LineMethod::Bisection, "bisection", "O(log N)"},
+     {LineMethod::Dual, "dual", "O(1)"}}};
+
+}  // namespace
+
+std::string_view toString(LineMethod m) noexcept {
+  return kLineMethods[static_cast<std::size_t>(m)].name;
+}
+
+std::string_view costOf(LineMethod m) noexcept {
+  return kLineMethods[static_cast<std::size_t>(m)].cost;
+}
+
+std::optional<LineMethod> parseLineMethod(std::string_view name) noexcept {
+  for (const LineMethodInfo& m : kLineMethods)
+    if (m.name == name) return m.method;
+  return std::nullopt;
+}
+
+LineIntersector::LineIntersector(const ConvexPolygon& polygon, LineMethod method)
+    : method_(method), ring_(polygon.vertices().begin(), polygon.vertices().end()) {
+  const auto t0 = Clock::now();
+  if (method_ == LineMethod::Dual) dual_ = std::make_unique<detail::DualPolar2D>(ring_);
+  buildSeconds_ = secondsSince(t0);
+}
+
+LineIntersector::~LineIntersector() = default;
+LineIntersector::LineIntersector(LineIntersector&&) noexcept = default;
+LineIntersector& LineIntersector::operator=(LineIntersector&&) noexcept = default;
+
+ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept {
+  detail::LineProbe up{p1, p2}, down = up.reversed();
+  ExtremeVertices e;
+  detail::ExtremePair start;
+  std::int64_t cell = -1;
+  std::uint32_t steps = 0;
+  bool bisected = false;
+  if (method_ == LineMethod::Vertices) {
+    e.largest = detail::scanLargest<Vec2>(ring_, up);
+    e.smallest = detail::scanLargest<Vec2>(ring_, down);
+  } else if (method_ == LineMethod::Dual && dual_->propose(p1, p2, start, cell)) {
+    e.largest = start.largest;
+    e.smallest = start.smallest;
+    if (!detail::climbToLargest(ring_, up, e.largest, kClimbMoves, steps))
+      e.largest = detail::bisectLargest(ring_, up), bisected = true;
+    if (!detail::climbToLargest(ring_, down, e.smallest, steps + kClimbMoves, steps))
+      e.smallest = detail::bisectLargest(ring_, down), bisected = true;
+  } else {
+    e.largest = detail::bisectLargest(ring_, up);
+    e.smallest = detail::bisectLargest(ring_, down);
+    bisected = method_ == LineMethod::Dual;
+  }
+  e.largestSign = orient2d(p1, p2, ring_[e.largest]);
+  e.smallestSign = orient2d(p1, p2, ring_[e.smallest]);
+  if (trace) {
+    trace->extremes = e;
+    trace->cell = cell;
+    trace->startMax = start.largest;
+    trace->startMin = start.smallest;
+    trace->climbSteps = steps;
+    trace->bisected = bisected;
+    trace->comparisons = up.comparisons + down.comparisons;
+  }
+  return e;
+}
+
+Crossing LineIntersector::classify(Vec2 p1, Vec2 p2) const noexcept {
+  if (method_ == LineMethod::Vertices) return detail::crossingBySides(ring_, p1, p2);
+  const ExtremeVertices e = extremes(p1, p2, nullptr);
+  return crossingOf(e.largestSign, e.smallestSign);
+}
+
+void LineIntersector::classify(std::span<const Vec2> lines,
+                               std::span<Crossing> out) const noexcept {
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = classify(lines[2 * i], lines[2 * i + 1]);
+}
+
+LineHit LineIntersector::intersect(Vec2 p1, Vec2 p2) const noexcept {
+  if (method_ == LineMethod::Vertices) return detail::hitsBySides(ring_, p1, p2);
+  const ExtremeVertices e = extremes(p1, p2, nullptr);
+  return detail::hitsFromExtremes(ring_, p1, p2, e.largest, e.smallest, e.largestSign,
+                                  e.smallestSign);
+}
+
+LineTrace LineIntersector::trace(Vec2 p1, Vec2 p2) const {
+  LineTrace t;
+  t.method = method_;
+  const ExtremeVertices e = extremes(p1, p2, &t);
+  t.crossing = crossingOf(e.largestSign, e.smallestSign);
+  return t;
+}
+
+LineStats LineIntersector::stats() const {
+  LineStats s;
+  s.vertices = ring_.size();
+  s.bytes = detail::bytesOf(ring_);
+  s.buildSeconds = buildSeconds_;
+  if (dual_) {
+    s.dualVertices = dual_->dualVertices();
+    s.cells = dual_->locator().cellCount();
+    s.maxPerCell = dual_->maxPerCell();
+    s.bytes += dual_->bytes();
+  }
+  return s;
+}
+
+const PolarLocator* LineIntersector::dualLocator() const noexcept {
+  return dual_ ? &dual_->locator() : nullptr;
+}
+
+}  // namespace convexloc
