@@ -82,6 +82,8 @@ class SceneState {
   using Method = typename Traits::Method;
   using Probe = PlacedPoint<Point, typename Traits::Trace>;
   using Timing = MethodTiming<Method>;
+  // every method of the dimension, in order
+  static constexpr std::span<const Method> kMethods = Traits::kMethods;
 
   virtual ~SceneState() = default;
 

@@ -11,7 +11,7 @@
 #include "logic/colour.hpp"
 #include "logic/model.hpp"
 #include "logic/text.hpp"
-#include "ui/panels.hpp"
+#include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {
 
@@ -92,13 +92,5 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
   if (!scene.points().empty())
     ImGui::TextDisabled("classified at %s ns/point", nsText(scene.locateNsPerPoint()).c_str());
 }
-
-// === 3D panels (panels3d.cpp)
-void shapePanel3(Model& model, UiState& ui);
-void methodPanel3(Model& model, UiState& ui);
-void slicePanel3(Model& model);
-void viewOptions3(Model& model);
-void legendContents3(Model& model);
-void inspectorContents3(Model& model, bool hints);
 
 }  // namespace convexloc::viewer
