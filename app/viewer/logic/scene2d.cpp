@@ -74,14 +74,9 @@ bool Scene2D::generate(PolygonKind kind, std::size_t n, std::uint64_t seed) {
 
 // === Method
 
-bool Scene2D::rebuildLocator() {
-  if (!buildLocator(resolution_[Traits2D::slot(method_)])) return false;
+void Scene2D::cellsChanged() {
   hovered_ = -1;
   if (hoverPoint_) hover(hoverPoint_);
-  classify();
-  retrace();
-  ++versions_.overlay;
-  return true;
 }
 
 std::uint32_t Scene2D::effectiveResolution() const {

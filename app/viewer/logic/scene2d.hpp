@@ -19,14 +19,7 @@
 namespace convexloc::viewer {
 
 // the 2D dimension, for SceneState
-struct Traits2D {
-  using Point = Vec2;
-  using Shape = ConvexPolygon;
-  using Locator = Locator2D;
-  using Cell = Cell2D;
-  using Stats = Stats2D;
-  using Method = Method2D;
-  using Trace = Trace2D;
+struct Traits2D : SceneTypes<Vec2, ConvexPolygon, Locator2D, Cell2D, Stats2D, Method2D, Trace2D> {
   static constexpr std::span<const Method2D> kMethods = kAllMethods2D;
   static constexpr Method2D kDefaultMethod = Method2D::Polar;
   // each method keeps its own resolution
@@ -96,7 +89,7 @@ class Scene2D : public SceneState<Traits2D> {
   const std::optional<Drag>& drag() const { return drag_; }
 
  private:
-  bool rebuildLocator() override;
+  void cellsChanged() override;
   bool adoptShape(ConvexPolygon polygon, std::string label) override;
   // a fresh shape gets a new spray; an edited one keeps its points
   bool adopt(ConvexPolygon polygon, std::string label, bool fresh);

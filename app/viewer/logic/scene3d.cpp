@@ -70,15 +70,10 @@ Bounds3 Scene3D::bounds() const {
 
 // === Method
 
-bool Scene3D::rebuildLocator() {
-  if (!buildLocator(resolution_[0])) return false;
+void Scene3D::cellsChanged() {
   hovered_ = -1;
   if (pinned_ >= static_cast<std::ptrdiff_t>(cells_.size())) pinned_ = -1;
-  classify();
   resection();
-  retrace();
-  ++versions_.overlay;
-  return true;
 }
 
 std::uint32_t Scene3D::effectiveResolution() const {

@@ -32,14 +32,8 @@ struct Section {
 };
 
 // the 3D dimension, for SceneState
-struct Traits3D {
-  using Point = Vec3;
-  using Shape = ConvexPolyhedron;
-  using Locator = Locator3D;
-  using Cell = Cell3D;
-  using Stats = Stats3D;
-  using Method = Method3D;
-  using Trace = Trace3D;
+struct Traits3D
+    : SceneTypes<Vec3, ConvexPolyhedron, Locator3D, Cell3D, Stats3D, Method3D, Trace3D> {
   static constexpr std::span<const Method3D> kMethods = kAllMethods3D;
   static constexpr Method3D kDefaultMethod = Method3D::Cubemap;
   // one grid size, kept across methods; only the cube map reads it when compared
@@ -108,7 +102,7 @@ class Scene3D : public SceneState<Traits3D> {
   std::ptrdiff_t pickCell(const Ray3& ray) const;
 
  private:
-  bool rebuildLocator() override;
+  void cellsChanged() override;
   bool adoptShape(ConvexPolyhedron poly, std::string label) override;
   void dropChosenCell() override { pinned_ = -1; }
   void resection();

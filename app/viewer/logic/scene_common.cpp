@@ -54,9 +54,9 @@ bool SceneState<Traits>::swapShape(Shape shape, std::string label, bool fresh) {
 // === Method
 
 template <class Traits>
-bool SceneState<Traits>::buildLocator(std::uint32_t resolution) {
+bool SceneState<Traits>::rebuildLocator() {
   try {
-    Locator next(*shape_, method_, resolution);
+    Locator next(*shape_, method_, resolution_[Traits::slot(method_)]);
     stats_ = next.stats();
     std::vector<Cell> cells;
     if (stats_.cells <= kMaxDrawnCells) cells = next.cells();
@@ -70,6 +70,10 @@ bool SceneState<Traits>::buildLocator(std::uint32_t resolution) {
     return false;
   }
   ++versions_.structure;
+  cellsChanged();
+  classify();
+  retrace();
+  ++versions_.overlay;
   return true;
 }
 

@@ -67,6 +67,19 @@ std::string located(const std::string& source, const Error& e);
 // the file name of a path, for labels
 std::string baseName(const std::string& path);
 
+// the types a dimension's scene is made of, for its traits
+template <class PointT, class ShapeT, class LocatorT, class CellT, class StatsT, class MethodT,
+          class TraceT>
+struct SceneTypes {
+  using Point = PointT;
+  using Shape = ShapeT;
+  using Locator = LocatorT;
+  using Cell = CellT;
+  using Stats = StatsT;
+  using Method = MethodT;
+  using Trace = TraceT;
+};
+
 // The state both scenes keep, over the traits of a dimension: its types (Point, Shape,
 // Locator, Cell, Stats, Method, Trace), its methods (kMethods, kDefaultMethod), where a
 // method keeps its resolution (kSlots, slot(m), compareResolution), how to spray and read
@@ -138,16 +151,17 @@ class SceneState {
   const Versions& versions() const { return versions_; }
 
  protected:
-  // builds the locator of the current shape and method again, then what depends on it
-  virtual bool rebuildLocator() = 0;
+  // Builds the locator of the current shape, method and resolution again, then what
+  // depends on it (the scene's own cell choices, the classes, the trace); false and
+  // error() when core refuses, the last locator staying.
+  bool rebuildLocator();
+  // the scene's own state that hangs on the cells, brought up to date with new ones
+  virtual void cellsChanged() = 0;
   // makes a validated shape the scene's (a new shape, not an edit)
   virtual bool adoptShape(Shape shape, std::string label) = 0;
   // forgets a cell the user chose, before the cells change
   virtual void dropChosenCell() {}
 
-  // Builds a locator for the current shape and method at `resolution` and keeps it, its
-  // statistics and (when few enough) its cells; false and error() when core refuses.
-  bool buildLocator(std::uint32_t resolution);
   // the batch classification of the spray, its counts and its time
   void classify();
   // the placed point traced again by the current locator

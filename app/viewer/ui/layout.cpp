@@ -18,6 +18,11 @@
 namespace convexloc::viewer {
 namespace {
 
+// the panels of the scene shown
+const ScenePanels& panelsOf(const Model& model) {
+  return model.dim == Dim::Two ? panels2D() : panels3D();
+}
+
 // === View
 
 void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
@@ -30,10 +35,7 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   ImGui::SliderFloat("##font", &ui.fontScaleEdit, 0.75f, 2.5f, "text %.2fx");
   if (ImGui::IsItemDeactivatedAfterEdit()) ui.pendingFontScale = ui.fontScaleEdit;
 
-  if (model.dim == Dim::Two)
-    viewOptions2D(model);
-  else
-    viewOptions3D(model);
+  panelsOf(model).viewOptions(model);
 
   const float third =
       (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
@@ -57,22 +59,6 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   if (!ui.glInfo.empty()) ImGui::TextDisabled("%s", ui.glInfo.c_str());
 }
 
-// the legend of the scene shown
-void legendContents(Model& model) {
-  if (model.dim == Dim::Two)
-    legend2D(model);
-  else
-    legend3D(model);
-}
-
-// the inspector of the scene shown
-void inspectorContents(Model& model, bool hints) {
-  if (model.dim == Dim::Two)
-    inspector2D(model, hints);
-  else
-    inspector3D(model, hints);
-}
-
 // the legend alone, over the scene's lower right corner (panels hidden)
 void legendOverlay(Model& model, ScreenRect area) {
   ImGui::SetNextWindowPos(
@@ -83,7 +69,7 @@ void legendOverlay(Model& model, ScreenRect area) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  legendContents(model);
+  panelsOf(model).legend(model);
   ImGui::End();
 }
 
@@ -155,30 +141,20 @@ void dimensionButtons(Model& model) {
 
 // the scene's own panels, in the left window
 void scenePanels(Model& model, UiState& ui) {
-  constexpr ImGuiTreeNodeFlags kOpen = ImGuiTreeNodeFlags_DefaultOpen;
-  if (model.dim == Dim::Two) {
-    if (ImGui::CollapsingHeader("Shape", kOpen)) shapePanel2D(model, ui);
-    if (ImGui::CollapsingHeader("Method", kOpen)) methodPanel2D(model, ui);
-    if (ImGui::CollapsingHeader("Points", kOpen)) pointsPanel(model, ui, model.scene2d);
-  } else {
-    if (ImGui::CollapsingHeader("Shape", kOpen)) shapePanel3D(model, ui);
-    if (ImGui::CollapsingHeader("Method", kOpen)) methodPanel3D(model, ui);
-    if (ImGui::CollapsingHeader("Slicing plane", kOpen)) slicePanel3D(model);
-    if (ImGui::CollapsingHeader("Points")) pointsPanel(model, ui, model.scene3d());
-  }
+  const ScenePanels& p = panelsOf(model);
+  if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) p.shape(model, ui);
+  if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) p.method(model, ui);
+  if (p.ownTitle && ImGui::CollapsingHeader(p.ownTitle, ImGuiTreeNodeFlags_DefaultOpen))
+    p.own(model);
+  if (ImGui::CollapsingHeader("Points", p.pointsOpen ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+    p.points(model, ui);
 }
 
 // the mouse and key hints under the panels
 void hints(const Model& model) {
   ImGui::Spacing();
-  if (model.dim == Dim::Two) {
-    ImGui::TextDisabled("drag: pan, wheel: zoom, click: place a point");
-    ImGui::TextDisabled("F fit, H hide panels, 1-5 method, Space spray");
-  } else {
-    ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom");
-    ImGui::TextDisabled("click the plane: place a point; Shift-click: pin a cell");
-    ImGui::TextDisabled("F fit, H hide panels, 1-3 method, Space spray");
-  }
+  for (const char* const* line = panelsOf(model).hints; *line; ++line)
+    ImGui::TextDisabled("%s", *line);
 }
 
 // the left window: title, dimension, the scene's panels, View, hints
@@ -194,18 +170,10 @@ void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window)
 // the right window: the legend over the inspector
 void rightPanel(Model& model, glm::dvec2 window, float width) {
   sideWindow("What you see", static_cast<float>(window.x) - width, width, window.y);
-  legendContents(model);
+  panelsOf(model).legend(model);
   ImGui::Separator();
-  inspectorContents(model, true);
+  panelsOf(model).inspector(model, true);
   ImGui::End();
-}
-
-// a hovered or pinned cell, or a placed point
-bool somethingToInspect(Model& model) {
-  if (model.dim == Dim::Two)
-    return model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value();
-  const Scene3D& s = model.scene3d();
-  return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.probe().has_value();
 }
 
 // the inspector floating over the scene's upper right corner (no right panel)
@@ -220,7 +188,7 @@ void floatingInspector(Model& model, ScreenRect area, glm::dvec2 window) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing);
-  inspectorContents(model, false);
+  panelsOf(model).inspector(model, false);
   ImGui::End();
 }
 
@@ -303,7 +271,8 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     rightPanel(model, window, rw);
   } else {
     legendOverlay(model, area);
-    if (model.settings.showUi && somethingToInspect(model)) floatingInspector(model, area, window);
+    if (model.settings.showUi && panelsOf(model).inspectable(model))
+      floatingInspector(model, area, window);
   }
   toast(model, ui, area, now);
 }

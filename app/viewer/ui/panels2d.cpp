@@ -48,8 +48,6 @@ void hoveredCellText(const Scene2D& scene, const Cell2D& c) {
                      edges.c_str());
 }
 
-}  // namespace
-
 void shapePanel2D(Model& model, UiState& ui) {
   Scene2D& scene = model.scene2d;
   const ConvexPolygon& poly = scene.polygon();
@@ -89,17 +87,24 @@ void methodPanel2D(Model& model, UiState& ui) {
 
 void viewOptions2D(Model& model) {
   View2DOptions& o = model.settings.view2d;
-  const float mid = ImGui::GetContentRegionAvail().x * 0.5f;
-  ImGui::Checkbox("structure", &o.showStructure);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("tinted cells", &o.showTints);
-  ImGui::Checkbox("bounding box", &o.showBox);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("octant lines", &o.showOctants);
-  ImGui::Checkbox("labels", &o.showLabels);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("vertex handles", &o.showHandles);
+  toggleGrid({{"structure", &o.showStructure},
+              {"tinted cells", &o.showTints},
+              {"bounding box", &o.showBox},
+              {"octant lines", &o.showOctants},
+              {"labels", &o.showLabels},
+              {"vertex handles", &o.showHandles}});
 }
+
+void pointsPanel2D(Model& model, UiState& ui) {
+  pointsPanel(model, ui, model.scene2d);
+}
+
+bool inspectable2D(Model& model) {
+  return model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value();
+}
+
+constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a point",
+                                    "F fit, H hide panels, 1-5 method, Space spray", nullptr};
 
 void legend2D(Model& model) {
   const Scene2D& scene = model.scene2d;
@@ -148,6 +153,15 @@ void inspector2D(Model& model, bool hints) {
         return describeTrace(probe.trace, probe.point, scene.polygon(),
                              scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
       });
+}
+
+}  // namespace
+
+const ScenePanels& panels2D() {
+  static constexpr ScenePanels kPanels = {shapePanel2D,  methodPanel2D, nullptr,       nullptr,
+                                          pointsPanel2D, true,          viewOptions2D, legend2D,
+                                          inspector2D,   inspectable2D, kHints2D};
+  return kPanels;
 }
 
 }  // namespace convexloc::viewer

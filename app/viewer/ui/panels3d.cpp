@@ -62,8 +62,6 @@ std::vector<StatLine> statLines(const Scene3D& scene) {
   return rows;
 }
 
-}  // namespace
-
 void shapePanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   const ConvexPolyhedron& p = scene.polyhedron();
@@ -125,17 +123,26 @@ void slicePanel3D(Model& model) {
 
 void viewOptions3D(Model& model) {
   View3DOptions& o = model.settings.view3d;
-  const float mid = ImGui::GetContentRegionAvail().x * 0.5f;
-  ImGui::Checkbox("faces", &o.showMesh);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("see-through", &o.transparent);
-  ImGui::Checkbox("wireframe", &o.wireframe);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("cube grid", &o.showCube);
-  ImGui::Checkbox("tinted cells", &o.showTints);
-  ImGui::SameLine(mid);
-  ImGui::Checkbox("labels", &o.showLabels);
+  toggleGrid({{"faces", &o.showMesh},
+              {"see-through", &o.transparent},
+              {"wireframe", &o.wireframe},
+              {"cube grid", &o.showCube},
+              {"tinted cells", &o.showTints},
+              {"labels", &o.showLabels}});
 }
+
+void pointsPanel3D(Model& model, UiState& ui) {
+  pointsPanel(model, ui, model.scene3d());
+}
+
+bool inspectable3D(Model& model) {
+  const Scene3D& s = model.scene3d();
+  return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.probe().has_value();
+}
+
+constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
+                                    "click the plane: place a point; Shift-click: pin a cell",
+                                    "F fit, H hide panels, 1-3 method, Space spray", nullptr};
 
 void legend3D(Model& model) {
   Scene3D& scene = model.scene3d();
@@ -181,6 +188,15 @@ void inspector3D(Model& model, bool hints) {
   }
   placedPoint(scene, pal, hints, "click on the slicing plane to place a point and follow its query",
               [](const Probe3D& probe) { return describeTrace3D(probe.trace, probe.point); });
+}
+
+}  // namespace
+
+const ScenePanels& panels3D() {
+  static constexpr ScenePanels kPanels = {
+      shapePanel3D,  methodPanel3D, "Slicing plane", slicePanel3D,  pointsPanel3D, false,
+      viewOptions3D, legend3D,      inspector3D,     inspectable3D, kHints3D};
+  return kPanels;
 }
 
 }  // namespace convexloc::viewer

@@ -52,4 +52,24 @@ struct UiState {
   std::string glInfo;
 };
 
+class Model;
+
+// The panels of one scene, as the layout shows them: the left window's Shape, Method, an
+// optional panel of its own and Points; the View panel's options; the right window's
+// legend and inspector.
+struct ScenePanels {
+  void (*shape)(Model&, UiState&);
+  void (*method)(Model&, UiState&);
+  const char* ownTitle;  // the scene's own panel ("Slicing plane"), or nullptr
+  void (*own)(Model&);
+  void (*points)(Model&, UiState&);
+  bool pointsOpen;  // the Points panel starts open
+  void (*viewOptions)(Model&);
+  void (*legend)(Model&);
+  void (*inspector)(Model&, bool hints);
+  // a hovered or pinned cell, or a placed point, for the floating inspector
+  bool (*inspectable)(Model&);
+  const char* const* hints;  // the mouse and key hints under the panels, nullptr-terminated
+};
+
 }  // namespace convexloc::viewer

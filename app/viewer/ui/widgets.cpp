@@ -76,6 +76,16 @@ void statRow(const char* key, const std::string& value) {
   ImGui::TextUnformatted(value.c_str());
 }
 
+void toggleGrid(std::initializer_list<Toggle> toggles) {
+  const float mid = ImGui::GetContentRegionAvail().x * 0.5f;
+  bool right = false;
+  for (const Toggle& t : toggles) {
+    if (right) ImGui::SameLine(mid);
+    ImGui::Checkbox(t.label, t.value);
+    right = !right;
+  }
+}
+
 void fileOpen(Model& model, UiState& ui, const char* hint) {
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3.0f * ImGui::GetStyle().FramePadding.x);
   const bool enter = ImGui::InputTextWithHint("##path", hint, ui.path, sizeof ui.path,

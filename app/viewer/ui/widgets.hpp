@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ void help(const char* text);
 std::string percent(std::size_t part, std::size_t whole);
 // a two-column row of a statistics table
 void statRow(const char* key, const std::string& value);
+// a check box's label and what it sets
+struct Toggle {
+  const char* label;
+  bool* value;
+};
+// check boxes in two columns
+void toggleGrid(std::initializer_list<Toggle> toggles);
 // the path box, Open, recent files and assets
 void fileOpen(Model& model, UiState& ui, const char* hint);
 // the degenerate gallery's buttons for polygons or for polyhedra
