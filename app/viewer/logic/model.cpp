@@ -78,21 +78,12 @@ void Model::remember(const std::string& path) {
 
 bool Model::open(const std::string& path) {
   const std::string ext = extensionOf(path);
-  if (ext == ".off" || ext == ".obj") {
-    if (!scene3d().loadFile(path)) {
-      collectErrors();
-      return false;
-    }
-    dim = Dim::Three;
-    remember(path);
-    requestFit();
-    return true;
-  }
-  if (!scene2d.loadFile(path)) {
+  const Dim d = ext == ".off" || ext == ".obj" ? Dim::Three : Dim::Two;
+  if (!(d == Dim::Three ? scene3d().loadFile(path) : scene2d.loadFile(path))) {
     collectErrors();
     return false;
   }
-  dim = Dim::Two;
+  dim = d;
   remember(path);
   requestFit();
   return true;

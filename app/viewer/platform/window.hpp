@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "logic/no_copy.hpp"
 #include "logic/options.hpp"
 
 struct GLFWwindow;
@@ -31,13 +32,11 @@ struct FrameSize {
   float pixelRatio = 1.0f;  // framebuffer pixels per window pixel
 };
 
-class Window {
+// one GLFW window with its GL context and ImGui on it
+class Window : NoCopy {
  public:
-  Window() = default;
   // closes ImGui's backends, the window and GLFW
   ~Window();
-  Window(const Window&) = delete;
-  Window& operator=(const Window&) = delete;
 
   // Opens a window of the options' size with a GL 3.3 core context, loads the GL
   // functions and starts ImGui on it; false (with the reason on stderr) when it cannot.

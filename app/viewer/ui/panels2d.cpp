@@ -87,12 +87,9 @@ void methodPanel2D(Model& model, UiState& ui) {
 
 void viewOptions2D(Model& model) {
   View2DOptions& o = model.settings.view2d;
-  toggleGrid({{"structure", &o.showStructure},
-              {"tinted cells", &o.showTints},
-              {"bounding box", &o.showBox},
-              {"octant lines", &o.showOctants},
-              {"labels", &o.showLabels},
-              {"vertex handles", &o.showHandles}});
+  toggleGrid(
+      "structure|tinted cells|bounding box|octant lines|labels|vertex handles",
+      {&o.showStructure, &o.showTints, &o.showBox, &o.showOctants, &o.showLabels, &o.showHandles});
 }
 
 void pointsPanel2D(Model& model, UiState& ui) {

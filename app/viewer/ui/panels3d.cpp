@@ -121,18 +121,14 @@ void slicePanel3D(Model& model) {
   ImGui::TextDisabled("click on the plane to place a point");
 }
 
-void viewOptions3D(Model& model) {
-  View3DOptions& o = model.settings.view3d;
-  toggleGrid({{"faces", &o.showMesh},
-              {"see-through", &o.transparent},
-              {"wireframe", &o.wireframe},
-              {"cube grid", &o.showCube},
-              {"tinted cells", &o.showTints},
-              {"labels", &o.showLabels}});
-}
-
 void pointsPanel3D(Model& model, UiState& ui) {
   pointsPanel(model, ui, model.scene3d());
+}
+
+void viewOptions3D(Model& model) {
+  View3DOptions& o = model.settings.view3d;
+  toggleGrid("faces|see-through|wireframe|cube grid|tinted cells|labels",
+             {&o.showMesh, &o.transparent, &o.wireframe, &o.showCube, &o.showTints, &o.showLabels});
 }
 
 bool inspectable3D(Model& model) {

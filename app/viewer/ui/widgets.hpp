@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <imgui.h>
@@ -33,13 +34,8 @@ void help(const char* text);
 std::string percent(std::size_t part, std::size_t whole);
 // a two-column row of a statistics table
 void statRow(const char* key, const std::string& value);
-// a check box's label and what it sets
-struct Toggle {
-  const char* label;
-  bool* value;
-};
-// check boxes in two columns
-void toggleGrid(std::initializer_list<Toggle> toggles);
+// check boxes in two columns: `labels` separated by '|', each setting its bool in `values`
+void toggleGrid(std::string_view labels, std::initializer_list<bool*> values);
 // the path box, Open, recent files and assets
 void fileOpen(Model& model, UiState& ui, const char* hint);
 // the degenerate gallery's buttons for polygons or for polyhedra
