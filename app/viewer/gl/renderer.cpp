@@ -53,6 +53,28 @@ void attribute(GLuint index, GLint size, GLsizei stride, std::size_t offset, GLu
   glVertexAttribDivisor(index, divisor);
 }
 
+// the byte offset of a field in its record
+template <class Record, class Field>
+std::size_t offsetIn(Field Record::*field) {
+  static const Record record{};
+  return static_cast<std::size_t>(reinterpret_cast<const char*>(&(record.*field)) -
+                                  reinterpret_cast<const char*>(&record));
+}
+
+// a new vertex array over a new buffer of Records, whose float-array fields are the
+// attributes 0, 1, ... in order, advancing per vertex (divisor 0) or per instance (1)
+template <class Record, class... Fields>
+void makeArray(GLuint& vao, GLuint& vbo, GLuint divisor, Fields Record::*... fields) {
+  glGenVertexArrays(1, &vao);
+  glGenBuffers(1, &vbo);
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  GLuint index = 0;
+  (attribute(index++, static_cast<GLint>(sizeof(Fields) / sizeof(float)), sizeof(Record),
+             offsetIn(fields), divisor),
+   ...);
+}
+
 template <class T>
 void uploadBuffer(GLuint vbo, const std::vector<T>& data) {
   glBindBuffer(GL_ARRAY_BUFFER, vbo);
@@ -192,30 +214,12 @@ bool Renderer::init(const std::string& dir) {
   if (!created_) {
     created_ = true;
     for (GpuLayer& l : layers_) {
-      glGenVertexArrays(1, &l.fillVao);
-      glGenBuffers(1, &l.fillVbo);
-      glBindVertexArray(l.fillVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.fillVbo);
-      attribute(0, 3, sizeof(GpuFill), offsetof(GpuFill, pos), 0);
-      attribute(1, 4, sizeof(GpuFill), offsetof(GpuFill, colour), 0);
-      attribute(2, 3, sizeof(GpuFill), offsetof(GpuFill, normal), 0);
-
-      glGenVertexArrays(1, &l.segVao);
-      glGenBuffers(1, &l.segVbo);
-      glBindVertexArray(l.segVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.segVbo);
-      attribute(0, 3, sizeof(GpuSegment), offsetof(GpuSegment, a), 1);
-      attribute(1, 3, sizeof(GpuSegment), offsetof(GpuSegment, b), 1);
-      attribute(2, 4, sizeof(GpuSegment), offsetof(GpuSegment, colour), 1);
-      attribute(3, 2, sizeof(GpuSegment), offsetof(GpuSegment, style), 1);
-
-      glGenVertexArrays(1, &l.markVao);
-      glGenBuffers(1, &l.markVbo);
-      glBindVertexArray(l.markVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.markVbo);
-      attribute(0, 3, sizeof(GpuMarker), offsetof(GpuMarker, pos), 0);
-      attribute(1, 4, sizeof(GpuMarker), offsetof(GpuMarker, colour), 0);
-      attribute(2, 2, sizeof(GpuMarker), offsetof(GpuMarker, sizeShape), 0);
+      makeArray(l.fillVao, l.fillVbo, 0, &GpuFill::pos, &GpuFill::colour, &GpuFill::normal);
+      // a segment is an instance: one record for its four corners
+      makeArray(l.segVao, l.segVbo, 1, &GpuSegment::a, &GpuSegment::b, &GpuSegment::colour,
+                &GpuSegment::style);
+      makeArray(l.markVao, l.markVbo, 0, &GpuMarker::pos, &GpuMarker::colour,
+                &GpuMarker::sizeShape);
     }
     glGenVertexArrays(1, &pointVao_);
     glGenBuffers(1, &pointVbo_);

@@ -31,9 +31,17 @@ struct Section {
   std::vector<Location> classes;  // row-major, v outer
 };
 
+// the point placed on the slicing plane, and what the locator did with it
+using Probe3D = PlacedPoint<Vec3, Trace3D>;
+// one 3D method timed by `compare`
+using CompareRow3D = MethodTiming<Method3D>;
+
 // the 3D dimension, for SceneState
 struct Traits3D
     : SceneTypes<Vec3, ConvexPolyhedron, Locator3D, Cell3D, Stats3D, Method3D, Trace3D> {
+  static std::vector<Vec3> sprayPoints(const ConvexPolyhedron& p, std::size_t n, std::uint64_t seed,
+                                       bool nearBoundary);
+  static ConvexPolyhedron readShape(const std::string& path);
   static constexpr std::span<const Method3D> kMethods = kAllMethods3D;
   static constexpr Method3D kDefaultMethod = Method3D::Cubemap;
   // one grid size, kept across methods; only the cube map reads it when compared
@@ -43,15 +51,7 @@ struct Traits3D
     return m == Method3D::Cubemap ? g : 0;
   }
   static constexpr std::size_t kCompareSpray = 50000, kCompareChunk = 2048;
-  static std::vector<Vec3> sprayPoints(const ConvexPolyhedron& p, std::size_t n, std::uint64_t seed,
-                                       bool nearBoundary);
-  static ConvexPolyhedron readShape(const std::string& path);
 };
-
-// the point placed on the slicing plane, and what the locator did with it
-using Probe3D = PlacedPoint<Vec3, Trace3D>;
-// one 3D method timed by `compare`
-using CompareRow3D = MethodTiming<Method3D>;
 
 // how many faces the cells of a 3D method list at the least (the base of the tint)
 inline constexpr std::size_t kBaseFacesPerCell = 1;

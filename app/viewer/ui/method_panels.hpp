@@ -122,6 +122,26 @@ void compareSection(Scene& scene, std::vector<Row>& rows, const char* button, co
   compareTable(tableId, rows, pal);
 }
 
+// what a Method panel's widgets are called
+struct MethodPanelText {
+  const char* statsId;
+  const char* histogramId;
+  const char* noun;  // what cells list: "edges", "faces"
+  const char* compareButton;
+  const char* compareId;
+};
+
+// below the method list and the resolution: statistics, histogram, Compare all methods
+template <class Scene, class Row>
+void methodDetails(Model& model, Scene& scene, const std::vector<StatLine>& stats,
+                   std::vector<Row>& rows, const MethodPanelText& text) {
+  statsTable(text.statsId, stats);
+  const auto& histogram = scene.stats().histogram;
+  if (!histogram.empty() && scene.stats().cells)
+    cellHistogram(text.histogramId, histogram, text.noun);
+  compareSection(scene, rows, text.compareButton, text.compareId, paletteFor(model.settings.theme));
+}
+
 // === Generators
 
 // what the generator controls are called
@@ -163,6 +183,18 @@ bool generatorControls(std::span<const Kind> kinds, GeneratorChoice& choice,
     generate = true;
   }
   return generate;
+}
+
+// the generator controls, generating the scene's shape when asked, and the degenerate gallery
+template <class Scene, class Kind>
+void generatorsAndGallery(Model& model, Scene& scene, std::span<const Kind> kinds,
+                          GeneratorChoice& choice, const GeneratorText& text, bool solid) {
+  if (generatorControls(kinds, choice, text) &&
+      scene.generate(kinds[choice.kind], static_cast<std::size_t>(choice.n), choice.seed))
+    model.requestFit();
+  ImGui::Spacing();
+  ImGui::TextDisabled("Degenerate gallery");
+  gallery(model, solid);
 }
 
 // === Legend and inspector

@@ -12,6 +12,8 @@ namespace convexloc::viewer {
 namespace {
 
 constexpr GeneratorText kGenerator2D = {"##kind", "Generate", "N", 1, 16, 3, "seed", "next"};
+constexpr MethodPanelText kMethodText2D = {"stats", "##hist", "edges", "Compare all methods",
+                                           "compare"};
 constexpr SliderText kUniformSlider = {"auto", "##res", 1 << 20, "%d slabs"};
 constexpr SliderText kPolarSlider = {"auto", "##res", 1 << 16, "%d per octant"};
 
@@ -63,13 +65,8 @@ void shapePanel2D(Model& model, UiState& ui) {
     ImGui::TextDisabled("(given clockwise)");
   }
   fileOpen(model, ui, "polygon .txt, polyhedron .off/.obj");
-  GeneratorChoice& g = ui.generator2d;
-  if (generatorControls<PolygonKind>(kAllPolygonKinds, g, kGenerator2D) &&
-      scene.generate(kAllPolygonKinds[g.kind], static_cast<std::size_t>(g.n), g.seed))
-    model.requestFit();
-  ImGui::Spacing();
-  ImGui::TextDisabled("Degenerate gallery");
-  gallery(model, false);
+  generatorsAndGallery<Scene2D, PolygonKind>(model, scene, kAllPolygonKinds, ui.generator2d,
+                                             kGenerator2D, false);
   ImGui::TextDisabled("Drag a vertex handle to edit the polygon.");
 }
 
@@ -78,11 +75,7 @@ void methodPanel2D(Model& model, UiState& ui) {
   methodChoice(scene);
   if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
   if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
-  statsTable("stats", statLines(scene));
-  const Stats2D& s = scene.stats();
-  if (!s.histogram.empty() && s.cells) cellHistogram("##hist", s.histogram, "edges");
-  compareSection(scene, ui.compare2d, "Compare all methods", "compare",
-                 paletteFor(model.settings.theme));
+  methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);
 }
 
 void viewOptions2D(Model& model) {

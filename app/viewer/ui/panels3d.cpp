@@ -14,6 +14,8 @@ namespace {
 
 constexpr GeneratorText kGenerator3D = {"##kind3", "Generate##3", "faces (about)", 16, 256,
                                         4,         "seed##3",     "next##3"};
+constexpr MethodPanelText kMethodText3D = {"stats3", "##hist3", "faces", "Compare all methods##3",
+                                           "compare3"};
 constexpr SliderText kGridSlider = {"auto##g", "##g", 256, "G = %d"};
 
 const char* kCubeFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
@@ -77,24 +79,15 @@ void shapePanel3D(Model& model, UiState& ui) {
 
   fileOpen(model, ui, "polyhedron .off/.obj, polygon .txt");
 
-  GeneratorChoice& g = ui.generator3d;
-  if (generatorControls<PolyhedronKind>(kAllPolyhedronKinds, g, kGenerator3D) &&
-      scene.generate(kAllPolyhedronKinds[g.kind], static_cast<std::size_t>(g.n), g.seed))
-    model.requestFit();
-  ImGui::Spacing();
-  ImGui::TextDisabled("Degenerate gallery");
-  gallery(model, true);
+  generatorsAndGallery<Scene3D, PolyhedronKind>(model, scene, kAllPolyhedronKinds, ui.generator3d,
+                                                kGenerator3D, true);
 }
 
 void methodPanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   methodChoice(scene);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
-  statsTable("stats3", statLines(scene));
-  const Stats3D& s = scene.stats();
-  if (!s.histogram.empty() && s.cells) cellHistogram("##hist3", s.histogram, "faces");
-  compareSection(scene, ui.compare3d, "Compare all methods##3", "compare3",
-                 paletteFor(model.settings.theme));
+  methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
 }
 
 void slicePanel3D(Model& model) {
