@@ -102,6 +102,20 @@ void nudgeCamera(cv::Model& model) {
     model.camera3d.orbit({2.0, 0.0});
 }
 
+// Clears the window and draws the scene: its cached base, then the overlay. A target with
+// `samples` the GL refuses falls back to none.
+void drawScene(cv::Model& model, cv::Renderer& renderer, cv::SceneView& view,
+               const cv::FrameSize& size, int& samples, cv::UiState& ui) {
+  const int fbW = size.framebufferWidth, fbH = size.framebufferHeight;
+  cv::clearWindow(fbW, fbH, cv::paletteFor(model.settings.theme).background);
+  if (!renderer.ensureTarget(fbW, fbH, samples) && samples > 0 &&
+      renderer.ensureTarget(fbW, fbH, samples = 0))
+    ui.glInfo += " (multisampled target refused: none)";
+  const glm::vec2 fb{static_cast<float>(fbW), static_cast<float>(fbH)};
+  view.drawBase(model, renderer, fb, size.pixelRatio);
+  view.drawOverlay(model, renderer, fb, size.pixelRatio);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -167,20 +181,15 @@ int main(int argc, char** argv) {
     cv::drawLabels(model, view);
     ImGui::Render();
 
-    const int fbW = size.framebufferWidth, fbH = size.framebufferHeight;
-    cv::clearWindow(fbW, fbH, cv::paletteFor(model.settings.theme).background);
-    if (!renderer.ensureTarget(fbW, fbH, samples) && samples > 0 &&
-        renderer.ensureTarget(fbW, fbH, samples = 0))
-      ui.glInfo += " (multisampled target refused: none)";
-    const glm::vec2 fb{static_cast<float>(fbW), static_cast<float>(fbH)};
-    view.drawBase(model, renderer, fb, size.pixelRatio);
-    view.drawOverlay(model, renderer, fb, size.pixelRatio);
+    drawScene(model, renderer, view, size, samples, ui);
     window.renderImGui();
 
     stats.count();
     const bool lastFrame = headless && stats.frames() >= options.frames;
     const std::string finalShot = lastFrame ? options.screenshot : "";
-    if (!cv::screenshotIfAsked(model, ui, finalShot, fbW, fbH, stats.seconds())) exitCode = 1;
+    if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
+                               stats.seconds()))
+      exitCode = 1;
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();
     if (ui.reloadShaders && !renderer.reload()) model.fail("shaders failed to compile: see View");
