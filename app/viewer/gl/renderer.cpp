@@ -82,6 +82,16 @@ void uploadBuffer(GLuint vbo, const std::vector<T>& data) {
                data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
 }
 
+// converts each item to its GPU record with `convert`, uploads the records into `vbo`,
+// and returns how many there are
+template <class Gpu, class Item, class Convert>
+GLsizei uploadAs(GLuint vbo, const std::vector<Item>& items, Convert convert) {
+  std::vector<Gpu> records(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) convert(items[i], records[i]);
+  uploadBuffer(vbo, records);
+  return static_cast<GLsizei>(records.size());
+}
+
 void commonUniforms(ShaderProgram& p, const FrameParams& f) {
   p.use();
   p.set("uClipFromLocal", f.clipFromLocal);
@@ -251,38 +261,24 @@ bool Renderer::compileAll() {
 
 void Renderer::upload(Layer layer, const DrawList& list, glm::dvec3 origin) {
   GpuLayer& l = layers_[static_cast<int>(layer)];
-  std::vector<GpuFill> fills(list.fills.size());
-  for (std::size_t i = 0; i < fills.size(); ++i) {
-    const FillVertex& v = list.fills[i];
-    put3(fills[i].pos, v.p, origin);
-    put4(fills[i].colour, v.colour);
-    std::memcpy(fills[i].normal, &v.normal[0], sizeof fills[i].normal);
-  }
-  uploadBuffer(l.fillVbo, fills);
-  l.fills = static_cast<GLsizei>(fills.size());
-
-  std::vector<GpuSegment> segs(list.segments.size());
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const Segment& s = list.segments[i];
-    put3(segs[i].a, s.a, origin);
-    put3(segs[i].b, s.b, origin);
-    put4(segs[i].colour, s.colour);
-    segs[i].style[0] = s.width;
-    segs[i].style[1] = s.dash;
-  }
-  uploadBuffer(l.segVbo, segs);
-  l.segments = static_cast<GLsizei>(segs.size());
-
-  std::vector<GpuMarker> marks(list.markers.size());
-  for (std::size_t i = 0; i < marks.size(); ++i) {
-    const Marker& m = list.markers[i];
-    put3(marks[i].pos, m.p, origin);
-    put4(marks[i].colour, m.colour);
-    marks[i].sizeShape[0] = m.size;
-    marks[i].sizeShape[1] = static_cast<float>(m.shape);
-  }
-  uploadBuffer(l.markVbo, marks);
-  l.markers = static_cast<GLsizei>(marks.size());
+  l.fills = uploadAs<GpuFill>(l.fillVbo, list.fills, [&](const FillVertex& v, GpuFill& g) {
+    put3(g.pos, v.p, origin);
+    put4(g.colour, v.colour);
+    std::memcpy(g.normal, &v.normal[0], sizeof g.normal);
+  });
+  l.segments = uploadAs<GpuSegment>(l.segVbo, list.segments, [&](const Segment& s, GpuSegment& g) {
+    put3(g.a, s.a, origin);
+    put3(g.b, s.b, origin);
+    put4(g.colour, s.colour);
+    g.style[0] = s.width;
+    g.style[1] = s.dash;
+  });
+  l.markers = uploadAs<GpuMarker>(l.markVbo, list.markers, [&](const Marker& m, GpuMarker& g) {
+    put3(g.pos, m.p, origin);
+    put4(g.colour, m.colour);
+    g.sizeShape[0] = m.size;
+    g.sizeShape[1] = static_cast<float>(m.shape);
+  });
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
