@@ -53,11 +53,43 @@ void attribute(GLuint index, GLint size, GLsizei stride, std::size_t offset, GLu
   glVertexAttribDivisor(index, divisor);
 }
 
+// the byte offset of a field in its record
+template <class Record, class Field>
+std::size_t offsetIn(Field Record::*field) {
+  static const Record record{};
+  return static_cast<std::size_t>(reinterpret_cast<const char*>(&(record.*field)) -
+                                  reinterpret_cast<const char*>(&record));
+}
+
+// a new vertex array over a new buffer of Records, whose float-array fields are the
+// attributes 0, 1, ... in order, advancing per vertex (divisor 0) or per instance (1)
+template <class Record, class... Fields>
+void makeArray(GLuint& vao, GLuint& vbo, GLuint divisor, Fields Record::*... fields) {
+  glGenVertexArrays(1, &vao);
+  glGenBuffers(1, &vbo);
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  GLuint index = 0;
+  (attribute(index++, static_cast<GLint>(sizeof(Fields) / sizeof(float)), sizeof(Record),
+             offsetIn(fields), divisor),
+   ...);
+}
+
 template <class T>
 void uploadBuffer(GLuint vbo, const std::vector<T>& data) {
   glBindBuffer(GL_ARRAY_BUFFER, vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(T)),
                data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+}
+
+// converts each item to its GPU record with `convert`, uploads the records into `vbo`,
+// and returns how many there are
+template <class Gpu, class Item, class Convert>
+GLsizei uploadAs(GLuint vbo, const std::vector<Item>& items, Convert convert) {
+  std::vector<Gpu> records(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) convert(items[i], records[i]);
+  uploadBuffer(vbo, records);
+  return static_cast<GLsizei>(records.size());
 }
 
 void commonUniforms(ShaderProgram& p, const FrameParams& f) {
@@ -192,30 +224,12 @@ bool Renderer::init(const std::string& dir) {
   if (!created_) {
     created_ = true;
     for (GpuLayer& l : layers_) {
-      glGenVertexArrays(1, &l.fillVao);
-      glGenBuffers(1, &l.fillVbo);
-      glBindVertexArray(l.fillVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.fillVbo);
-      attribute(0, 3, sizeof(GpuFill), offsetof(GpuFill, pos), 0);
-      attribute(1, 4, sizeof(GpuFill), offsetof(GpuFill, colour), 0);
-      attribute(2, 3, sizeof(GpuFill), offsetof(GpuFill, normal), 0);
-
-      glGenVertexArrays(1, &l.segVao);
-      glGenBuffers(1, &l.segVbo);
-      glBindVertexArray(l.segVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.segVbo);
-      attribute(0, 3, sizeof(GpuSegment), offsetof(GpuSegment, a), 1);
-      attribute(1, 3, sizeof(GpuSegment), offsetof(GpuSegment, b), 1);
-      attribute(2, 4, sizeof(GpuSegment), offsetof(GpuSegment, colour), 1);
-      attribute(3, 2, sizeof(GpuSegment), offsetof(GpuSegment, style), 1);
-
-      glGenVertexArrays(1, &l.markVao);
-      glGenBuffers(1, &l.markVbo);
-      glBindVertexArray(l.markVao);
-      glBindBuffer(GL_ARRAY_BUFFER, l.markVbo);
-      attribute(0, 3, sizeof(GpuMarker), offsetof(GpuMarker, pos), 0);
-      attribute(1, 4, sizeof(GpuMarker), offsetof(GpuMarker, colour), 0);
-      attribute(2, 2, sizeof(GpuMarker), offsetof(GpuMarker, sizeShape), 0);
+      makeArray(l.fillVao, l.fillVbo, 0, &GpuFill::pos, &GpuFill::colour, &GpuFill::normal);
+      // a segment is an instance: one record for its four corners
+      makeArray(l.segVao, l.segVbo, 1, &GpuSegment::a, &GpuSegment::b, &GpuSegment::colour,
+                &GpuSegment::style);
+      makeArray(l.markVao, l.markVbo, 0, &GpuMarker::pos, &GpuMarker::colour,
+                &GpuMarker::sizeShape);
     }
     glGenVertexArrays(1, &pointVao_);
     glGenBuffers(1, &pointVbo_);
@@ -247,38 +261,24 @@ bool Renderer::compileAll() {
 
 void Renderer::upload(Layer layer, const DrawList& list, glm::dvec3 origin) {
   GpuLayer& l = layers_[static_cast<int>(layer)];
-  std::vector<GpuFill> fills(list.fills.size());
-  for (std::size_t i = 0; i < fills.size(); ++i) {
-    const FillVertex& v = list.fills[i];
-    put3(fills[i].pos, v.p, origin);
-    put4(fills[i].colour, v.colour);
-    std::memcpy(fills[i].normal, &v.normal[0], sizeof fills[i].normal);
-  }
-  uploadBuffer(l.fillVbo, fills);
-  l.fills = static_cast<GLsizei>(fills.size());
-
-  std::vector<GpuSegment> segs(list.segments.size());
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const Segment& s = list.segments[i];
-    put3(segs[i].a, s.a, origin);
-    put3(segs[i].b, s.b, origin);
-    put4(segs[i].colour, s.colour);
-    segs[i].style[0] = s.width;
-    segs[i].style[1] = s.dash;
-  }
-  uploadBuffer(l.segVbo, segs);
-  l.segments = static_cast<GLsizei>(segs.size());
-
-  std::vector<GpuMarker> marks(list.markers.size());
-  for (std::size_t i = 0; i < marks.size(); ++i) {
-    const Marker& m = list.markers[i];
-    put3(marks[i].pos, m.p, origin);
-    put4(marks[i].colour, m.colour);
-    marks[i].sizeShape[0] = m.size;
-    marks[i].sizeShape[1] = static_cast<float>(m.shape);
-  }
-  uploadBuffer(l.markVbo, marks);
-  l.markers = static_cast<GLsizei>(marks.size());
+  l.fills = uploadAs<GpuFill>(l.fillVbo, list.fills, [&](const FillVertex& v, GpuFill& g) {
+    put3(g.pos, v.p, origin);
+    put4(g.colour, v.colour);
+    std::memcpy(g.normal, &v.normal[0], sizeof g.normal);
+  });
+  l.segments = uploadAs<GpuSegment>(l.segVbo, list.segments, [&](const Segment& s, GpuSegment& g) {
+    put3(g.a, s.a, origin);
+    put3(g.b, s.b, origin);
+    put4(g.colour, s.colour);
+    g.style[0] = s.width;
+    g.style[1] = s.dash;
+  });
+  l.markers = uploadAs<GpuMarker>(l.markVbo, list.markers, [&](const Marker& m, GpuMarker& g) {
+    put3(g.pos, m.p, origin);
+    put4(g.colour, m.colour);
+    g.sizeShape[0] = m.size;
+    g.sizeShape[1] = static_cast<float>(m.shape);
+  });
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 

@@ -14,6 +14,7 @@
 #include "gl/shader.hpp"
 #include "logic/colour.hpp"
 #include "logic/draw_list.hpp"
+#include "logic/no_copy.hpp"
 
 namespace convexloc::viewer {
 
@@ -45,12 +46,10 @@ struct FrameParams {
                                             // the sprays come in random order)
 };
 
-class Renderer {
+class Renderer : NoCopy {
  public:
-  Renderer() = default;
+  // deletes the GL objects (the context must still be current)
   ~Renderer();
-  Renderer(const Renderer&) = delete;
-  Renderer& operator=(const Renderer&) = delete;
 
   // Creates the buffers and compiles the shaders in `dir`. False when a shader failed:
   // shaderLog() then holds the compiler's words, and the layers it draws are skipped.

@@ -82,16 +82,8 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     renderer.upload(Layer::Structure, structure_, origin_);
     ++uploads_;
   }
-  if (rebase || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
-    buildOverlay2D(scene, pal, opt, overlay_);
-    renderer.upload(Layer::Overlay, overlay_, origin_);
-  }
-  if (rebase || v.points != seen_.points) {
-    renderer.uploadPoints(scene.points(), scene.classes(), origin_);
-    ++uploads_;
-  }
-  seen_ = v;
-  scene_ = &scene;
+  syncOverlayAndPoints(scene, renderer, rebase, restyle,
+                       [&](DrawList& out) { buildOverlay2D(scene, pal, opt, out); });
 }
 
 void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
@@ -131,11 +123,19 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     renderer.upload(Layer::Section, section_, origin_);
     ++uploads_;
   }
-  if (reshape || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
-    buildOverlay3D(scene, pal, opt, overlay_);
+  syncOverlayAndPoints(scene, renderer, reshape, restyle,
+                       [&](DrawList& out) { buildOverlay3D(scene, pal, opt, out); });
+}
+
+template <class Scene, class BuildOverlay>
+void SceneView::syncOverlayAndPoints(const Scene& scene, Renderer& renderer, bool moved,
+                                     bool restyle, BuildOverlay buildOverlay) {
+  const Versions& v = scene.versions();
+  if (moved || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
+    buildOverlay(overlay_);
     renderer.upload(Layer::Overlay, overlay_, origin_);
   }
-  if (reshape || v.points != seen_.points) {
+  if (moved || v.points != seen_.points) {
     renderer.uploadPoints(scene.points(), scene.classes(), origin_);
     ++uploads_;
   }

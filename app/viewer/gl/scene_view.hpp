@@ -48,6 +48,11 @@ class SceneView {
   void drawBaseLayers(Model& model, Renderer& renderer, const FrameParams& f);
   void sync2d(const Model& model, Renderer& renderer, bool restyle);
   void sync3d(Model& model, Renderer& renderer, bool restyle);
+  // the overlay (rebuilt by `buildOverlay`) and the points, after a move of the origin, a
+  // restyle or a change of theirs; then remembers what they were built from
+  template <class Scene, class BuildOverlay>
+  void syncOverlayAndPoints(const Scene& scene, Renderer& renderer, bool moved, bool restyle,
+                            BuildOverlay buildOverlay);
 
   glm::dvec3 origin_{0.0};
   DrawList structure_, overlay_, mesh_, section_;

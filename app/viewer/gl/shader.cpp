@@ -19,6 +19,16 @@ bool readFile(const std::string& path, std::string& out) {
   return true;
 }
 
+// the info log of a shader or a program, read with its own two getters
+template <class GetInt, class GetLog>
+std::string infoLog(GLuint id, GetInt getInt, GetLog getLog) {
+  GLint length = 0;
+  getInt(id, GL_INFO_LOG_LENGTH, &length);
+  std::string info(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+  getLog(id, length, nullptr, info.data());
+  return info.c_str();
+}
+
 // a compiled shader, or 0 with the log
 GLuint compile(GLenum kind, const std::string& source, const std::string& label, std::string& log) {
   GLuint s = glCreateShader(kind);
@@ -28,11 +38,7 @@ GLuint compile(GLenum kind, const std::string& source, const std::string& label,
   GLint ok = 0;
   glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
   if (ok) return s;
-  GLint length = 0;
-  glGetShaderiv(s, GL_INFO_LOG_LENGTH, &length);
-  std::string info(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-  glGetShaderInfoLog(s, length, nullptr, info.data());
-  log += label + ": " + info.c_str() + "\n";
+  log += label + ": " + infoLog(s, glGetShaderiv, glGetShaderInfoLog) + "\n";
   glDeleteShader(s);
   return 0;
 }
@@ -70,11 +76,7 @@ bool ShaderProgram::load(const std::string& dir, const std::string& name, std::s
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(p, GL_INFO_LOG_LENGTH, &length);
-    std::string info(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-    glGetProgramInfoLog(p, length, nullptr, info.data());
-    log += name + " (link): " + info.c_str() + "\n";
+    log += name + " (link): " + infoLog(p, glGetProgramiv, glGetProgramInfoLog) + "\n";
     glDeleteProgram(p);
     return false;
   }

@@ -7,15 +7,14 @@
 #include <glm/glm.hpp>
 
 #include "gl/gl.hpp"
+#include "logic/no_copy.hpp"
 
 namespace convexloc::viewer {
 
-class ShaderProgram {
+// one linked GLSL program and its uniforms' locations
+class ShaderProgram : NoCopy {
  public:
-  ShaderProgram() = default;
   ~ShaderProgram();
-  ShaderProgram(const ShaderProgram&) = delete;
-  ShaderProgram& operator=(const ShaderProgram&) = delete;
 
   // Compiles DIR/NAME.vert and DIR/NAME.frag and links them. On failure keeps the program
   // it had (if any), returns false and fills `log` with "NAME.frag: <compiler output>".

@@ -16,71 +16,47 @@ constexpr Rgba kGreen = hex(0x009E73);
 constexpr Rgba kVermillion = hex(0xD55E00);
 constexpr Rgba kPurple = hex(0xCC79A7);
 
-Palette makeDark() {
-  Palette p;
-  p.background = hex(0x15171c);
-  p.text = hex(0xe8eaed);
-  p.textMuted = hex(0x9aa0a6);
-  p.polygonEdge = hex(0xf4f5f7);
-  p.polygonFill = hex(0xffffff, 0.05f);
-  p.box = hex(0x8b929c, 0.9f);
-  p.octant = hex(0xd4d8de, 0.85f);
-  p.structure = hex(0x7d8590, 0.55f);
-  p.structureStrong = hex(0xaab1bb, 0.9f);
-  p.centre = hex(0xffffff);
-  // sky blue and vermillion: apart in hue and in lightness on the dark background
-  p.inside = kSkyBlue;
-  p.boundary = kYellow;
-  p.outside = kVermillion;
-  p.rim = hex(0x111111, 0.9f);
-  p.extraEdges = hex(0x2fbf8f);
-  p.crowded = kPurple;
-  p.hoverFill = hex(0xffffff, 0.10f);
-  p.hoverOutline = hex(0xffffff, 0.95f);
-  p.hoverEdge = kPurple;
-  p.positive = hex(0x35c08f);
-  p.zero = kYellow;
-  p.negative = hex(0xff7a3d);
-  p.handle = hex(0xf4f5f7);
-  p.handleError = kVermillion;
-  p.meshFill = hex(0x8fb8de, 0.22f);
-  p.meshEdge = hex(0xe8eaed, 0.8f);
-  p.cube = hex(0x9aa0a6, 0.7f);
-  p.slicePlane = hex(0xcfd8e3, 0.12f);
-  return p;
-}
+// each colour of the palette, in the dark and in the light theme; the class colours are
+// sky blue and vermillion on dark, blue and orange on light: apart in hue and in lightness
+// on each background
+struct ThemedColour {
+  Rgba Palette::*member;
+  Rgba dark, light;
+};
+constexpr ThemedColour kColours[] = {
+    {&Palette::background, hex(0x15171c), hex(0xfbfbfa)},
+    {&Palette::text, hex(0xe8eaed), hex(0x1f2328)},
+    {&Palette::textMuted, hex(0x9aa0a6), hex(0x5f6770)},
+    {&Palette::polygonEdge, hex(0xf4f5f7), hex(0x1f2328)},
+    {&Palette::polygonFill, hex(0xffffff, 0.05f), hex(0x000000, 0.035f)},
+    {&Palette::box, hex(0x8b929c, 0.9f), hex(0x6b7280, 0.9f)},
+    {&Palette::octant, hex(0xd4d8de, 0.85f), hex(0x3c4249, 0.8f)},
+    {&Palette::structure, hex(0x7d8590, 0.55f), hex(0x8a929c, 0.55f)},
+    {&Palette::structureStrong, hex(0xaab1bb, 0.9f), hex(0x4b525a, 0.9f)},
+    {&Palette::centre, hex(0xffffff), hex(0x111111)},
+    {&Palette::inside, kSkyBlue, kBlue},
+    {&Palette::boundary, kYellow, kYellow},
+    {&Palette::outside, kVermillion, kOrange},
+    {&Palette::rim, hex(0x111111, 0.9f), hex(0x111111, 0.9f)},
+    {&Palette::extraEdges, hex(0x2fbf8f), kGreen},
+    {&Palette::crowded, kPurple, kPurple},
+    {&Palette::hoverFill, hex(0xffffff, 0.10f), hex(0x000000, 0.07f)},
+    {&Palette::hoverOutline, hex(0xffffff, 0.95f), hex(0x111111, 0.9f)},
+    {&Palette::hoverEdge, kPurple, hex(0xb8498a)},
+    {&Palette::positive, hex(0x35c08f), kGreen},
+    {&Palette::zero, kYellow, hex(0xb59f00)},
+    {&Palette::negative, hex(0xff7a3d), kVermillion},
+    {&Palette::handle, hex(0xf4f5f7), hex(0x1f2328)},
+    {&Palette::handleError, kVermillion, kVermillion},
+    {&Palette::meshFill, hex(0x8fb8de, 0.22f), hex(0x5b8fc0, 0.20f)},
+    {&Palette::meshEdge, hex(0xe8eaed, 0.8f), hex(0x1f2328, 0.75f)},
+    {&Palette::cube, hex(0x9aa0a6, 0.7f), hex(0x5f6770, 0.7f)},
+    {&Palette::slicePlane, hex(0xcfd8e3, 0.12f), hex(0x40607f, 0.10f)},
+};
 
-Palette makeLight() {
+Palette makePalette(Theme theme) {
   Palette p;
-  p.background = hex(0xfbfbfa);
-  p.text = hex(0x1f2328);
-  p.textMuted = hex(0x5f6770);
-  p.polygonEdge = hex(0x1f2328);
-  p.polygonFill = hex(0x000000, 0.035f);
-  p.box = hex(0x6b7280, 0.9f);
-  p.octant = hex(0x3c4249, 0.8f);
-  p.structure = hex(0x8a929c, 0.55f);
-  p.structureStrong = hex(0x4b525a, 0.9f);
-  p.centre = hex(0x111111);
-  // blue and orange: apart in hue and in lightness on the light background
-  p.inside = kBlue;
-  p.boundary = kYellow;
-  p.outside = kOrange;
-  p.rim = hex(0x111111, 0.9f);
-  p.extraEdges = kGreen;
-  p.crowded = kPurple;
-  p.hoverFill = hex(0x000000, 0.07f);
-  p.hoverOutline = hex(0x111111, 0.9f);
-  p.hoverEdge = hex(0xb8498a);
-  p.positive = kGreen;
-  p.zero = hex(0xb59f00);
-  p.negative = kVermillion;
-  p.handle = hex(0x1f2328);
-  p.handleError = kVermillion;
-  p.meshFill = hex(0x5b8fc0, 0.20f);
-  p.meshEdge = hex(0x1f2328, 0.75f);
-  p.cube = hex(0x5f6770, 0.7f);
-  p.slicePlane = hex(0x40607f, 0.10f);
+  for (const ThemedColour& c : kColours) p.*c.member = theme == Theme::Dark ? c.dark : c.light;
   return p;
 }
 
@@ -96,8 +72,8 @@ std::string_view toString(Theme t) {
 }
 
 const Palette& paletteFor(Theme t) {
-  static const Palette dark = makeDark();
-  static const Palette light = makeLight();
+  static const Palette dark = makePalette(Theme::Dark);
+  static const Palette light = makePalette(Theme::Light);
   return t == Theme::Dark ? dark : light;
 }
 

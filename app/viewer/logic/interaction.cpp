@@ -12,52 +12,63 @@ void Interaction::update(const PointerInput& in, Model& model) {
     update3d(in, model);
 }
 
+bool Interaction::ignored(const PointerInput& in) const {
+  return gesture_ == Gesture::None && (in.captured || !in.hovering);
+}
+
+void Interaction::startGesture(const PointerInput& in) {
+  if (in.pressed[0]) {
+    gesture_ = Gesture::Pending;
+    pressAt_ = in.pos;
+  } else if (in.pressed[1] || in.pressed[2]) {
+    gesture_ = Gesture::Pan;
+  }
+}
+
+Interaction::PressOutcome Interaction::followPress(const PointerInput& in, Gesture drag) {
+  if (glm::length(in.pos - pressAt_) > kClickSlop) {
+    gesture_ = drag;
+    return PressOutcome::Dragged;
+  }
+  if (!in.released[0] && in.down[0]) return PressOutcome::Waiting;
+  gesture_ = Gesture::None;
+  return PressOutcome::Clicked;
+}
+
+void Interaction::endWhenReleased(const PointerInput& in) {
+  if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
+}
+
 void Interaction::update2d(const PointerInput& in, Model& model) {
   Camera2D& cam = model.camera2d;
   Scene2D& scene = model.scene2d;
-
-  // ImGui has the mouse and no gesture of ours is under way: leave everything as it is
-  if (gesture_ == Gesture::None && (in.captured || !in.hovering)) {
+  if (ignored(in)) {
     if (scene.hoverPoint()) scene.hover(std::nullopt);
     return;
   }
-
   if (gesture_ == Gesture::None) {
     if (in.wheel != 0.0) cam.zoomAt(in.pos, std::pow(kWheelZoom, in.wheel));
-    if (in.pressed[0]) {
-      const auto v = scene.polygon().vertices();
-      const std::ptrdiff_t grab = model.settings.view2d.showHandles && v.size() <= kMaxHandles
-                                      ? pickVertex(v, cam, in.pos, kGrabRadius)
-                                      : -1;
-      if (grab >= 0) {
-        scene.beginDrag(static_cast<std::size_t>(grab));
-        gesture_ = Gesture::DragVertex;
-      } else {
-        gesture_ = Gesture::Pending;
-        pressAt_ = in.pos;
-      }
-    } else if (in.pressed[1] || in.pressed[2]) {
-      gesture_ = Gesture::Pan;
+    const auto v = scene.polygon().vertices();
+    const bool handles = model.settings.view2d.showHandles && v.size() <= kMaxHandles;
+    const std::ptrdiff_t grab =
+        in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
+    if (grab >= 0) {
+      scene.beginDrag(static_cast<std::size_t>(grab));
+      gesture_ = Gesture::DragVertex;
+    } else {
+      startGesture(in);
     }
   }
-
   switch (gesture_) {
-    case Gesture::Pending:
-      if (glm::length(in.pos - pressAt_) > kClickSlop) {
-        gesture_ = Gesture::Pan;
-        cam.pan(in.pos - pressAt_);
-      } else if (in.released[0] || !in.down[0]) {
-        // a click: on a sprayed point, that very point (its exact doubles); else the cursor
-        const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(),
-                                             model.settings.visibleMask, cam, in.pos, kPickRadius);
-        scene.place(hit >= 0 ? scene.points()[static_cast<std::size_t>(hit)]
-                             : toVec2(cam.toWorld(in.pos)));
-        gesture_ = Gesture::None;
-      }
+    case Gesture::Pending: {
+      const PressOutcome outcome = followPress(in, Gesture::Pan);
+      if (outcome == PressOutcome::Dragged) cam.pan(in.pos - pressAt_);
+      if (outcome == PressOutcome::Clicked) click2d(in, model);
       break;
+    }
     case Gesture::Pan:
       cam.pan(in.delta);
-      if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
+      endWhenReleased(in);
       break;
     case Gesture::DragVertex:
       if (in.delta != glm::dvec2(0.0)) scene.dragTo(toVec2(cam.toWorld(in.pos)));
@@ -69,61 +80,60 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
     case Gesture::None:
     case Gesture::Orbit: break;
   }
-
   if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
     scene.hover(toVec2(cam.toWorld(in.pos)));
   else if (gesture_ == Gesture::Pan && scene.hoverPoint())
     scene.hover(std::nullopt);
 }
 
+void Interaction::click2d(const PointerInput& in, Model& model) {
+  // on a sprayed point, that very point (its exact doubles); else the cursor
+  Scene2D& scene = model.scene2d;
+  const Camera2D& cam = model.camera2d;
+  const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(), model.settings.visibleMask,
+                                       cam, in.pos, kPickRadius);
+  scene.place(hit >= 0 ? scene.points()[static_cast<std::size_t>(hit)]
+                       : toVec2(cam.toWorld(in.pos)));
+}
+
 void Interaction::update3d(const PointerInput& in, Model& model) {
   Camera3D& cam = model.camera3d;
   Scene3D& scene = model.scene3d();
-  if (gesture_ == Gesture::None && (in.captured || !in.hovering)) {
+  if (ignored(in)) {
     scene.hover(std::nullopt);
     return;
   }
   if (gesture_ == Gesture::None) {
     if (in.wheel != 0.0) cam.zoom(std::pow(kWheelZoom, in.wheel));
-    if (in.pressed[0]) {
-      gesture_ = Gesture::Pending;
-      pressAt_ = in.pos;
-    } else if (in.pressed[1] || in.pressed[2]) {
-      gesture_ = Gesture::Pan;
-    }
+    startGesture(in);
   }
-  switch (gesture_) {
-    case Gesture::Pending:
-      if (glm::length(in.pos - pressAt_) > kClickSlop) {
-        gesture_ = Gesture::Orbit;
-        cam.orbit(in.pos - pressAt_);
-      } else if (in.released[0] || !in.down[0]) {
-        // a click: Shift pins the cell under the cursor; else a point on the slicing plane,
-        // or, off the plane, the cell under the cursor is pinned
-        const Ray3 ray = cam.rayThrough(in.pos);
-        const auto hit = in.shift ? std::nullopt : scene.hitSlice(ray);
-        if (hit)
-          scene.place(toVec3(*hit));
-        else
-          scene.pin(scene.pickCell(ray));
-        gesture_ = Gesture::None;
-      }
-      break;
-    case Gesture::Orbit:
-      cam.orbit(in.delta);
-      if (!in.down[0]) gesture_ = Gesture::None;
-      break;
-    case Gesture::Pan:
-      cam.pan(in.delta);
-      if (!in.down[0] && !in.down[1] && !in.down[2]) gesture_ = Gesture::None;
-      break;
-    case Gesture::None:
-    case Gesture::DragVertex: break;
+  if (gesture_ == Gesture::Pending) {
+    const PressOutcome outcome = followPress(in, Gesture::Orbit);
+    if (outcome == PressOutcome::Dragged) cam.orbit(in.pos - pressAt_);
+    if (outcome == PressOutcome::Clicked) click3d(in, model);
+  } else if (gesture_ == Gesture::Orbit) {
+    cam.orbit(in.delta);
+    if (!in.down[0]) gesture_ = Gesture::None;
+  } else if (gesture_ == Gesture::Pan) {
+    cam.pan(in.delta);
+    endWhenReleased(in);
   }
   if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
     scene.hover(cam.rayThrough(in.pos));
   else
     scene.hover(std::nullopt);
+}
+
+void Interaction::click3d(const PointerInput& in, Model& model) {
+  // Shift pins the cell under the cursor; else a point on the slicing plane, or, off the
+  // plane, the cell under the cursor is pinned
+  Scene3D& scene = model.scene3d();
+  const Ray3 ray = model.camera3d.rayThrough(in.pos);
+  const auto hit = in.shift ? std::nullopt : scene.hitSlice(ray);
+  if (hit)
+    scene.place(toVec3(*hit));
+  else
+    scene.pin(scene.pickCell(ray));
 }
 
 }  // namespace convexloc::viewer

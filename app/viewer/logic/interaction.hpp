@@ -38,8 +38,21 @@ class Interaction {
   Gesture gesture() const { return gesture_; }
 
  private:
+  // what a left press has become
+  enum class PressOutcome { Waiting, Dragged, Clicked };
+
   void update2d(const PointerInput& in, Model& model);
   void update3d(const PointerInput& in, Model& model);
+  void click2d(const PointerInput& in, Model& model);
+  void click3d(const PointerInput& in, Model& model);
+  // ImGui has the mouse and no gesture of ours is under way: nothing moves
+  bool ignored(const PointerInput& in) const;
+  // a left press may become a click or a drag; the others pan
+  void startGesture(const PointerInput& in);
+  // Pending: past the click slop the press becomes `drag`; released within it, a click
+  PressOutcome followPress(const PointerInput& in, Gesture drag);
+  // a pan ends when every button is up
+  void endWhenReleased(const PointerInput& in);
   Gesture gesture_ = Gesture::None;
   glm::dvec2 pressAt_{0.0};
 };

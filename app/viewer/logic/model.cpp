@@ -23,6 +23,14 @@ std::string extensionOf(const std::string& path) {
 
 constexpr std::size_t kMaxRecent = 8;
 
+// the classes of sprayed points --show asks to draw (boundary points with inside or outside)
+unsigned visibleMaskFor(const std::string& show) {
+  if (show == "inside") return classBit(Location::Inside) | classBit(Location::Boundary);
+  if (show == "outside") return classBit(Location::Outside) | classBit(Location::Boundary);
+  if (show == "boundary") return classBit(Location::Boundary);
+  return kAllClasses;
+}
+
 }  // namespace
 
 float autoPointSize(std::size_t count, double areaPx) {
@@ -70,21 +78,12 @@ void Model::remember(const std::string& path) {
 
 bool Model::open(const std::string& path) {
   const std::string ext = extensionOf(path);
-  if (ext == ".off" || ext == ".obj") {
-    if (!scene3d().loadFile(path)) {
-      collectErrors();
-      return false;
-    }
-    dim = Dim::Three;
-    remember(path);
-    requestFit();
-    return true;
-  }
-  if (!scene2d.loadFile(path)) {
+  const Dim d = ext == ".off" || ext == ".obj" ? Dim::Three : Dim::Two;
+  if (!(d == Dim::Three ? scene3d().loadFile(path) : scene2d.loadFile(path))) {
     collectErrors();
     return false;
   }
-  dim = Dim::Two;
+  dim = d;
   remember(path);
   requestFit();
   return true;
@@ -119,12 +118,18 @@ bool Model::applyPreset(std::string_view name) {
   return true;
 }
 
+void Model::note(const std::string& problem) {
+  if (firstProblem_.empty()) firstProblem_ = problem;
+  fail(problem);
+}
+
+void Model::noteSceneError() {
+  collectErrors();
+  note(error_);
+}
+
 std::string Model::apply(const Options& o) {
-  std::string problem;
-  auto note = [&](const std::string& s) {
-    if (problem.empty()) problem = s;
-    fail(s);
-  };
+  firstProblem_.clear();
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
   settings.showUi = !o.hideUi;
@@ -133,94 +138,82 @@ std::string Model::apply(const Options& o) {
   if (o.method && !method3d && !parseMethod2D(*o.method))
     note("unknown method '" + *o.method +
          "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
-  const std::uint64_t seed = o.seed.value_or(1);
+  applyShape(o, method3d);
+  if (dim == Dim::Two)
+    apply2d(o, method3d);
+  else
+    apply3d(o, method3d);
+  if (o.show) settings.visibleMask = visibleMaskFor(*o.show);
+  collectErrors();
+  requestFit();
+  return firstProblem_;
+}
+
+void Model::applyShape(const Options& o, bool method3d) {
   if (!o.shape.empty()) {
     if (!open(o.shape)) note(error_);
   } else if (o.preset) {
     if (!applyPreset(*o.preset)) note(error_);
   } else if (o.generate) {
-    const auto k2 = parsePolygonKind(*o.generate);
-    const auto k3 = parsePolyhedronKind(*o.generate);
-    if (k3 && (!k2 || method3d || o.solid)) {
-      if (!scene3d().generate(*k3, o.n.value_or(320), seed)) {
-        collectErrors();
-        note(error_);
-      } else {
-        dim = Dim::Three;
-      }
-    } else if (k2) {
-      if (!scene2d.generate(*k2, o.n.value_or(16), seed)) {
-        collectErrors();
-        note(error_);
-      }
-    } else {
-      note("unknown generator kind '" + *o.generate + "'");
-    }
+    applyGenerator(o, method3d);
   } else if (o.solid || method3d) {
     scene3d();
     dim = Dim::Three;
   }
-  if (dim == Dim::Two) {
-    if (o.method && !method3d)
-      scene2d.setMethod(*parseMethod2D(*o.method));
-    else if (method3d)
-      note("'" + *o.method + "' is a 3D method; the scene is a polygon");
-    if (o.resolution && !scene2d.setResolution(*o.resolution)) {
-      collectErrors();
-      note(error_);
-    }
-    if (o.spray || o.seed || o.nearBoundary) {
-      SpraySettings s = scene2d.spraySettings();
-      if (o.spray) s.count = *o.spray;
-      if (o.seed) s.seed = *o.seed;
-      s.nearBoundary = o.nearBoundary;
-      scene2d.spray(s);
-    }
-    if (o.probe) scene2d.place(*o.probe);
-    if (o.hover) scene2d.hover(*o.hover);
-    if (o.view) pendingView = *o.view;
-    if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
-  } else {
-    Scene3D& s3 = scene3d();
-    if (o.method && method3d)
-      s3.setMethod(*parseMethod3D(*o.method));
-    else if (o.method)
-      note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
-    if (o.resolution && !s3.setResolution(*o.resolution)) {
-      collectErrors();
-      note(error_);
-    }
-    if (o.spray || o.seed || o.nearBoundary) {
-      SpraySettings s = s3.spraySettings();
-      if (o.spray) s.count = *o.spray;
-      if (o.seed) s.seed = *o.seed;
-      s.nearBoundary = o.nearBoundary;
-      s3.spray(s);
-    }
-    if (o.slice) s3.setSlice(*o.slice);
-    if (o.probe3) s3.place(*o.probe3);
-    if (o.cell) {
-      if (*o.cell < s3.cells().size())
-        s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
-      else
-        note("--cell " + std::to_string(*o.cell) + ": the scene has " +
-             std::to_string(s3.cells().size()) + " cells");
-    }
-    if (o.probe || o.hover) note("--probe X,Y and --hover are for a 2D scene");
-  }
-  if (o.show) {
-    if (*o.show == "inside")
-      settings.visibleMask = classBit(Location::Inside) | classBit(Location::Boundary);
-    else if (*o.show == "outside")
-      settings.visibleMask = classBit(Location::Outside) | classBit(Location::Boundary);
-    else if (*o.show == "boundary")
-      settings.visibleMask = classBit(Location::Boundary);
+}
+
+void Model::applyGenerator(const Options& o, bool method3d) {
+  const std::uint64_t seed = o.seed.value_or(1);
+  const auto k2 = parsePolygonKind(*o.generate);
+  const auto k3 = parsePolyhedronKind(*o.generate);
+  if (k3 && (!k2 || method3d || o.solid)) {
+    if (!scene3d().generate(*k3, o.n.value_or(320), seed))
+      noteSceneError();
     else
-      settings.visibleMask = kAllClasses;
+      dim = Dim::Three;
+  } else if (k2) {
+    if (!scene2d.generate(*k2, o.n.value_or(16), seed)) noteSceneError();
+  } else {
+    note("unknown generator kind '" + *o.generate + "'");
   }
-  collectErrors();
-  requestFit();
-  return problem;
+}
+
+template <class Scene, class Method>
+void Model::applyToScene(Scene& scene, const Options& o, std::optional<Method> method) {
+  if (method) scene.setMethod(*method);
+  if (o.resolution && !scene.setResolution(*o.resolution)) noteSceneError();
+  if (o.spray || o.seed || o.nearBoundary) {
+    SpraySettings s = scene.spraySettings();
+    if (o.spray) s.count = *o.spray;
+    if (o.seed) s.seed = *o.seed;
+    s.nearBoundary = o.nearBoundary;
+    scene.spray(s);
+  }
+}
+
+void Model::apply2d(const Options& o, bool method3d) {
+  if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon");
+  applyToScene(scene2d, o, o.method ? parseMethod2D(*o.method) : std::nullopt);
+  if (o.probe) scene2d.place(*o.probe);
+  if (o.hover) scene2d.hover(*o.hover);
+  if (o.view) pendingView = *o.view;
+  if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
+}
+
+void Model::apply3d(const Options& o, bool method3d) {
+  Scene3D& s3 = scene3d();
+  if (o.method && !method3d) note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
+  applyToScene(s3, o, o.method ? parseMethod3D(*o.method) : std::nullopt);
+  if (o.slice) s3.setSlice(*o.slice);
+  if (o.probe3) s3.place(*o.probe3);
+  if (o.cell) {
+    if (*o.cell < s3.cells().size())
+      s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
+    else
+      note("--cell " + std::to_string(*o.cell) + ": the scene has " +
+           std::to_string(s3.cells().size()) + " cells");
+  }
+  if (o.probe || o.hover) note("--probe X,Y and --hover are for a 2D scene");
 }
 
 void Model::fit(ScreenRect area) {

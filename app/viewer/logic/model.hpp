@@ -83,6 +83,17 @@ class Model {
 
  private:
   void remember(const std::string& path);
+  // the steps of apply(): the shape, then the scene's own options
+  void applyShape(const Options& o, bool method3d);
+  void applyGenerator(const Options& o, bool method3d);
+  template <class Scene, class Method>
+  void applyToScene(Scene& scene, const Options& o, std::optional<Method> method);
+  void apply2d(const Options& o, bool method3d);
+  void apply3d(const Options& o, bool method3d);
+  // a problem apply() reports (the first one is returned), and a scene's last error as one
+  void note(const std::string& problem);
+  void noteSceneError();
+  std::string firstProblem_;
   std::unique_ptr<Scene3D> scene3d_;
   std::uint64_t seen3d_ = 0;
   bool fitPending_ = true;

@@ -52,141 +52,228 @@ bool parseCount(std::string_view s, std::size_t& out) {
   return true;
 }
 
+// the options that take no value
+struct Flag {
+  std::string_view name;
+  bool Options::*member;
+};
+constexpr Flag kFlags[] = {
+    {"-h", &Options::help},           {"--help", &Options::help},
+    {"--version", &Options::version}, {"--near-boundary", &Options::nearBoundary},
+    {"--hide-ui", &Options::hideUi},  {"--no-xvfb", &Options::noXvfb},
+    {"--animate", &Options::animate}, {"--compare", &Options::compare},
+    {"--3d", &Options::solid},
+};
+
+// The arguments, read one at a time: an option's value is the next argument. A step
+// returns true when the argument was its option, with `error` set on a bad value.
+class ArgReader {
+ public:
+  explicit ArgReader(std::span<const std::string_view> args) : args_(args) {}
+  bool done() const { return next_ >= args_.size(); }
+  std::string_view take() { return args_[next_++]; }
+  // the value of the option just taken, or false when there is none
+  bool value(std::string_view& v) {
+    if (done()) return false;
+    v = take();
+    return true;
+  }
+  // records why the option just taken is wrong; true (it was matched)
+  bool fail(std::string why) {
+    error = std::move(why);
+    return true;
+  }
+  std::string error;
+
+ private:
+  std::span<const std::string_view> args_;
+  std::size_t next_ = 0;
+};
+
+// a flag from kFlags
+bool flagOption(std::string_view a, Options& o) {
+  for (const Flag& f : kFlags)
+    if (a == f.name) {
+      o.*f.member = true;
+      return true;
+    }
+  return false;
+}
+
+// --method, --resolution, --preset, --generate, --n, --seed, --spray, --show
+bool sceneOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--method") {
+    if (!in.value(v)) return in.fail("--method needs a method name");
+    o.method = std::string(v);
+  } else if (a == "--resolution") {
+    std::uint32_t x = 0;
+    if (!in.value(v) || !parseInt<std::uint32_t>(v, 0, 1u << 26, x))
+      return in.fail("--resolution needs a whole number from 0 (automatic) to 2^26");
+    o.resolution = x;
+  } else if (a == "--preset") {
+    if (!in.value(v)) return in.fail("--preset needs a name");
+    o.preset = std::string(v);
+  } else if (a == "--generate") {
+    if (!in.value(v)) return in.fail("--generate needs a kind (regular, random, ellipse, ...)");
+    o.generate = std::string(v);
+  } else if (a == "--n") {
+    std::size_t x = 0;
+    if (!in.value(v) || !parseCount(v, x) || x < 3) return in.fail("--n needs a whole number >= 3");
+    o.n = x;
+  } else if (a == "--seed") {
+    std::uint64_t x = 0;
+    if (!in.value(v) || !parseInt<std::uint64_t>(v, 0, ~std::uint64_t{0}, x))
+      return in.fail("--seed needs a whole number");
+    o.seed = x;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --spray, --show
+bool sprayOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--spray") {
+    std::size_t x = 0;
+    if (!in.value(v) || !parseCount(v, x) || x > 10000000)
+      return in.fail("--spray needs a count from 0 to 10^7 (1000, 1e6, ...)");
+    o.spray = x;
+  } else if (a == "--show") {
+    if (!in.value(v) || (v != "all" && v != "inside" && v != "outside" && v != "boundary"))
+      return in.fail("--show needs all, inside, outside or boundary");
+    o.show = std::string(v);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --probe, --hover, --view: places in the scene
+bool placeOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  Vec2 p;
+  Vec3 q;
+  if (a == "--probe") {
+    if (!in.value(v)) return in.fail("--probe needs X,Y or X,Y,Z");
+    if (parsePoint3(v, q))
+      o.probe3 = q;
+    else if (parsePoint(v, p))
+      o.probe = p;
+    else
+      return in.fail("--probe needs X,Y or X,Y,Z");
+  } else if (a == "--hover") {
+    if (!in.value(v) || !parsePoint(v, p)) return in.fail("--hover needs X,Y");
+    o.hover = p;
+  } else if (a == "--view") {
+    if (!in.value(v) || !parsePoint3(v, q) || !(q.z > 0.0))
+      return in.fail("--view needs X,Y,WIDTH with WIDTH > 0");
+    o.view = q;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --slice, --cell: the 3D scene's plane and pinned cell
+bool solidOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--slice") {
+    // AXIS=VALUE, e.g. z=0.25
+    SlicePlane s;
+    if (!in.value(v) || v.size() < 3 || v[1] != '=' ||
+        (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') || !parseDouble(v.substr(2), s.offset))
+      return in.fail("--slice needs AXIS=VALUE, e.g. z=0.25");
+    s.axis = v[0] - 'x';
+    o.slice = s;
+  } else if (a == "--cell") {
+    std::size_t k = 0;
+    if (!in.value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
+      return in.fail("--cell needs a cell index");
+    o.cell = k;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --theme, --font-scale, --size, --samples, --shaders: how the window looks
+bool viewOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--theme") {
+    if (!in.value(v) || (v != "dark" && v != "light"))
+      return in.fail("--theme needs dark or light");
+    o.theme = v == "dark" ? Theme::Dark : Theme::Light;
+  } else if (a == "--font-scale") {
+    double x = 0.0;
+    if (!in.value(v) || !parseDouble(v, x) || x < 0.5 || x > 4.0)
+      return in.fail("--font-scale needs a number from 0.5 to 4");
+    o.fontScale = static_cast<float>(x);
+  } else if (a == "--size") {
+    const std::size_t x = in.value(v) ? v.find('x') : std::string_view::npos;
+    if (x == std::string_view::npos || !parseInt<int>(v.substr(0, x), 64, 16384, o.width) ||
+        !parseInt<int>(v.substr(x + 1), 64, 16384, o.height))
+      return in.fail("--size needs WIDTHxHEIGHT, e.g. 1024x768");
+  } else if (a == "--samples") {
+    if (!in.value(v) || !parseInt<int>(v, 0, 16, o.samples))
+      return in.fail("--samples needs a whole number from 0 (no anti-aliasing) to 16");
+  } else if (a == "--shaders") {
+    if (!in.value(v)) return in.fail("--shaders needs a directory");
+    o.shaderDir = std::string(v);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --screenshot, --frames: rendering without hands
+bool batchOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--screenshot") {
+    if (!in.value(v) || v.empty()) return in.fail("--screenshot needs a file name");
+    o.screenshot = std::string(v);
+  } else if (a == "--frames") {
+    if (!in.value(v) || !parseInt<int>(v, 1, 100000, o.frames))
+      return in.fail("--frames needs a whole number from 1 to 100000");
+    o.framesGiven = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// an unknown option, or the shape file (only one)
+std::string shapeArgument(std::string_view a, Options& o) {
+  if (!a.empty() && a[0] == '-' && a != "-")
+    return "unknown option " + std::string(a) + " (see --help)";
+  if (!o.shape.empty()) return "more than one shape given: " + o.shape + " and " + std::string(a);
+  o.shape = std::string(a);
+  return {};
+}
+
+// options that exclude each other
+std::string conflicts(const Options& o) {
+  if (!o.shape.empty() && (o.preset || o.generate))
+    return "give a shape file, --preset or --generate, not several";
+  if (o.preset && o.generate) return "give --preset or --generate, not both";
+  return {};
+}
+
 }  // namespace
 
 ParsedOptions parseOptions(std::span<const std::string_view> args) {
   ParsedOptions r;
   Options& o = r.options;
-  auto fail = [&](std::string msg) {
-    r.error = std::move(msg);
-    return r;
-  };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view a = args[i];
-    // the value of an option that takes one
-    auto value = [&](std::string_view& v) {
-      if (i + 1 >= args.size()) return false;
-      v = args[++i];
-      return true;
-    };
-    std::string_view v;
-    if (a == "-h" || a == "--help")
-      o.help = true;
-    else if (a == "--version")
-      o.version = true;
-    else if (a == "--near-boundary")
-      o.nearBoundary = true;
-    else if (a == "--hide-ui")
-      o.hideUi = true;
-    else if (a == "--no-xvfb")
-      o.noXvfb = true;
-    else if (a == "--animate")
-      o.animate = true;
-    else if (a == "--compare")
-      o.compare = true;
-    else if (a == "--method") {
-      if (!value(v)) return fail("--method needs a method name");
-      o.method = std::string(v);
-    } else if (a == "--resolution") {
-      std::uint32_t x = 0;
-      if (!value(v) || !parseInt<std::uint32_t>(v, 0, 1u << 26, x))
-        return fail("--resolution needs a whole number from 0 (automatic) to 2^26");
-      o.resolution = x;
-    } else if (a == "--preset") {
-      if (!value(v)) return fail("--preset needs a name");
-      o.preset = std::string(v);
-    } else if (a == "--generate") {
-      if (!value(v)) return fail("--generate needs a kind (regular, random, ellipse, ...)");
-      o.generate = std::string(v);
-    } else if (a == "--n") {
-      std::size_t x = 0;
-      if (!value(v) || !parseCount(v, x) || x < 3) return fail("--n needs a whole number >= 3");
-      o.n = x;
-    } else if (a == "--seed") {
-      std::uint64_t x = 0;
-      if (!value(v) || !parseInt<std::uint64_t>(v, 0, ~std::uint64_t{0}, x))
-        return fail("--seed needs a whole number");
-      o.seed = x;
-    } else if (a == "--spray") {
-      std::size_t x = 0;
-      if (!value(v) || !parseCount(v, x) || x > 10000000)
-        return fail("--spray needs a count from 0 to 10^7 (1000, 1e6, ...)");
-      o.spray = x;
-    } else if (a == "--show") {
-      if (!value(v) || (v != "all" && v != "inside" && v != "outside" && v != "boundary"))
-        return fail("--show needs all, inside, outside or boundary");
-      o.show = std::string(v);
-    } else if (a == "--probe") {
-      Vec2 p;
-      Vec3 q;
-      if (!value(v)) return fail("--probe needs X,Y or X,Y,Z");
-      if (parsePoint3(v, q))
-        o.probe3 = q;
-      else if (parsePoint(v, p))
-        o.probe = p;
-      else
-        return fail("--probe needs X,Y or X,Y,Z");
-    } else if (a == "--hover") {
-      Vec2 p;
-      if (!value(v) || !parsePoint(v, p)) return fail("--hover needs X,Y");
-      o.hover = p;
-    } else if (a == "--view") {
-      Vec3 q;
-      if (!value(v) || !parsePoint3(v, q) || !(q.z > 0.0))
-        return fail("--view needs X,Y,WIDTH with WIDTH > 0");
-      o.view = q;
-    } else if (a == "--3d") {
-      o.solid = true;
-    } else if (a == "--slice") {
-      // AXIS=VALUE, e.g. z=0.25
-      if (!value(v) || v.size() < 3 || v[1] != '=' || (v[0] != 'x' && v[0] != 'y' && v[0] != 'z'))
-        return fail("--slice needs AXIS=VALUE, e.g. z=0.25");
-      SlicePlane s;
-      s.axis = v[0] - 'x';
-      if (!parseDouble(v.substr(2), s.offset)) return fail("--slice needs AXIS=VALUE, e.g. z=0.25");
-      o.slice = s;
-    } else if (a == "--cell") {
-      std::size_t k = 0;
-      if (!value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
-        return fail("--cell needs a cell index");
-      o.cell = k;
-    } else if (a == "--theme") {
-      if (!value(v) || (v != "dark" && v != "light")) return fail("--theme needs dark or light");
-      o.theme = v == "dark" ? Theme::Dark : Theme::Light;
-    } else if (a == "--font-scale") {
-      double x = 0.0;
-      if (!value(v) || !parseDouble(v, x) || x < 0.5 || x > 4.0)
-        return fail("--font-scale needs a number from 0.5 to 4");
-      o.fontScale = static_cast<float>(x);
-    } else if (a == "--screenshot") {
-      if (!value(v) || v.empty()) return fail("--screenshot needs a file name");
-      o.screenshot = std::string(v);
-    } else if (a == "--frames") {
-      if (!value(v) || !parseInt<int>(v, 1, 100000, o.frames))
-        return fail("--frames needs a whole number from 1 to 100000");
-      o.framesGiven = true;
-    } else if (a == "--size") {
-      const std::size_t x = value(v) ? v.find('x') : std::string_view::npos;
-      if (x == std::string_view::npos || !parseInt<int>(v.substr(0, x), 64, 16384, o.width) ||
-          !parseInt<int>(v.substr(x + 1), 64, 16384, o.height))
-        return fail("--size needs WIDTHxHEIGHT, e.g. 1024x768");
-    } else if (a == "--samples") {
-      if (!value(v) || !parseInt<int>(v, 0, 16, o.samples))
-        return fail("--samples needs a whole number from 0 (no anti-aliasing) to 16");
-    } else if (a == "--shaders") {
-      if (!value(v)) return fail("--shaders needs a directory");
-      o.shaderDir = std::string(v);
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      return fail("unknown option " + std::string(a) + " (see --help)");
-    } else if (o.shape.empty()) {
-      o.shape = std::string(a);
-    } else {
-      return fail("more than one shape given: " + o.shape + " and " + std::string(a));
-    }
+  ArgReader in(args);
+  while (!in.done() && in.error.empty()) {
+    const std::string_view a = in.take();
+    if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
+        !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
+        !batchOption(a, in, o))
+      in.error = shapeArgument(a, o);
   }
-  if (!o.shape.empty() && (o.preset || o.generate))
-    return fail("give a shape file, --preset or --generate, not several");
-  if (o.preset && o.generate) return fail("give --preset or --generate, not both");
+  r.error = in.error.empty() ? conflicts(o) : in.error;
   return r;
 }
 

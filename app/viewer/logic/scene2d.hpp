@@ -1,7 +1,6 @@
 // convexloc-viewer — the 2D scene: the polygon, the chosen method and its locator, the
-// sprayed points and their classes, the placed point and its trace, the hovered cell and
-// a vertex being dragged. GL-free. Every classification and every cell comes from core;
-// the scene only keeps them, and counts what changed so the renderer re-uploads only that.
+// sprayed points and their classes, the placed point and its trace (all kept by
+// SceneState), the hovered cell and a vertex being dragged. GL-free.
 #pragma once
 
 #include <array>
@@ -15,32 +14,28 @@
 #include "convexloc/generate2d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
+#include "logic/scene_common.hpp"
 
 namespace convexloc::viewer {
 
-// what a spray asks for
-struct SpraySettings {
-  std::size_t count = 2000;
-  std::uint64_t seed = 1;
-  bool nearBoundary = false;  // core's hard cases on and next to the boundary
+// the 2D dimension, for SceneState
+struct Traits2D : SceneTypes<Vec2, ConvexPolygon, Locator2D, Cell2D, Stats2D, Method2D, Trace2D> {
+  static constexpr std::span<const Method2D> kMethods = kAllMethods2D;
+  static constexpr Method2D kDefaultMethod = Method2D::Polar;
+  // each method keeps its own resolution
+  static constexpr std::size_t kSlots = std::size(kAllMethods2D);
+  static constexpr std::size_t slot(Method2D m) { return static_cast<std::size_t>(m); }
+  static constexpr std::uint32_t compareResolution(Method2D, std::uint32_t r) { return r; }
+  static constexpr std::size_t kCompareSpray = 100000, kCompareChunk = 4096;
+  static std::vector<Vec2> sprayPoints(const ConvexPolygon& p, std::size_t n, std::uint64_t seed,
+                                       bool nearBoundary);
+  static ConvexPolygon readShape(const std::string& path);
 };
 
 // the point placed by a click, and what the locator did with it
-struct Probe {
-  Vec2 point{};
-  Trace2D trace;
-};
-
+using Probe = PlacedPoint<Vec2, Trace2D>;
 // one method timed by `compare`
-struct CompareRow {
-  Method2D method = Method2D::Halfplane;
-  std::size_t points = 0;  // how many of the spray were located in the time budget
-  double nsPerPoint = 0.0;
-  double buildMs = 0.0;
-  std::size_t bytes = 0;
-  std::size_t cells = 0;
-  std::size_t disagreements = 0;  // answers differing from the current method's (0 expected)
-};
+using CompareRow = MethodTiming<Method2D>;
 
 // a vertex being dragged
 struct Drag {
@@ -50,22 +45,12 @@ struct Drag {
   std::string message;     // why, when rejected
 };
 
-// counters bumped when a part changes, so that drawing rebuilds only that part
-struct Versions {
-  std::uint64_t shape = 0;      // the polygon
-  std::uint64_t structure = 0;  // the locator and its cells (bumped with the shape too)
-  std::uint64_t points = 0;     // the spray or its classes
-  std::uint64_t overlay = 0;    // probe, hover, drag
-  std::uint64_t section = 0;    // 3D: the slicing plane's section
-};
-
-// above this many cells a subdivision is not drawn (nor hovered): its statistics still are
-inline constexpr std::size_t kMaxDrawnCells = std::size_t{1} << 18;
-
 // how many edges the cells of a method list at the least (the base of the tint)
 std::size_t baseEdgesPerCell(Method2D m);
 
-class Scene2D {
+// The 2D scene: SceneState over a convex polygon, plus the hovered cell and a vertex being
+// dragged.
+class Scene2D : public SceneState<Traits2D> {
  public:
   // the default scene: a random convex polygon with polar slabs and a spray of points
   Scene2D();
@@ -78,47 +63,14 @@ class Scene2D {
                 std::span<const std::size_t> lines = {}, const std::string& source = "");
   // a generated polygon (core's generators); false and error() on a bad argument
   bool generate(PolygonKind kind, std::size_t n, std::uint64_t seed);
-  // a polygon file (.txt, one vertex per line); false and error() when it cannot be used
-  bool loadFile(const std::string& path);
-  const ConvexPolygon& polygon() const { return *polygon_; }
-  // what the shape is, in words ("random, 16 vertices, seed 7", a file name)
-  const std::string& label() const { return label_; }
+  const ConvexPolygon& polygon() const { return *shape_; }
 
   // === Method
-  void setMethod(Method2D m);
-  Method2D method() const { return method_; }
-  // Slabs (uniform) or slabs per octant (polar), 0 = chosen by core; other methods have
-  // none. On a value core refuses, keeps the locator, returns false and sets error().
-  // A resolution set here stays for new shapes; the default scene's goes back to core's
-  // choice when another shape comes.
-  bool setResolution(std::uint32_t r);
-  std::uint32_t resolution() const { return resolution_[static_cast<std::size_t>(method_)]; }
-  // the resolution the locator actually uses (core's choice when 0 was asked)
+  // the resolution the locator actually uses (core's choice when 0 was asked): slabs
+  // (uniform) or slabs per octant (polar); other methods have none
   std::uint32_t effectiveResolution() const;
-  const Locator2D& locator() const { return *locator_; }
-  // the cells, as core reports them; empty when there are more than kMaxDrawnCells
-  const std::vector<Cell2D>& cells() const { return cells_; }
-  // the locator has cells, but too many to draw
-  bool cellsOmitted() const { return stats_.cells > cells_.size(); }
-  const Stats2D& stats() const { return stats_; }
   // the polar centre, when the method is polar and core found one strictly inside
   std::optional<Vec2> centre() const;
-
-  // === Spray
-  void spray(const SpraySettings& s);
-  void clearSpray();
-  const SpraySettings& spraySettings() const { return spray_; }
-  std::span<const Vec2> points() const { return points_; }
-  std::span<const Location> classes() const { return classes_; }
-  // points per class, indexed by Location
-  const std::array<std::size_t, 3>& counts() const { return counts_; }
-  // nanoseconds per point of the last batch classification, and the seconds it took
-  double locateNsPerPoint() const { return locateNsPerPoint_; }
-
-  // === Probe: a placed point and its trace
-  void place(Vec2 p);
-  void clearProbe();
-  const std::optional<Probe>& probe() const { return probe_; }
 
   // === Hover: the cell under the cursor (by core's outlines), -1 for none
   void hover(std::optional<Vec2> p);
@@ -136,47 +88,15 @@ class Scene2D {
   void endDrag();
   const std::optional<Drag>& drag() const { return drag_; }
 
-  // === Compare: every method timed on the current spray (a temporary one when empty),
-  // at most about `secondsPerMethod` each
-  std::vector<CompareRow> compare(double secondsPerMethod = 0.12) const;
-
-  // === Errors: the last problem, for the UI; `errorSerial` grows with each new one
-  const std::string& error() const { return error_; }
-  std::uint64_t errorSerial() const { return errorSerial_; }
-  void clearError() { error_.clear(); }
-  void setError(std::string message);
-
-  const Versions& versions() const { return versions_; }
-
  private:
-  bool adopt(ConvexPolygon polygon, std::string label, bool respray);
-  bool rebuildLocator();
-  void classify();
-  void retrace();
+  void cellsChanged() override;
+  bool adoptShape(ConvexPolygon polygon, std::string label) override;
+  // a fresh shape gets a new spray; an edited one keeps its points
+  bool adopt(ConvexPolygon polygon, std::string label, bool fresh);
 
-  std::optional<ConvexPolygon> polygon_;
-  std::string label_;
-  Method2D method_ = Method2D::Polar;
-  std::array<std::uint32_t, 5> resolution_{};
-  std::array<bool, 5> chosen_{};  // the resolution was set through setResolution
-  std::optional<Locator2D> locator_;
-  std::vector<Cell2D> cells_;
-  Stats2D stats_;
-
-  SpraySettings spray_;
-  std::vector<Vec2> points_;
-  std::vector<Location> classes_;
-  std::array<std::size_t, 3> counts_{};
-  double locateNsPerPoint_ = 0.0;
-
-  std::optional<Probe> probe_;
   std::ptrdiff_t hovered_ = -1;
   std::optional<Vec2> hoverPoint_;
   std::optional<Drag> drag_;
-
-  std::string error_;
-  std::uint64_t errorSerial_ = 0;
-  Versions versions_;
 };
 
 }  // namespace convexloc::viewer

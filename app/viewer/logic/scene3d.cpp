@@ -1,33 +1,16 @@
-// convexloc-viewer — the 3D scene's state transitions.
+// convexloc-viewer — the 3D scene's own state transitions: its shape, the slicing plane
+// and its section, the hovered and the pinned cell.
 #include "logic/scene3d.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <utility>
 
-#include "convexloc/error.hpp"
-#include "convexloc/timing.hpp"
 #include "convexloc/mesh_reader.hpp"
 
 namespace convexloc::viewer {
 namespace {
-
-std::string located(const std::string& source, const Error& e) {
-  std::string out = source;
-  if (!source.empty()) {
-    if (e.line() != 0) out += ":" + std::to_string(e.line());
-    out += ": ";
-  }
-  out += e.what();
-  return out;
-}
-
-std::string baseName(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 constexpr std::uint32_t kDefaultGrid = 8;
 constexpr std::size_t kDefaultSpray = 1500;
@@ -35,34 +18,28 @@ constexpr std::uint32_t kSectionSamples = 160;
 
 }  // namespace
 
+std::vector<Vec3> Traits3D::sprayPoints(const ConvexPolyhedron& p, std::size_t n,
+                                        std::uint64_t seed, bool nearBoundary) {
+  return generatePoints3D(p, n, seed, nearBoundary);
+}
+
+ConvexPolyhedron Traits3D::readShape(const std::string& path) {
+  return ConvexPolyhedron(readMesh(path));
+}
+
 Scene3D::Scene3D() {
   generate(PolyhedronKind::Icosahedron, 20, 1);
   // an 8 x 8 grid per cube face: most cells list one face, and the cells an edge or a
   // vertex projects into stand out
-  resolution_ = kDefaultGrid;
+  resolution_[0] = kDefaultGrid;
   rebuildLocator();
   spray({kDefaultSpray, 1, false});
 }
 
-void Scene3D::setError(std::string message) {
-  error_ = std::move(message);
-  ++errorSerial_;
-}
-
 // === Shape
 
-bool Scene3D::adopt(ConvexPolyhedron poly, std::string label) {
-  std::optional<ConvexPolyhedron> previous = std::move(poly_);
-  const std::uint32_t resolution = resolution_;
-  poly_.emplace(std::move(poly));
-  if (!chosen_) resolution_ = 0;  // core's choice unless the user chose
-  if (!rebuildLocator()) {
-    poly_ = std::move(previous);
-    resolution_ = resolution;
-    return false;
-  }
-  label_ = std::move(label);
-  ++versions_.shape;
+bool Scene3D::adoptShape(ConvexPolyhedron poly, std::string label) {
+  if (!swapShape(std::move(poly), std::move(label), true)) return false;
   // the slicing plane through the middle of the new box
   const Bounds3 b = bounds();
   slice_.offset = b.middle()[slice_.axis];
@@ -74,90 +51,29 @@ bool Scene3D::adopt(ConvexPolyhedron poly, std::string label) {
 }
 
 bool Scene3D::setMesh(const MeshData& mesh, std::string label, const std::string& source) {
-  try {
-    ConvexPolyhedron poly(mesh);
-    return adopt(std::move(poly), std::move(label));
-  } catch (const Error& e) {
-    setError(located(source, e));
-  } catch (const std::bad_alloc&) {
-    setError(source.empty() ? "out of memory" : source + ": out of memory");
-  }
-  return false;
+  return guarded(source, [&] { return adoptShape(ConvexPolyhedron(mesh), std::move(label)); });
 }
 
 bool Scene3D::generate(PolyhedronKind kind, std::size_t n, std::uint64_t seed) {
-  try {
+  return guarded("", [&] {
     const MeshData mesh = generatePolyhedron(kind, n, seed);
     std::string label = std::string(toString(kind));
     label += ", about " + std::to_string(n) + " faces, seed " + std::to_string(seed);
     return setMesh(mesh, std::move(label));
-  } catch (const Error& e) {
-    setError(e.what());
-  }
-  return false;
-}
-
-bool Scene3D::loadFile(const std::string& path) {
-  try {
-    const MeshData mesh = readMesh(path);
-    return setMesh(mesh, baseName(path), path);
-  } catch (const Error& e) {
-    setError(located(path, e));
-  } catch (const std::bad_alloc&) {
-    setError(path + ": out of memory");
-  }
-  return false;
+  });
 }
 
 Bounds3 Scene3D::bounds() const {
-  const Box3 b = poly_->bounds();
+  const Box3 b = shape_->bounds();
   return {toGlm(b.lo), toGlm(b.hi)};
 }
 
 // === Method
 
-bool Scene3D::rebuildLocator() {
-  try {
-    Locator3D next(*poly_, method_, resolution_);
-    stats_ = next.stats();
-    std::vector<Cell3D> cells;
-    if (stats_.cells <= kMaxDrawnCells) cells = next.cells();
-    locator_.emplace(std::move(next));
-    cells_ = std::move(cells);
-  } catch (const Error& e) {
-    setError(e.what());
-    return false;
-  } catch (const std::bad_alloc&) {
-    setError("out of memory building the " + std::string(toString(method_)) + " locator");
-    return false;
-  }
-  ++versions_.structure;
+void Scene3D::cellsChanged() {
   hovered_ = -1;
   if (pinned_ >= static_cast<std::ptrdiff_t>(cells_.size())) pinned_ = -1;
-  classify();
   resection();
-  retrace();
-  ++versions_.overlay;
-  return true;
-}
-
-void Scene3D::setMethod(Method3D m) {
-  if (m == method_ && locator_) return;
-  const Method3D previous = method_;
-  method_ = m;
-  pinned_ = -1;
-  if (!rebuildLocator()) method_ = previous;
-}
-
-bool Scene3D::setResolution(std::uint32_t g) {
-  chosen_ = true;
-  if (g == resolution_) return true;
-  const std::uint32_t previous = resolution_;
-  resolution_ = g;
-  pinned_ = -1;
-  if (rebuildLocator()) return true;
-  resolution_ = previous;
-  return false;
 }
 
 std::uint32_t Scene3D::effectiveResolution() const {
@@ -168,42 +84,13 @@ std::uint32_t Scene3D::effectiveResolution() const {
 std::optional<Vec3> Scene3D::centre() const {
   if (const auto* c = locator_->get<CubemapLocator>()) return c->centre();
   if (const auto* w = locator_->get<WalkLocator>()) return w->centre();
-  return poly_->centre();
+  return shape_->centre();
 }
 
 double Scene3D::cubeHalfSize() const {
   if (const auto* c = locator_->get<CubemapLocator>(); c && !cells_.empty())
     return c->cubeHalfSize();
   return 0.0;
-}
-
-// === Spray
-
-void Scene3D::spray(const SpraySettings& s) {
-  spray_ = s;
-  try {
-    points_ = generatePoints3D(*poly_, s.count, s.seed, s.nearBoundary);
-  } catch (const std::bad_alloc&) {
-    points_.clear();
-    setError("out of memory spraying " + std::to_string(s.count) + " points");
-  }
-  classify();
-}
-
-void Scene3D::clearSpray() {
-  points_.clear();
-  classify();
-}
-
-void Scene3D::classify() {
-  classes_.resize(points_.size());
-  const auto t0 = Clock::now();
-  locator_->locate(points_, classes_);
-  const double seconds = secondsSince(t0);
-  locateNsPerPoint_ = points_.empty() ? 0.0 : 1e9 * seconds / static_cast<double>(points_.size());
-  counts_ = {0, 0, 0};
-  for (Location l : classes_) ++counts_[static_cast<std::size_t>(l)];
-  ++versions_.points;
 }
 
 // === Slice
@@ -271,21 +158,6 @@ void Scene3D::resection() {
 }
 
 // === Probe
-
-void Scene3D::place(Vec3 p) {
-  probe_ = Probe3D{p, locator_->trace(p)};
-  ++versions_.overlay;
-}
-
-void Scene3D::clearProbe() {
-  if (!probe_) return;
-  probe_.reset();
-  ++versions_.overlay;
-}
-
-void Scene3D::retrace() {
-  if (probe_) probe_->trace = locator_->trace(probe_->point);
-}
 
 std::ptrdiff_t Scene3D::probeCell() const {
   if (!probe_ || probe_->trace.cubeFace < 0) return -1;
@@ -359,55 +231,6 @@ void Scene3D::pin(std::ptrdiff_t cell) {
   if (cell == pinned_) return;
   pinned_ = cell;
   ++versions_.overlay;
-}
-
-// === Compare
-
-std::vector<CompareRow3D> Scene3D::compare(double secondsPerMethod) const {
-  std::vector<Vec3> temporary;
-  std::span<const Vec3> pts = points_;
-  std::span<const Location> reference = classes_;
-  std::vector<Location> referenceTemp;
-  if (pts.empty()) {
-    temporary = generatePoints3D(*poly_, 50000, 1, false);
-    referenceTemp.resize(temporary.size());
-    locator_->locate(temporary, referenceTemp);
-    pts = temporary;
-    reference = referenceTemp;
-  }
-  constexpr std::size_t kChunk = 2048;
-  std::vector<Location> out(pts.size());
-  std::vector<CompareRow3D> rows;
-  for (Method3D m : kAllMethods3D) {
-    CompareRow3D row;
-    row.method = m;
-    try {
-      const auto t0 = Clock::now();
-      Locator3D loc(*poly_, m, m == Method3D::Cubemap ? resolution_ : 0);
-      row.buildMs = 1e3 * secondsSince(t0);
-      const Stats3D st = loc.stats();
-      row.bytes = st.bytes;
-      row.cells = st.cells;
-      const std::size_t warm = std::min(kChunk, pts.size());
-      loc.locate(pts.first(warm), std::span<Location>(out).first(warm));
-      const auto t1 = Clock::now();
-      std::size_t done = 0;
-      while (done < pts.size()) {
-        const std::size_t k = std::min(kChunk, pts.size() - done);
-        loc.locate(pts.subspan(done, k), std::span<Location>(out).subspan(done, k));
-        done += k;
-        if (secondsSince(t1) > secondsPerMethod) break;
-      }
-      const double seconds = secondsSince(t1);
-      row.points = done;
-      row.nsPerPoint = done ? 1e9 * seconds / static_cast<double>(done) : 0.0;
-      for (std::size_t i = 0; i < done; ++i) row.disagreements += out[i] != reference[i];
-    } catch (const Error&) {
-      row.points = 0;
-    }
-    rows.push_back(row);
-  }
-  return rows;
 }
 
 }  // namespace convexloc::viewer

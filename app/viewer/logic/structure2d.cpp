@@ -56,6 +56,214 @@ Rgba signColour(const Palette& p, int sign) {
   return sign > 0 ? p.positive : (sign < 0 ? p.negative : p.zero);
 }
 
+// the polygon's interior, faintly (a cosmetic fan: left out for huge polygons)
+void fillPolygon(const ConvexPolygon& poly, const Palette& pal, DrawList& out) {
+  const std::size_t n = poly.size();
+  if (n > kMaxFilledVertices) return;
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    out.triangle(at2(toGlm(poly.vertex(0))), at2(toGlm(poly.vertex(i))),
+                 at2(toGlm(poly.vertex(i + 1))), pal.polygonFill);
+}
+
+// cells listing more than the method's fewest edges, tinted apart
+void tintCells(const Scene2D& scene, const Palette& pal, DrawList& out) {
+  const std::size_t base = baseEdgesPerCell(scene.method());
+  for (const Cell2D& c : scene.cells()) {
+    const bool crowded = c.edges.size() > kCrowdedCell;
+    if (c.edges.size() <= base && !crowded) continue;
+    fillOutline(c.outline, cellTint(pal, c.edges.size(), base, crowded), out);
+  }
+}
+
+// a box's outline, dashed
+void drawBox(const Box2& box, Rgba colour, float width, DrawList& out) {
+  glm::dvec2 k[4];
+  boxCorners(box, k);
+  for (int i = 0; i < 4; ++i) out.segment(at2(k[i]), at2(k[(i + 1) % 4]), colour, width, 6.0f);
+}
+
+// halfplane: the edges' lines; inside is where every line has the point on its inner side
+void halfplaneLines(const ConvexPolygon& poly, const Palette& pal, DrawList& out) {
+  const std::size_t n = poly.size();
+  if (n > 4096) return;
+  const Box2 wide = grow(poly.bounds(), 0.35);
+  const float alpha = n <= 64 ? 1.0f : (n <= 512 ? 0.5f : 0.25f);
+  for (std::size_t e = 0; e < n; ++e) {
+    glm::dvec2 p, q;
+    if (clipLineToBox(toGlm(poly.edgeStart(e)), toGlm(poly.edgeEnd(e)), wide, p, q))
+      out.segment(at2(p), at2(q), withAlpha(pal.structure, pal.structure.a * alpha), 1.0f);
+  }
+}
+
+// wedge: the fan of diagonals from vertex 0
+void wedgeFan(const std::vector<Cell2D>& cells, const Palette& pal, DrawList& out) {
+  for (std::size_t i = 0; i + 1 < cells.size(); ++i)
+    out.segment(at2(toGlm(cells[i].outline[0])), at2(toGlm(cells[i].outline[2])), pal.structure,
+                1.0f);
+}
+
+// slab, uniform: the slabs' lower sides, and the top of the last
+void slabLines(const std::vector<Cell2D>& cells, const Palette& pal, DrawList& out) {
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const auto& o = cells[i].outline;
+    out.segment(at2(toGlm(o[0])), at2(toGlm(o[1])), pal.structure, 1.0f);
+    if (i + 1 == cells.size()) out.segment(at2(toGlm(o[2])), at2(toGlm(o[3])), pal.structure, 1.0f);
+  }
+}
+
+// polar: the rays bounding the slabs, from the centre to the box; the octant lines (the
+// rays at the start of each octant's first cell) and the octants' numbers
+void polarRays(const Scene2D& scene, const Palette& pal, const View2DOptions& opt, bool dense,
+               DrawList& out) {
+  const auto& cells = scene.cells();
+  const std::uint32_t q = scene.effectiveResolution();
+  if (!dense)
+    for (const Cell2D& c : cells)
+      if (q == 0 || c.index % q != 0)
+        out.segment(at2(toGlm(c.outline[0])), at2(toGlm(c.hitLo)), pal.structure, 1.0f);
+  if (q == 0) return;
+  if (opt.showOctants)
+    for (const Cell2D& c : cells)
+      if (c.index % q == 0)
+        out.segment(at2(toGlm(c.outline[0])), at2(toGlm(c.hitLo)), pal.octant, 1.6f, 9.0f);
+  if (!opt.showLabels || cells.empty()) return;
+  // near the box along each octant's middle
+  for (std::uint32_t o = 0; o < 8; ++o) {
+    const std::size_t first = static_cast<std::size_t>(o) * q, last = first + q - 1;
+    if (last >= cells.size()) break;
+    const glm::dvec2 ctr = toGlm(cells[first].outline[0]);
+    const glm::dvec2 mid = 0.5 * (toGlm(cells[first].hitLo) + toGlm(cells[last].hitHi));
+    out.label(at2(ctr + 0.88 * (mid - ctr)), numbered("octant ", o), pal.textMuted);
+  }
+}
+
+// each method's structure; dense subdivisions keep only what stays readable
+void methodStructure(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
+                     DrawList& out) {
+  const bool dense = scene.cells().size() > kMaxCellLines;
+  switch (scene.method()) {
+    case Method2D::Halfplane: halfplaneLines(scene.polygon(), pal, out); break;
+    case Method2D::Wedge:
+      if (!dense) wedgeFan(scene.cells(), pal, out);
+      break;
+    case Method2D::Slab:
+    case Method2D::Uniform:
+      if (!dense) slabLines(scene.cells(), pal, out);
+      break;
+    case Method2D::Polar: polarRays(scene, pal, opt, dense, out); break;
+  }
+}
+
+// the centre x_T, and the wedge's apex x0
+void markCentre(const Scene2D& scene, const Palette& pal, const View2DOptions& opt, DrawList& out) {
+  if (auto c = scene.centre()) {
+    out.marker(at2(toGlm(*c)), pal.centre, 11.0f, MarkerShape::Cross);
+    if (opt.showLabels) out.label(at2(toGlm(*c)), "x_T", pal.text, {16.0f, -14.0f});
+  }
+  if (scene.method() == Method2D::Wedge && opt.showLabels)
+    out.label(at2(toGlm(scene.polygon().vertex(0))), "x0", pal.text, {10.0f, 10.0f});
+}
+
+// vertex numbers and handles where they fit
+void vertexLabelsAndHandles(const ConvexPolygon& poly, const Palette& pal, const View2DOptions& opt,
+                            DrawList& out) {
+  const std::size_t n = poly.size();
+  if (opt.showLabels && n <= kMaxLabelledVertices) {
+    const Box2 box = poly.bounds();
+    const glm::dvec2 mid{0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y)};
+    for (std::size_t i = 0; i < n; ++i) {
+      glm::dvec2 d = toGlm(poly.vertex(i)) - mid;
+      const double len = glm::length(d);
+      glm::vec2 off =
+          len > 0.0
+              ? glm::vec2(static_cast<float>(d.x / len), static_cast<float>(-d.y / len)) * 14.0f
+              : glm::vec2(0.0f);
+      out.label(at2(toGlm(poly.vertex(i))), std::to_string(i), pal.textMuted, off);
+    }
+  }
+  if (opt.showHandles && n <= kMaxHandles)
+    for (std::size_t i = 0; i < n; ++i)
+      out.marker(at2(toGlm(poly.vertex(i))), pal.handle, 9.0f, MarkerShape::Ring);
+}
+
+// the hovered cell, its outline, and the edges it lists in bold
+void hoveredCell(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
+                 DrawList& out) {
+  const ConvexPolygon& poly = scene.polygon();
+  const Cell2D& c = scene.cells()[static_cast<std::size_t>(scene.hoveredCell())];
+  fillOutline(c.outline, pal.hoverFill, out);
+  strokeOutline(c.outline, pal.hoverOutline, 1.5f, out);
+  // an edge the placed point's trace names gets that label instead
+  auto traced = [&](std::uint32_t e) {
+    if (!scene.probe()) return false;
+    for (const EdgeTest& t : scene.probe()->trace.edges)
+      if (t.edge == e) return true;
+    return false;
+  };
+  for (std::uint32_t e : c.edges) {
+    strokeEdge(poly, e, pal.hoverEdge, 5.0f, out);
+    if (opt.showLabels && c.edges.size() <= 12 && !traced(e))
+      labelEdge(poly, e, numbered("e", e), pal.hoverEdge, 16.0f, out);
+  }
+}
+
+// the placed point and its trace: the cell chosen, the rays and edges tested by sign
+void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
+                const View2DOptions& opt, DrawList& out) {
+  const ConvexPolygon& poly = scene.polygon();
+  const std::size_t n = poly.size();
+  const auto& cells = scene.cells();
+  const Trace2D& t = probe.trace;
+  const glm::dvec2 x = toGlm(probe.point);
+  if (t.outsideBox) drawBox(poly.bounds(), pal.negative, 2.0f, out);
+  // the cell the query chose
+  const std::ptrdiff_t pos = cellPosition(scene, t.cell);
+  if (pos >= 0) {
+    const Cell2D& c = cells[static_cast<std::size_t>(pos)];
+    fillOutline(c.outline, withAlpha(colourOf(pal, t.result), 0.16f), out);
+    strokeOutline(c.outline, withAlpha(colourOf(pal, t.result), 0.9f), 1.75f, out);
+  }
+  // the ray from the apex (polar centre, wedge vertex 0) to the point
+  if (t.method == Method2D::Polar || t.method == Method2D::Wedge)
+    out.segment(at2(toGlm(t.apex)), at2(x), pal.text, 1.25f, 5.0f);
+  // rays tested by bisection: from the apex through a vertex, coloured by the sign
+  for (std::size_t k = 0; k < t.rays.size(); ++k) {
+    const RayTest r = t.rays[k];
+    if (r.vertex >= n) continue;
+    const glm::dvec2 a = toGlm(t.apex), v = toGlm(poly.vertex(r.vertex));
+    out.segment(at2(a), at2(a + 1.08 * (v - a)), withAlpha(signColour(pal, r.sign), 0.9f), 2.0f);
+    if (opt.showLabels && t.rays.size() <= 24)
+      out.label(at2(a + 1.08 * (v - a)), std::to_string(k + 1) + signText(r.sign),
+                signColour(pal, r.sign), {0.0f, -10.0f});
+  }
+  // edges tested, coloured by the sign
+  const bool fewEdges = t.edges.size() <= 16;
+  for (const EdgeTest& e : t.edges) {
+    if (e.edge >= n) continue;
+    strokeEdge(poly, e.edge, signColour(pal, e.sign), 4.5f, out);
+    if (opt.showLabels && fewEdges)
+      labelEdge(poly, e.edge, numbered("e", e.edge).append(signText(e.sign)),
+                signColour(pal, e.sign), 18.0f, out);
+  }
+  out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
+  out.marker(at2(x), colourOf(pal, t.result), 13.0f, MarkerShape::Disc);
+  if (opt.showLabels)
+    out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
+}
+
+// A dragged vertex: accepted edits are the shape itself; a rejected one shows where the
+// mouse is, tied to the kept vertex, with the reason.
+void dragMarker(const Scene2D& scene, const Drag& d, const Palette& pal, DrawList& out) {
+  const ConvexPolygon& poly = scene.polygon();
+  const glm::dvec2 kept = toGlm(poly.vertex(std::min(d.vertex, poly.size() - 1)));
+  out.marker(at2(kept), pal.hoverEdge, 13.0f, MarkerShape::Ring);
+  if (d.rejected) {
+    out.segment(at2(kept), at2(toGlm(d.cursor)), pal.handleError, 1.5f, 5.0f);
+    out.marker(at2(toGlm(d.cursor)), pal.handleError, 13.0f, MarkerShape::Cross);
+    out.label(at2(toGlm(d.cursor)), d.message, pal.handleError, {14.0f, 14.0f});
+  }
+}
+
 }  // namespace
 
 Box2 grow(const Box2& b, double fraction) {
@@ -99,207 +307,23 @@ std::ptrdiff_t cellPosition(const Scene2D& scene, std::int64_t index) {
 void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
                       DrawList& out) {
   out.clear();
-  const ConvexPolygon& poly = scene.polygon();
-  const auto& cells = scene.cells();
-  const Method2D method = scene.method();
-  const std::size_t n = poly.size();
-  const Box2 box = poly.bounds();
-  const std::size_t base = baseEdgesPerCell(method);
-
-  // the polygon's interior, faintly (a cosmetic fan: left out for huge polygons)
-  if (n <= kMaxFilledVertices)
-    for (std::size_t i = 1; i + 1 < n; ++i)
-      out.triangle(at2(toGlm(poly.vertex(0))), at2(toGlm(poly.vertex(i))),
-                   at2(toGlm(poly.vertex(i + 1))), pal.polygonFill);
-
-  // cells listing more than the method's fewest edges, tinted apart
-  if (opt.showStructure && opt.showTints)
-    for (const Cell2D& c : cells) {
-      const bool crowded = c.edges.size() > kCrowdedCell;
-      if (c.edges.size() <= base && !crowded) continue;
-      fillOutline(c.outline, cellTint(pal, c.edges.size(), base, crowded), out);
-    }
-
-  // the bounding box
-  if (opt.showBox) {
-    glm::dvec2 k[4];
-    boxCorners(box, k);
-    for (int i = 0; i < 4; ++i) out.segment(at2(k[i]), at2(k[(i + 1) % 4]), pal.box, 1.25f, 6.0f);
-  }
-
-  // each method's structure
-  if (opt.showStructure) {
-    const bool dense = cells.size() > kMaxCellLines;
-    switch (method) {
-      case Method2D::Halfplane: {
-        // the edges' lines: inside is where every line has the point on its inner side
-        const Box2 wide = grow(box, 0.35);
-        const float alpha = n <= 64 ? 1.0f : (n <= 512 ? 0.5f : 0.25f);
-        if (n <= 4096)
-          for (std::size_t e = 0; e < n; ++e) {
-            glm::dvec2 p, q;
-            if (clipLineToBox(toGlm(poly.edgeStart(e)), toGlm(poly.edgeEnd(e)), wide, p, q))
-              out.segment(at2(p), at2(q), withAlpha(pal.structure, pal.structure.a * alpha), 1.0f);
-          }
-        break;
-      }
-      case Method2D::Wedge:
-        // the fan of diagonals from vertex 0
-        if (!dense)
-          for (std::size_t i = 0; i + 1 < cells.size(); ++i)
-            out.segment(at2(toGlm(cells[i].outline[0])), at2(toGlm(cells[i].outline[2])),
-                        pal.structure, 1.0f);
-        break;
-      case Method2D::Slab:
-      case Method2D::Uniform:
-        // the slabs' lower sides, and the top of the last
-        if (!dense)
-          for (std::size_t i = 0; i < cells.size(); ++i) {
-            const auto& o = cells[i].outline;
-            out.segment(at2(toGlm(o[0])), at2(toGlm(o[1])), pal.structure, 1.0f);
-            if (i + 1 == cells.size())
-              out.segment(at2(toGlm(o[2])), at2(toGlm(o[3])), pal.structure, 1.0f);
-          }
-        break;
-      case Method2D::Polar: {
-        // the rays bounding the polar slabs, from the centre to the box
-        const std::uint32_t q = scene.effectiveResolution();
-        if (!dense)
-          for (const Cell2D& c : cells)
-            if (q == 0 || c.index % q != 0)
-              out.segment(at2(toGlm(c.outline[0])), at2(toGlm(c.hitLo)), pal.structure, 1.0f);
-        // the octant lines: the rays at the start of each octant's first cell
-        if (opt.showOctants && q > 0)
-          for (const Cell2D& c : cells)
-            if (c.index % q == 0)
-              out.segment(at2(toGlm(c.outline[0])), at2(toGlm(c.hitLo)), pal.octant, 1.6f, 9.0f);
-        // octant numbers, near the box along each octant's middle
-        if (opt.showLabels && q > 0 && !cells.empty())
-          for (std::uint32_t o = 0; o < 8; ++o) {
-            const std::size_t first = static_cast<std::size_t>(o) * q, last = first + q - 1;
-            if (last >= cells.size()) break;
-            const glm::dvec2 ctr = toGlm(cells[first].outline[0]);
-            const glm::dvec2 mid = 0.5 * (toGlm(cells[first].hitLo) + toGlm(cells[last].hitHi));
-            out.label(at2(ctr + 0.88 * (mid - ctr)), numbered("octant ", o), pal.textMuted);
-          }
-        break;
-      }
-    }
-  }
-
+  fillPolygon(scene.polygon(), pal, out);
+  if (opt.showStructure && opt.showTints) tintCells(scene, pal, out);
+  if (opt.showBox) drawBox(scene.polygon().bounds(), pal.box, 1.25f, out);
+  if (opt.showStructure) methodStructure(scene, pal, opt, out);
   // the polygon's edges, over the structure
-  for (std::size_t e = 0; e < n; ++e) strokeEdge(poly, e, pal.polygonEdge, 2.25f, out);
-
-  // the centre x_T
-  if (auto c = scene.centre()) {
-    out.marker(at2(toGlm(*c)), pal.centre, 11.0f, MarkerShape::Cross);
-    if (opt.showLabels) out.label(at2(toGlm(*c)), "x_T", pal.text, {16.0f, -14.0f});
-  }
-  // the wedge's apex x0
-  if (method == Method2D::Wedge && opt.showLabels)
-    out.label(at2(toGlm(poly.vertex(0))), "x0", pal.text, {10.0f, 10.0f});
-
-  // vertex numbers and handles where they fit
-  if (opt.showLabels && n <= kMaxLabelledVertices) {
-    const glm::dvec2 mid{0.5 * (box.lo.x + box.hi.x), 0.5 * (box.lo.y + box.hi.y)};
-    for (std::size_t i = 0; i < n; ++i) {
-      glm::dvec2 d = toGlm(poly.vertex(i)) - mid;
-      const double len = glm::length(d);
-      glm::vec2 off =
-          len > 0.0
-              ? glm::vec2(static_cast<float>(d.x / len), static_cast<float>(-d.y / len)) * 14.0f
-              : glm::vec2(0.0f);
-      out.label(at2(toGlm(poly.vertex(i))), std::to_string(i), pal.textMuted, off);
-    }
-  }
-  if (opt.showHandles && n <= kMaxHandles)
-    for (std::size_t i = 0; i < n; ++i)
-      out.marker(at2(toGlm(poly.vertex(i))), pal.handle, 9.0f, MarkerShape::Ring);
+  for (std::size_t e = 0; e < scene.polygon().size(); ++e)
+    strokeEdge(scene.polygon(), e, pal.polygonEdge, 2.25f, out);
+  markCentre(scene, pal, opt, out);
+  vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
                     DrawList& out) {
   out.clear();
-  const ConvexPolygon& poly = scene.polygon();
-  const auto& cells = scene.cells();
-  const std::size_t n = poly.size();
-
-  // the hovered cell, its outline, and the edges it lists in bold
-  if (scene.hoveredCell() >= 0 && !scene.drag()) {
-    const Cell2D& c = cells[static_cast<std::size_t>(scene.hoveredCell())];
-    fillOutline(c.outline, pal.hoverFill, out);
-    strokeOutline(c.outline, pal.hoverOutline, 1.5f, out);
-    // an edge the placed point's trace names gets that label instead
-    auto traced = [&](std::uint32_t e) {
-      if (!scene.probe()) return false;
-      for (const EdgeTest& t : scene.probe()->trace.edges)
-        if (t.edge == e) return true;
-      return false;
-    };
-    for (std::uint32_t e : c.edges) {
-      strokeEdge(poly, e, pal.hoverEdge, 5.0f, out);
-      if (opt.showLabels && c.edges.size() <= 12 && !traced(e))
-        labelEdge(poly, e, numbered("e", e), pal.hoverEdge, 16.0f, out);
-    }
-  }
-
-  // the placed point and its trace
-  if (const auto& probe = scene.probe()) {
-    const Trace2D& t = probe->trace;
-    const glm::dvec2 x = toGlm(probe->point);
-    if (t.outsideBox) {
-      glm::dvec2 k[4];
-      boxCorners(poly.bounds(), k);
-      for (int i = 0; i < 4; ++i)
-        out.segment(at2(k[i]), at2(k[(i + 1) % 4]), pal.negative, 2.0f, 6.0f);
-    }
-    // the cell the query chose
-    const std::ptrdiff_t pos = cellPosition(scene, t.cell);
-    if (pos >= 0) {
-      const Cell2D& c = cells[static_cast<std::size_t>(pos)];
-      fillOutline(c.outline, withAlpha(colourOf(pal, t.result), 0.16f), out);
-      strokeOutline(c.outline, withAlpha(colourOf(pal, t.result), 0.9f), 1.75f, out);
-    }
-    // the ray from the apex (polar centre, wedge vertex 0) to the point
-    if (t.method == Method2D::Polar || t.method == Method2D::Wedge)
-      out.segment(at2(toGlm(t.apex)), at2(x), pal.text, 1.25f, 5.0f);
-    // rays tested by bisection: from the apex through a vertex, coloured by the sign
-    for (std::size_t k = 0; k < t.rays.size(); ++k) {
-      const RayTest r = t.rays[k];
-      if (r.vertex >= n) continue;
-      const glm::dvec2 a = toGlm(t.apex), v = toGlm(poly.vertex(r.vertex));
-      out.segment(at2(a), at2(a + 1.08 * (v - a)), withAlpha(signColour(pal, r.sign), 0.9f), 2.0f);
-      if (opt.showLabels && t.rays.size() <= 24)
-        out.label(at2(a + 1.08 * (v - a)), std::to_string(k + 1) + signText(r.sign),
-                  signColour(pal, r.sign), {0.0f, -10.0f});
-    }
-    // edges tested, coloured by the sign
-    const bool fewEdges = t.edges.size() <= 16;
-    for (const EdgeTest& e : t.edges) {
-      if (e.edge >= n) continue;
-      strokeEdge(poly, e.edge, signColour(pal, e.sign), 4.5f, out);
-      if (opt.showLabels && fewEdges)
-        labelEdge(poly, e.edge, numbered("e", e.edge).append(signText(e.sign)),
-                  signColour(pal, e.sign), 18.0f, out);
-    }
-    out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
-    out.marker(at2(x), colourOf(pal, t.result), 13.0f, MarkerShape::Disc);
-    if (opt.showLabels)
-      out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result),
-                {12.0f, 12.0f});
-  }
-
-  // a dragged vertex: accepted edits are the shape itself; a rejected one shows where
-  // the mouse is, tied to the kept vertex, with the reason
-  if (const auto& d = scene.drag()) {
-    const glm::dvec2 kept = toGlm(poly.vertex(std::min(d->vertex, n - 1)));
-    out.marker(at2(kept), pal.hoverEdge, 13.0f, MarkerShape::Ring);
-    if (d->rejected) {
-      out.segment(at2(kept), at2(toGlm(d->cursor)), pal.handleError, 1.5f, 5.0f);
-      out.marker(at2(toGlm(d->cursor)), pal.handleError, 13.0f, MarkerShape::Cross);
-      out.label(at2(toGlm(d->cursor)), d->message, pal.handleError, {14.0f, 14.0f});
-    }
-  }
+  if (scene.hoveredCell() >= 0 && !scene.drag()) hoveredCell(scene, pal, opt, out);
+  if (const auto& probe = scene.probe()) probeTrace(scene, *probe, pal, opt, out);
+  if (const auto& d = scene.drag()) dragMarker(scene, *d, pal, out);
 }
 
 }  // namespace convexloc::viewer

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <initializer_list>
 
 namespace convexloc::viewer {
 namespace {
@@ -42,13 +43,23 @@ std::string exact(double v) {
   return std::string(buf, r.ptr);
 }
 
-std::string exact(Vec2 p) {
+namespace {
+
+// "(a, b, ...)" with exact()
+std::string exactTuple(std::initializer_list<double> values) {
   std::string out = "(";
-  out += exact(p.x);
-  out += ", ";
-  out += exact(p.y);
+  for (const double v : values) {
+    if (out.size() > 1) out += ", ";
+    out += exact(v);
+  }
   out += ')';
   return out;
+}
+
+}  // namespace
+
+std::string exact(Vec2 p) {
+  return exactTuple({p.x, p.y});
 }
 
 std::string approx(double v, int digits) {
@@ -97,8 +108,8 @@ std::string bytesText(std::size_t bytes) {
 namespace {
 // the radius filter's step: where |p - c| falls against the cell's two radii
 std::string radiusLine(double distance, double inner, double outer, const char* what) {
-  std::string s = "|p - x_T| = " + approx(distance, 6) + "; cell radii " + approx(inner, 6) + " .. " +
-                  approx(outer, 6);
+  std::string s = "|p - x_T| = " + approx(distance, 6) + "; cell radii " + approx(inner, 6) +
+                  " .. " + approx(outer, 6);
   if (distance < inner)
     return s + ": nearer than every " + what + " the cell sees, inside with no test";
   if (distance > outer) return s + ": beyond where its ray leaves, outside with no test";
@@ -157,14 +168,7 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
 }
 
 std::string exact(Vec3 p) {
-  std::string out = "(";
-  out += exact(p.x);
-  out += ", ";
-  out += exact(p.y);
-  out += ", ";
-  out += exact(p.z);
-  out += ')';
-  return out;
+  return exactTuple({p.x, p.y, p.z});
 }
 
 std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
@@ -183,7 +187,8 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
     std::string cell = "cell (" + std::to_string(t.cellI) + ", " + std::to_string(t.cellJ) + ")";
     if (t.level > 0) cell += " at quadtree level " + std::to_string(t.level);
     add(TraceLine::Step, cell);
-    if (t.outerRadius > 0) add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "face"));
+    if (t.outerRadius > 0)
+      add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "face"));
   }
   if (t.crowded) add(TraceLine::Step, "the cell lists many faces: a walk among them");
   if (t.fallback) add(TraceLine::Step, "no cell could be used: every face is tested");

@@ -15,6 +15,9 @@ ImVec4 im(Rgba c) {
 }
 
 // places a font may be installed (Debian's fonts-dejavu-core first)
+// the font's height at scale 1, in points
+constexpr float kBaseFontPixels = 16.0f;
+
 constexpr const char* kFontFiles[] = {
     "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
     "/usr/share/fonts/TTF/DejaVuSans.ttf",
@@ -111,6 +114,25 @@ void loadFont(float pixels, bool recreateTexture) {
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
   }
+}
+
+StyleKeeper::StyleKeeper(const Settings& settings, float dpi)
+    : dpi_(dpi), theme_(settings.theme), scale_(settings.fontScale) {
+  loadFont(kBaseFontPixels * settings.fontScale * dpi_, false);
+  ImGui::GetIO().FontGlobalScale = 1.0f / dpi_;
+  applyStyle(theme_, scale_);
+}
+
+void StyleKeeper::update(Settings& settings, float& pendingFontScale) {
+  if (pendingFontScale > 0.0f) {
+    settings.fontScale = pendingFontScale;
+    pendingFontScale = 0.0f;
+    loadFont(kBaseFontPixels * settings.fontScale * dpi_, true);
+  }
+  if (theme_ == settings.theme && scale_ == settings.fontScale) return;
+  theme_ = settings.theme;
+  scale_ = settings.fontScale;
+  applyStyle(theme_, scale_);
 }
 
 }  // namespace convexloc::viewer

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "logic/colour.hpp"
+#include "logic/model.hpp"
 
 namespace convexloc::viewer {
 
@@ -12,5 +13,20 @@ void applyStyle(Theme theme, float scale);
 // own font otherwise. Call outside a frame; with `recreateTexture` (after the first frame)
 // the GL backend's font texture is made again.
 void loadFont(float pixels, bool recreateTexture);
+
+// Keeps ImGui's font and style in step with the settings' theme and text size, on a
+// screen of `dpi` window pixels per point. Changes are applied outside a frame.
+class StyleKeeper {
+ public:
+  // loads the font and applies the style of `settings`
+  StyleKeeper(const Settings& settings, float dpi);
+  // takes a font scale the View panel asked for (> 0), and restyles after any change
+  void update(Settings& settings, float& pendingFontScale);
+
+ private:
+  float dpi_;
+  Theme theme_;
+  float scale_;
+};
 
 }  // namespace convexloc::viewer

@@ -76,6 +76,19 @@ void statRow(const char* key, const std::string& value) {
   ImGui::TextUnformatted(value.c_str());
 }
 
+void toggleGrid(std::string_view labels, std::initializer_list<bool*> values) {
+  const float mid = ImGui::GetContentRegionAvail().x * 0.5f;
+  bool right = false;
+  for (bool* value : values) {
+    const std::size_t bar = labels.find('|');
+    const std::string label(labels.substr(0, bar));
+    labels = bar == std::string_view::npos ? std::string_view() : labels.substr(bar + 1);
+    if (right) ImGui::SameLine(mid);
+    ImGui::Checkbox(label.c_str(), value);
+    right = !right;
+  }
+}
+
 void fileOpen(Model& model, UiState& ui, const char* hint) {
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3.0f * ImGui::GetStyle().FramePadding.x);
   const bool enter = ImGui::InputTextWithHint("##path", hint, ui.path, sizeof ui.path,

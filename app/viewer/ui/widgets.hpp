@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <imgui.h>
@@ -11,7 +13,7 @@
 #include "logic/colour.hpp"
 #include "logic/model.hpp"
 #include "logic/text.hpp"
-#include "ui/panels.hpp"
+#include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {
 
@@ -32,6 +34,8 @@ void help(const char* text);
 std::string percent(std::size_t part, std::size_t whole);
 // a two-column row of a statistics table
 void statRow(const char* key, const std::string& value);
+// check boxes in two columns: `labels` separated by '|', each setting its bool in `values`
+void toggleGrid(std::string_view labels, std::initializer_list<bool*> values);
 // the path box, Open, recent files and assets
 void fileOpen(Model& model, UiState& ui, const char* hint);
 // the degenerate gallery's buttons for polygons or for polyhedra
@@ -92,13 +96,5 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
   if (!scene.points().empty())
     ImGui::TextDisabled("classified at %s ns/point", nsText(scene.locateNsPerPoint()).c_str());
 }
-
-// === 3D panels (panels3d.cpp)
-void shapePanel3(Model& model, UiState& ui);
-void methodPanel3(Model& model, UiState& ui);
-void slicePanel3(Model& model);
-void viewOptions3(Model& model);
-void legendContents3(Model& model);
-void inspectorContents3(Model& model, bool hints);
 
 }  // namespace convexloc::viewer

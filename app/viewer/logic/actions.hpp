@@ -1,0 +1,24 @@
+// convexloc-viewer — what a key asks the viewer to do, in the viewer's own words: the
+// platform layer turns key presses into these, the UI carries them out.
+#pragma once
+
+#include <cstdint>
+
+namespace convexloc::viewer {
+
+enum class ActionKind : std::uint8_t {
+  Screenshot,   // a PNG of the window in the working directory
+  Fit,          // the camera fitted to the shape
+  ToggleUi,     // the panels hidden or shown
+  ToggleTheme,  // dark and light swapped
+  ClearPoint,   // the placed point (and in 3D the pinned cell) cleared
+  NewSpray,     // a spray with the next seed
+  ChooseMethod  // the method numbered `method` (0 = the first) in the scene's list
+};
+
+struct Action {
+  ActionKind kind = ActionKind::Fit;
+  int method = 0;  // ChooseMethod only
+};
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,86 @@
+// convexloc-viewer — GLFW callbacks and keys, turned into the viewer's input and actions.
+#include "platform/input.hpp"
+
+#define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace convexloc::viewer {
+namespace {
+
+// files dropped on the window since the last takeDroppedFiles
+std::vector<std::string> gDropped;
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) gDropped.emplace_back(paths[i]);
+}
+
+// a key went down this frame (no repeats)
+bool pressed(int key) {
+  return ImGui::IsKeyPressed(key, false);
+}
+
+// the keys that ask for one action each, while ImGui does not want the keyboard
+struct KeyBinding {
+  int key;
+  ActionKind kind;
+};
+constexpr KeyBinding kKeys[] = {
+    {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
+    {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
+    {GLFW_KEY_SPACE, ActionKind::NewSpray},
+};
+// keys 1..5 choose a method
+constexpr int kMethodKeys = 5;
+
+}  // namespace
+
+void watchDrops(GLFWwindow* window) {
+  glfwSetDropCallback(window, onDrop);
+}
+
+std::vector<std::string> takeDroppedFiles() {
+  std::vector<std::string> files;
+  files.swap(gDropped);
+  return files;
+}
+
+PointerInput pointerInput(bool hovering) {
+  const ImGuiIO& io = ImGui::GetIO();
+  PointerInput in;
+  in.pos = {io.MousePos.x, io.MousePos.y};
+  in.delta = {io.MouseDelta.x, io.MouseDelta.y};
+  if (!ImGui::IsMousePosValid()) in.delta = {0.0, 0.0};
+  for (int b = 0; b < 3; ++b) {
+    in.down[b] = io.MouseDown[b];
+    in.pressed[b] = ImGui::IsMouseClicked(b);
+    in.released[b] = ImGui::IsMouseReleased(b);
+  }
+  in.wheel = io.MouseWheel;
+  in.captured = io.WantCaptureMouse;
+  in.shift = io.KeyShift;
+  in.hovering = ImGui::IsMousePosValid() && hovering;
+  return in;
+}
+
+std::vector<Action> keyActions() {
+  std::vector<Action> actions;
+  if (pressed(GLFW_KEY_F12)) actions.push_back({ActionKind::Screenshot, 0});
+  if (ImGui::GetIO().WantCaptureKeyboard) return actions;
+  for (const KeyBinding& b : kKeys)
+    if (pressed(b.key)) actions.push_back({b.kind, 0});
+  for (int k = 0; k < kMethodKeys; ++k)
+    if (pressed(GLFW_KEY_1 + k)) actions.push_back({ActionKind::ChooseMethod, k});
+  return actions;
+}
+
+bool hadInput(bool dropped) {
+  const ImGuiIO& io = ImGui::GetIO();
+  bool input =
+      io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f || dropped;
+  for (bool b : io.MouseDown) input |= b;
+  for (bool k : io.KeysDown) input |= k;
+  return input;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,167 @@
+// convexloc-viewer — the window, its context and ImGui's backends; the xvfb-run fallback.
+#include "platform/window.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "gl/context.hpp"
+#define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+namespace convexloc::viewer {
+namespace {
+
+void onGlfwError(int code, const char* text) {
+  std::cerr << "convexloc-viewer: GLFW error " << code << ": " << text << "\n";
+}
+
+// whether an environment variable is set and not empty
+bool isSet(const char* name) {
+  const char* v = std::getenv(name);
+  return v && *v;
+}
+
+// the GL context every window asks for
+void contextHints() {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  // The window needs no multisampling: the scene is drawn into an offscreen target that
+  // has it (see SceneView), and ImGui anti-aliases its own shapes.
+  glfwWindowHint(GLFW_SAMPLES, 0);
+}
+
+}  // namespace
+
+bool displayAvailable() {
+  return isSet("DISPLAY") || isSet("WAYLAND_DISPLAY");
+}
+
+std::string selfPath(const char* argv0) {
+  char buf[4096];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return argv0;
+  buf[n] = '\0';
+  return buf;
+}
+
+int rerunUnderXvfb(int argc, char** argv, const Options& o) {
+  const std::string png = o.screenshot.empty() ? "convexloc-viewer.png" : o.screenshot;
+  std::cerr << "convexloc-viewer: no display (DISPLAY is not set); rendering the scene to " << png
+            << " through xvfb-run instead\n";
+  std::vector<std::string> args = {
+      "xvfb-run", "-a", "-s",
+      "-screen 0 " + std::to_string(o.width + 64) + "x" + std::to_string(o.height + 64) + "x24",
+      selfPath(argv[0])};
+  for (int i = 1; i < argc; ++i) args.emplace_back(argv[i]);
+  args.emplace_back("--no-xvfb");
+  if (o.screenshot.empty()) {
+    args.emplace_back("--screenshot");
+    args.emplace_back(png);
+  }
+  std::vector<char*> cargs;
+  for (std::string& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  execvp("xvfb-run", cargs.data());
+  std::cerr
+      << "convexloc-viewer: cannot run xvfb-run (install the Debian packages xvfb and xauth), "
+         "or run with a display\n";
+  return 1;
+}
+
+// === Window
+
+bool Window::open(const Options& options, bool headless) {
+  glfwSetErrorCallback(onGlfwError);
+  if (!glfwInit()) {
+    std::cerr << "convexloc-viewer: cannot initialise GLFW (is the display reachable?)\n";
+    return false;
+  }
+  glfwStarted_ = true;
+  contextHints();
+  window_ = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
+  if (!window_) {
+    std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
+    return false;
+  }
+  glfwMakeContextCurrent(window_);
+  if (!loadGlFunctions(glfwGetProcAddress)) {
+    std::cerr << "convexloc-viewer: cannot load the OpenGL functions\n";
+    return false;
+  }
+  glfwSwapInterval(headless ? 0 : 1);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // nothing written next to the user's files
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  imguiStarted_ = true;
+  return true;
+}
+
+Window::~Window() {
+  if (imguiStarted_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  if (window_) glfwDestroyWindow(window_);
+  if (glfwStarted_) glfwTerminate();
+}
+
+bool Window::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+
+void Window::takeEvents(bool idle) {
+  if (idle)
+    glfwWaitEventsTimeout(0.25);
+  else
+    glfwPollEvents();
+}
+
+void Window::newFrame() {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void Window::renderImGui() {
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Window::swapBuffers() {
+  glfwSwapBuffers(window_);
+}
+
+FrameSize Window::frameSize() const {
+  int winW = 0, winH = 0;
+  FrameSize s;
+  glfwGetWindowSize(window_, &winW, &winH);
+  glfwGetFramebufferSize(window_, &s.framebufferWidth, &s.framebufferHeight);
+  s.window = {std::max(winW, 1), std::max(winH, 1)};
+  s.pixelRatio =
+      winW > 0 ? static_cast<float>(s.framebufferWidth) / static_cast<float>(winW) : 1.0f;
+  return s;
+}
+
+float Window::contentScale() const {
+  float xscale = 1.0f, yscale = 1.0f;
+  glfwGetWindowContentScale(window_, &xscale, &yscale);
+  return std::max(1.0f, xscale);
+}
+
+bool Window::hovered() const {
+  return glfwGetWindowAttrib(window_, GLFW_HOVERED) != 0;
+}
+
+}  // namespace convexloc::viewer

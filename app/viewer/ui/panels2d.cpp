@@ -1,0 +1,157 @@
+// convexloc-viewer — the 2D panels.
+#include "ui/panels2d.hpp"
+
+#include <string>
+
+#include <imgui.h>
+
+#include "ui/method_panels.hpp"
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+constexpr GeneratorText kGenerator2D = {"##kind", "Generate", "N", 1, 16, 3, "seed", "next"};
+constexpr MethodPanelText kMethodText2D = {"stats", "##hist", "edges", "Compare all methods",
+                                           "compare"};
+constexpr SliderText kUniformSlider = {"auto", "##res", 1 << 20, "%d slabs"};
+constexpr SliderText kPolarSlider = {"auto", "##res", 1 << 16, "%d per octant"};
+
+// the statistics of the 2D locator
+std::vector<StatLine> statLines(const Scene2D& scene) {
+  const Stats2D& s = scene.stats();
+  std::vector<StatLine> rows = {{"edges", grouped(s.edges)}};
+  if (s.cells) {
+    rows.push_back({"cells", grouped(s.cells)});
+    rows.push_back({"edges per cell",
+                    "max " + std::to_string(s.maxPerCell) + ", mean " + approx(s.meanPerCell, 3)});
+    if (s.crowdedCells) rows.push_back({"crowded cells", grouped(s.crowdedCells) + " (bisection)"});
+  }
+  if (scene.cellsOmitted()) rows.push_back({"drawing", "too many cells to draw"});
+  rows.push_back({"memory", bytesText(s.bytes) + " (" + approx(s.bytesPerEdge, 3) + " B/edge)"});
+  rows.push_back({"build", approx(s.buildSeconds * 1e3, 3) + " ms"});
+  if (!scene.points().empty())
+    rows.push_back({"locate", nsText(scene.locateNsPerPoint()) + " ns/point"});
+  return rows;
+}
+
+// the cell under the cursor: its index, octant or y range, the edges it lists
+void hoveredCellText(const Scene2D& scene, const Cell2D& c) {
+  std::string what = "cell " + std::to_string(c.index);
+  if (c.octant >= 0) what += ", octant " + std::to_string(c.octant);
+  if (scene.method() == Method2D::Slab || scene.method() == Method2D::Uniform)
+    what += ", y in [" + approx(c.y0, 6) + ", " + approx(c.y1, 6) + ")";
+  ImGui::TextWrapped("%s", what.c_str());
+  std::string edges;
+  for (std::size_t i = 0; i < c.edges.size() && i < 24; ++i)
+    edges += (i ? ", " : "") + std::to_string(c.edges[i]);
+  if (c.edges.size() > 24) edges += ", ...";
+  ImGui::TextWrapped("lists %zu edge%s: %s", c.edges.size(), c.edges.size() == 1 ? "" : "s",
+                     edges.c_str());
+}
+
+void shapePanel2D(Model& model, UiState& ui) {
+  Scene2D& scene = model.scene2d;
+  const ConvexPolygon& poly = scene.polygon();
+  ImGui::TextWrapped("%s", scene.label().c_str());
+  ImGui::TextDisabled("%s vertices", grouped(poly.size()).c_str());
+  if (poly.droppedCount() > 0) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(%s dropped: repeated or collinear)",
+                        grouped(poly.droppedCount()).c_str());
+  }
+  if (poly.wasClockwise()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("(given clockwise)");
+  }
+  fileOpen(model, ui, "polygon .txt, polyhedron .off/.obj");
+  generatorsAndGallery<Scene2D, PolygonKind>(model, scene, kAllPolygonKinds, ui.generator2d,
+                                             kGenerator2D, false);
+  ImGui::TextDisabled("Drag a vertex handle to edit the polygon.");
+}
+
+void methodPanel2D(Model& model, UiState& ui) {
+  Scene2D& scene = model.scene2d;
+  methodChoice(scene);
+  if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
+  if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
+  methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);
+}
+
+void viewOptions2D(Model& model) {
+  View2DOptions& o = model.settings.view2d;
+  toggleGrid(
+      "structure|tinted cells|bounding box|octant lines|labels|vertex handles",
+      {&o.showStructure, &o.showTints, &o.showBox, &o.showOctants, &o.showLabels, &o.showHandles});
+}
+
+void pointsPanel2D(Model& model, UiState& ui) {
+  pointsPanel(model, ui, model.scene2d);
+}
+
+bool inspectable2D(Model& model) {
+  return model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value();
+}
+
+constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a point",
+                                    "F fit, H hide panels, 1-5 method, Space spray", nullptr};
+
+void legend2D(Model& model) {
+  const Scene2D& scene = model.scene2d;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const Stats2D& s = scene.stats();
+  legendHeading(model, scene, s.edges, "edges");
+  const Method2D m = scene.method();
+  const std::size_t base = baseEdgesPerCell(m);
+  if (s.cells && model.settings.view2d.showTints) {
+    swatchBox(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f));
+    ImGui::Text("cell listing %zu+ edges", base + 1);
+    if (s.crowdedCells) {
+      swatchBox(cellTint(pal, 0, base, true), withAlpha(pal.crowded, 0.8f));
+      ImGui::Text("crowded cell (bisection)");
+    }
+  }
+  if (m == Method2D::Polar && scene.centre()) {
+    if (model.settings.view2d.showOctants) {
+      swatchLine(pal.octant, true, 1.6f);
+      ImGui::Text("octant lines through x_T");
+    }
+    swatchLine(pal.structure, false, 1.0f);
+    ImGui::Text("polar slab boundaries");
+  }
+  if (model.settings.view2d.showBox) {
+    swatchLine(pal.box, true, 1.2f);
+    ImGui::Text("bounding box");
+  }
+}
+
+void inspector2D(Model& model, bool hints) {
+  Scene2D& scene = model.scene2d;
+  const Palette& pal = paletteFor(model.settings.theme);
+  if (scene.hoveredCell() >= 0) {
+    ImGui::TextColored(im(pal.hoverEdge), "Under the cursor");
+    hoveredCellText(scene, scene.cells()[static_cast<std::size_t>(scene.hoveredCell())]);
+  } else if (hints) {
+    ImGui::TextDisabled("Under the cursor");
+    ImGui::TextWrapped("%s", scene.cells().empty()
+                                 ? "this method has no cells: it tests the edges in turn"
+                                 : "hover over a cell to see the edges it lists");
+  }
+  placedPoint(
+      scene, pal, hints, "click in the scene to place a point and follow its query step by step",
+      [&](const Probe& probe) {
+        return describeTrace(probe.trace, probe.point, scene.polygon(),
+                             scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
+      });
+}
+
+}  // namespace
+
+const ScenePanels& panels2D() {
+  static constexpr ScenePanels kPanels = {shapePanel2D,  methodPanel2D, nullptr,       nullptr,
+                                          pointsPanel2D, true,          viewOptions2D, legend2D,
+                                          inspector2D,   inspectable2D, kHints2D};
+  return kPanels;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,75 @@
+// convexloc-viewer — what the panels keep between frames, and what they ask the frame
+// loop to do (it owns the window and the GL context).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "logic/scene2d.hpp"
+#include "logic/scene3d.hpp"
+
+namespace convexloc::viewer {
+
+// a generator's settings in the Shape panel
+struct GeneratorChoice {
+  int kind = 0;  // index into kAllPolygonKinds or kAllPolyhedronKinds
+  int n = 16;    // vertices (2D) or faces, about (3D)
+  std::uint64_t seed = 1;
+};
+
+// what the panels keep between frames, and what they ask main to do
+struct UiState {
+  // requests for main, which owns the window and the GL context
+  bool screenshotRequested = false;
+  std::string screenshotPath;
+  bool reloadShaders = false;
+  float pendingFontScale = 0.0f;  // > 0: rebuild the font at this scale
+  bool quit = false;
+
+  // widget state
+  char path[1024] = "";
+  GeneratorChoice generator2d{1, 16, 7};   // random, 16 vertices, seed 7
+  GeneratorChoice generator3d{4, 320, 1};  // icosahedron
+  int sprayCount = 3000;
+  bool sprayNear = false;
+  std::uint64_t spraySeed = 1;
+  float fontScaleEdit = 1.0f;
+  std::vector<CompareRow> compare2d;  // the last Compare all methods, per scene
+  std::vector<CompareRow3D> compare3d;
+  std::string assetDir;
+  std::vector<std::string> assets;  // shape files found in assetDir
+
+  // the toast: the last error, shown for a while
+  std::string toast;
+  double toastUntil = 0.0;
+  std::uint64_t toastSerial = 0;
+  std::string notice;  // a short confirmation (screenshot written, ...)
+  double noticeUntil = 0.0;
+
+  // timing, for the View panel
+  double frameMs = 0.0;
+  std::string glInfo;
+};
+
+class Model;
+
+// The panels of one scene, as the layout shows them: the left window's Shape, Method, an
+// optional panel of its own and Points; the View panel's options; the right window's
+// legend and inspector.
+struct ScenePanels {
+  void (*shape)(Model&, UiState&);
+  void (*method)(Model&, UiState&);
+  const char* ownTitle;  // the scene's own panel ("Slicing plane"), or nullptr
+  void (*own)(Model&);
+  void (*points)(Model&, UiState&);
+  bool pointsOpen;  // the Points panel starts open
+  void (*viewOptions)(Model&);
+  void (*legend)(Model&);
+  void (*inspector)(Model&, bool hints);
+  // a hovered or pinned cell, or a placed point, for the floating inspector
+  bool (*inspectable)(Model&);
+  const char* const* hints;  // the mouse and key hints under the panels, nullptr-terminated
+};
+
+}  // namespace convexloc::viewer
