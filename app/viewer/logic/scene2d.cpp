@@ -87,7 +87,7 @@ std::uint32_t Scene2D::effectiveResolution() const {
 
 std::optional<Vec2> Scene2D::centre() const {
   const auto* p = locator_->get<PolarLocator>();
-  if (!p || cells_.empty()) return std::nullopt;  // no cells: core found no centre inside
+  if (!p) return std::nullopt;
   return p->centre();
 }
 
