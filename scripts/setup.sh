@@ -79,3 +79,12 @@ echo "convexloc: configuring $dir/ ($what, warnings as errors: $werror)"
 cmake -S . -B "$dir" -G Ninja "${options[@]}" -DCONVEXLOC_WERROR=$werror >/dev/null
 echo "convexloc: building $dir/"
 cmake --build "$dir" --parallel "$(nproc)"
+
+# the Python module, where Debian's python3 imports it from (plain build only: the sanitized
+# and fuzz builds leave it out); `PYTHONPATH=build/python` uses it without installing
+if [[ $variant == plain && -d "$dir/python/convexloc" ]]; then
+  sudo=""
+  if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+  echo "convexloc: installing the Python module for /usr/bin/python3"
+  $sudo cmake --install "$dir" --component python >/dev/null
+fi

@@ -1,6 +1,7 @@
 // convexloc — Locator3D, any of the three 3D methods chosen at run time, and the surface
 // copy they all keep.
 #include "convexloc/locate3d.hpp"
+#include "detail/locator_variant.hpp"
 
 namespace convexloc {
 
@@ -13,6 +14,8 @@ std::size_t detail::SurfaceCopy::bytes() const noexcept {
 }
 
 namespace {
+
+// the locator of `method`
 std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> build(
     const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution) {
   switch (method) {
@@ -24,23 +27,10 @@ std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> build(
 }
 }  // namespace
 
-Locator3D::Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution)
-    : impl_(build(polyhedron, method, resolution)) {}
+template class detail::LocatorVariant<Method3D, Vec3, Trace3D, Stats3D, Cell3D, HalfspaceLocator,
+                                      WalkLocator, CubemapLocator>;
 
-Location Locator3D::locate(Vec3 p) const noexcept {
-  return std::visit([&](const auto& l) { return l.locate(p); }, impl_);
-}
-void Locator3D::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
-  std::visit([&](const auto& l) { l.locate(points, out); }, impl_);
-}
-Trace3D Locator3D::trace(Vec3 p) const {
-  return std::visit([&](const auto& l) { return l.trace(p); }, impl_);
-}
-Stats3D Locator3D::stats() const {
-  return std::visit([&](const auto& l) { return l.stats(); }, impl_);
-}
-std::vector<Cell3D> Locator3D::cells() const {
-  return std::visit([&](const auto& l) { return l.cells(); }, impl_);
-}
+Locator3D::Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution)
+    : LocatorVariant(build(polyhedron, method, resolution)) {}
 
 }  // namespace convexloc

@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "convexloc/detail/locator_variant.hpp"
 #include "convexloc/geometry.hpp"
 #include "convexloc/methods.hpp"
 #include "convexloc/polyhedron.hpp"
@@ -263,24 +264,13 @@ class CubemapLocator {
 
 // === Any of the three, chosen at run time
 
-class Locator3D {
+// locate, the batch, trace, stats, cells, method() and get<T>() come from LocatorVariant
+// (convexloc/detail/locator_variant.hpp)
+class Locator3D : public detail::LocatorVariant<Method3D, Vec3, Trace3D, Stats3D, Cell3D,
+                                                HalfspaceLocator, WalkLocator, CubemapLocator> {
  public:
   // builds `method`; `resolution` is the cubemap's G (0 chooses), ignored by the others
   Locator3D(const ConvexPolyhedron& polyhedron, Method3D method, std::uint32_t resolution = 0);
-  Method3D method() const noexcept { return static_cast<Method3D>(impl_.index()); }
-  Location locate(Vec3 p) const noexcept;
-  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
-  Trace3D trace(Vec3 p) const;
-  Stats3D stats() const;
-  std::vector<Cell3D> cells() const;
-  // the underlying locator, for method-specific introspection
-  template <class T>
-  const T* get() const noexcept {
-    return std::get_if<T>(&impl_);
-  }
-
- private:
-  std::variant<HalfspaceLocator, WalkLocator, CubemapLocator> impl_;
 };
 
 }  // namespace convexloc
