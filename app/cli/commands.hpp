@@ -98,6 +98,7 @@ struct InfoOptions {
   std::string shape;
   std::string method;  // empty: every method, in a table
   std::uint32_t resolution = 0;
+  bool intersect = false;  // report the line (plane) methods too, building the 3D dual
 };
 
 // `generate polygon`: a convex polygon of a kind

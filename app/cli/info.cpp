@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "convexloc/intersect2d.hpp"
+#include "convexloc/intersect3d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
 #include "convexloc/methods.hpp"
@@ -320,23 +322,137 @@ void reportTable(Output& out, const std::vector<Locator>& locators, std::uint32_
              D::kWords.example));
 }
 
+// === The line and plane methods (convexloc intersect)
+
+// one intersection method in numbers; `built` false for a dual left unbuilt
+struct DualRow {
+  std::string name, cost;
+  bool built = true;
+  std::size_t dualSize = 0, cells = 0, entries = 0, maxPerCell = 0, bytes = 0;
+  double bytesPer = 0.0, buildSeconds = 0.0;
+};
+
+// the words of one dimension's intersection section
+struct DualWords {
+  const char* title;    // "Line methods": what the section lists
+  const char* element;  // "edge": what the memory is counted per
+  const char* note;     // what 'dual size' and 'max' count
+};
+
+constexpr DualWords kLineWords{
+    "Line methods (convexloc intersect: misses, touches or crosses the polygon)", "edge",
+    "'dual size' counts the vertices of the dual polygon (the edges' unit normals and their\n"
+    "antipodes), 'max' the dual's edges (the polygon's vertices) one cell lists."};
+constexpr DualWords kPlaneWords{
+    "Plane methods (convexloc intersect: misses, touches or crosses the polyhedron)", "face",
+    "'dual size' counts the triangles of the dual polyhedron (the hull of the unit face\n"
+    "normals), 'max' the dual's triangles one cube-map cell lists."};
+
+// the dual's table, read from its locator's own statistics
+template <class Row, class Stats>
+void addTable(Row& row, const Stats& table) {
+  row.cells = table.cells;
+  row.entries = table.entries;
+  row.maxPerCell = table.maxPerCell;
+}
+
+// a line method's row
+DualRow rowOf(const LineIntersector& x) {
+  const LineStats s = x.stats();
+  DualRow row{std::string(toString(x.method())), std::string(costOf(x.method()))};
+  row.dualSize = s.dualVertices;
+  if (const PolarLocator* dual = x.dualLocator()) addTable(row, dual->stats());
+  row.bytes = s.bytes;
+  row.bytesPer = static_cast<double>(s.bytes) / static_cast<double>(s.vertices);
+  row.buildSeconds = s.buildSeconds;
+  return row;
+}
+
+// a plane method's row
+DualRow rowOf(const PlaneIntersector& x) {
+  const PlaneStats s = x.stats();
+  DualRow row{std::string(toString(x.method())), std::string(costOf(x.method()))};
+  row.dualSize = s.dualFaces;
+  if (const CubemapLocator* dual = x.dualLocator()) addTable(row, dual->stats());
+  row.bytes = s.bytes;
+  row.bytesPer = static_cast<double>(s.bytes) / static_cast<double>(s.faces);
+  row.buildSeconds = s.buildSeconds;
+  return row;
+}
+
+// every line method built on the polygon, one row each
+std::vector<DualRow> lineRows(const ConvexPolygon& polygon) {
+  std::vector<DualRow> rows;
+  for (LineMethod m : kAllLineMethods) rows.push_back(rowOf(LineIntersector(polygon, m)));
+  return rows;
+}
+
+// every plane method built on the polyhedron, one row each; the dual only when `buildDual`
+std::vector<DualRow> planeRows(const ConvexPolyhedron& polyhedron, bool buildDual) {
+  std::vector<DualRow> rows;
+  for (PlaneMethod m : kAllPlaneMethods) {
+    if (m != PlaneMethod::Dual || buildDual) {
+      rows.push_back(rowOf(PlaneIntersector(polyhedron, m)));
+    } else {
+      rows.push_back({std::string(toString(m)), std::string(costOf(m)), false});
+    }
+  }
+  return rows;
+}
+
+// one row of the intersection table
+void reportDualRow(Output& out, const DualRow& row) {
+  out.put(format("  %-10s %-9s", row.name.c_str(), row.cost.c_str()));
+  if (!row.built) {
+    out.put(" not built: add --intersect (this build takes seconds per 10^5 faces)\n");
+    return;
+  }
+  if (row.dualSize == 0) {
+    out.put(format(" %9s", "-"));
+  } else {
+    out.put(format(" %9zu", row.dualSize));
+  }
+  if (row.cells == 0) {
+    out.put(format(" %8s %9s %5s", "-", "-", "-"));
+  } else {
+    out.put(format(" %8zu %9zu %5zu", row.cells, row.entries, row.maxPerCell));
+  }
+  out.put(
+      format(" %12zu %11.1f %10s\n", row.bytes, row.bytesPer, duration(row.buildSeconds).c_str()));
+}
+
+// the intersection section: every line (plane) method, one row each
+void reportDualTable(Output& out, const std::vector<DualRow>& rows, const DualWords& words) {
+  out.put(format("\n%s\n", words.title));
+  const std::string perElement = std::string("bytes/") + words.element;
+  out.put(format("  %-10s %-9s %9s %8s %9s %5s %12s %11s %10s\n", "method", "query", "dual size",
+                 "cells", "entries", "max", "bytes", perElement.c_str(), "build"));
+  for (const DualRow& row : rows) reportDualRow(out, row);
+  out.put(std::string("\n") + words.note +
+          "\nEvery method decides exactly: the dual's table only proposes where its exact climb "
+          "starts.\n");
+}
+
 // === The command, for either dimension
 
 // Builds the locators `o` asks for on `shape` (`method` alone when --method was given, else
 // every one of `all`), then writes the report: the shape's section by `reportShapeTo`, then
 // the method in detail or the table.
-template <class Locator, class Shape, class Method, std::size_t N, class ShapeSection>
+template <class Locator, class Shape, class Method, std::size_t N, class ShapeSection,
+          class DualRows>
 void report(const InfoOptions& o, const Shape& shape, Method method, const Method (&all)[N],
-            ShapeSection&& reportShapeTo) {
+            ShapeSection&& reportShapeTo, DualRows&& dualRows, const DualWords& dualWords) {
   const bool one = !o.method.empty();
   std::vector<Locator> locators;
   locators.reserve(N);
+  std::vector<DualRow> rows;
   aboutFile(o.shape, [&] {
     if (one) {
       locators.emplace_back(shape, method, o.resolution);
     } else {
       for (Method m : all) locators.emplace_back(shape, m, o.resolution);
     }
+    if (o.intersect || !one) rows = dualRows();
   });
 
   Output out;
@@ -346,6 +462,7 @@ void report(const InfoOptions& o, const Shape& shape, Method method, const Metho
     reportMethod(out, locators.front(), shape, o.resolution);
   else
     reportTable(out, locators, o.resolution);
+  if (!rows.empty()) reportDualTable(out, rows, dualWords);
   out.finish();
 }
 
@@ -355,16 +472,19 @@ void info2D(const InfoOptions& o) {
   const Method2D method = method2DOrFail(o.method);
   std::vector<Vec2> input;
   const ConvexPolygon polygon = loadPolygon(o.shape, &input);
-  report<Locator2D>(o, polygon, method, kAllMethods2D,
-                    [&](Output& out) { reportShape(out, polygon, input); });
+  report<Locator2D>(
+      o, polygon, method, kAllMethods2D, [&](Output& out) { reportShape(out, polygon, input); },
+      [&] { return lineRows(polygon); }, kLineWords);
 }
 
 void info3D(const InfoOptions& o) {
   const Method3D method = method3DOrFail(o.method);
   std::size_t verticesRead = 0;
   const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead);
-  report<Locator3D>(o, polyhedron, method, kAllMethods3D,
-                    [&](Output& out) { reportShape(out, polyhedron, verticesRead); });
+  report<Locator3D>(
+      o, polyhedron, method, kAllMethods3D,
+      [&](Output& out) { reportShape(out, polyhedron, verticesRead); },
+      [&] { return planeRows(polyhedron, o.intersect); }, kPlaneWords);
 }
 
 }  // namespace convexloc::cli

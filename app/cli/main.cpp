@@ -193,7 +193,7 @@ Command addClassify(CLI::App& app) {
   return c.runs(byDimension(classify2D, classify3D));
 }
 
-// convexloc info SHAPE [--method] [--resolution]
+// convexloc info SHAPE [--method] [--resolution] [--intersect]
 Command addInfo(CLI::App& app) {
   const auto c = declare<InfoOptions>(
       app, "info", "Describe the shape and the subdivision each method builds on it");
@@ -205,6 +205,10 @@ Command addInfo(CLI::App& app) {
                     "Report one method in detail: " + methodHelp() +
                         ". Without it: a table of every method for the shape");
   addResolution(c.sub, c.options->resolution);
+  c.sub->add_flag("--intersect", c.options->intersect,
+                  "Report the line (polygon) or plane (polyhedron) methods of 'intersect' too, "
+                  "building the polyhedron's dual (seconds per 10^5 faces); a polygon's table "
+                  "shows them without it");
   c.sub->footer(kFormat);
   return c.runs(byDimension(info2D, info3D));
 }
