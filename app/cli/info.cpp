@@ -12,6 +12,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
@@ -348,34 +349,31 @@ constexpr DualWords kPlaneWords{
     "'dual size' counts the triangles of the dual polyhedron (the hull of the unit face\n"
     "normals), 'max' the dual's triangles one cube-map cell lists."};
 
-// the dual's table, read from its locator's own statistics
-template <class Row, class Stats>
-void addTable(Row& row, const Stats& table) {
-  row.cells = table.cells;
-  row.entries = table.entries;
-  row.maxPerCell = table.maxPerCell;
+// a line method's dual size (the dual polygon's vertices) and the polygon's edges
+std::pair<std::size_t, std::size_t> sizesOf(const LineStats& s) {
+  return {s.dualVertices, s.vertices};
 }
 
-// a line method's row
-DualRow rowOf(const LineIntersector& x) {
-  const LineStats s = x.stats();
-  DualRow row{std::string(toString(x.method())), std::string(costOf(x.method()))};
-  row.dualSize = s.dualVertices;
-  if (const PolarLocator* dual = x.dualLocator()) addTable(row, dual->stats());
-  row.bytes = s.bytes;
-  row.bytesPer = static_cast<double>(s.bytes) / static_cast<double>(s.vertices);
-  row.buildSeconds = s.buildSeconds;
-  return row;
+// a plane method's dual size (the dual polyhedron's triangles) and the polyhedron's faces
+std::pair<std::size_t, std::size_t> sizesOf(const PlaneStats& s) {
+  return {s.dualFaces, s.faces};
 }
 
-// a plane method's row
-DualRow rowOf(const PlaneIntersector& x) {
-  const PlaneStats s = x.stats();
+// one line (plane) method's row; the table's numbers from the dual's locator
+template <class Intersector>
+DualRow rowOf(const Intersector& x) {
+  const auto s = x.stats();
+  const auto [dualSize, elements] = sizesOf(s);
   DualRow row{std::string(toString(x.method())), std::string(costOf(x.method()))};
-  row.dualSize = s.dualFaces;
-  if (const CubemapLocator* dual = x.dualLocator()) addTable(row, dual->stats());
+  row.dualSize = dualSize;
+  if (const auto* dual = x.dualLocator()) {
+    const auto table = dual->stats();
+    row.cells = table.cells;
+    row.entries = table.entries;
+    row.maxPerCell = table.maxPerCell;
+  }
   row.bytes = s.bytes;
-  row.bytesPer = static_cast<double>(s.bytes) / static_cast<double>(s.faces);
+  row.bytesPer = static_cast<double>(s.bytes) / static_cast<double>(elements);
   row.buildSeconds = s.buildSeconds;
   return row;
 }
