@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "convexloc/geometry.hpp"
 #include "logic/camera3d.hpp"
@@ -32,6 +33,7 @@ struct Options {
   std::optional<std::size_t> cell;      // 3D: pin this cube-map cell
   bool solid = false;                   // --3d: the 3D scene
   std::optional<Vec2> hover;            // hover there (2D world coordinates)
+  std::optional<std::pair<Vec2, Vec2>> line;  // 2D: the Lines mode, with the line through these
   std::optional<Vec3> view;             // 2D: look at (x, y) showing a width w of the world
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
