@@ -97,6 +97,8 @@ DualInset makeDualInset(const Box2& bounds, Vec2 dualMiddle, double dualHalf) {
 void Lines2D::setEnabled(bool on) {
   if (on == enabled_) return;
   enabled_ = on;
+  if (!on) framed_.reset();
+  intersector_.reset();  // built afresh by the next sync
   ++version_;
 }
 
@@ -122,7 +124,11 @@ void Lines2D::rebuild(const ConvexPolygon& polygon) {
         std::max({1.0, b.hi.x - middle.x, middle.x - b.lo.x, b.hi.y - middle.y, middle.y - b.lo.y});
     half = kDualMargin * reach;
   }
-  inset_ = makeDualInset(polygon.bounds(), middle, half);
+  Box2 frame = polygon.bounds();
+  if (framed_)
+    frame = {{std::min(frame.lo.x, framed_->lo.x), std::min(frame.lo.y, framed_->lo.y)},
+             {std::max(frame.hi.x, framed_->hi.x), std::max(frame.hi.y, framed_->hi.y)}};
+  inset_ = makeDualInset(frame, middle, half);
   answer();
 }
 
@@ -136,6 +142,14 @@ bool Lines2D::setLine(Vec2 p1, Vec2 p2) {
 void Lines2D::clearLine() {
   asked_.reset();
   answer();
+}
+
+void Lines2D::frameLine() {
+  if (!asked_) return;
+  const auto [p1, p2] = *asked_;
+  framed_ = Box2{{std::min(p1.x, p2.x), std::min(p1.y, p2.y)},
+                 {std::max(p1.x, p2.x), std::max(p1.y, p2.y)}};
+  intersector_.reset();  // the inset moves: built afresh by the next sync
 }
 
 void Lines2D::answer() {

@@ -59,6 +59,9 @@ class Lines2D {
   // the line through p1 and p2 (kept across shape changes); false and ignored when p1 == p2
   bool setLine(Vec2 p1, Vec2 p2);
   void clearLine();
+  // grows the primal frame to hold the line's two points (a line given on the command line
+  // shows whole); the frame returns to the polygon's when the mode is turned off
+  void frameLine();
   const std::optional<LineProbe2D>& line() const { return line_; }
 
   // what core built: the intersector (null until synced while on) and its dual's cells
@@ -79,6 +82,7 @@ class Lines2D {
   void answer();
   bool enabled_ = false;
   std::optional<std::pair<Vec2, Vec2>> asked_;
+  std::optional<Box2> framed_;  // what the primal frame holds beside the polygon
   std::unique_ptr<LineIntersector> intersector_;
   std::vector<Cell2D> dualCells_;
   DualInset inset_;

@@ -200,6 +200,7 @@ void Model::apply2d(const Options& o, bool method3d) {
   if (o.line) {
     setLinesMode(true);
     lines2d.setLine(o.line->first, o.line->second);
+    lines2d.frameLine();
     lines2d.sync(scene2d);
   }
   if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
