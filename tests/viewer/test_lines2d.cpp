@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "convexloc/crossing.hpp"
+#include "logic/interaction.hpp"
 #include "logic/lines2d.hpp"
 #include "logic/model.hpp"
 #include "logic/options.hpp"
@@ -166,4 +167,70 @@ TEST(Lines2D, CommandLineTurnsTheModeOn) {
         std::vector<std::string_view>{"--line", "1", "2", "1", "2"},
         std::vector<std::string_view>{"--line", "1", "x", "3", "4"}})
     EXPECT_FALSE(cv::parseOptions(bad).error.empty());
+}
+
+TEST(Lines2D, ADragInTheSceneDrawsTheLineAndAClickKeepsIt) {
+  cv::Model m;
+  ASSERT_TRUE(m.scene2d.setShape(kSquare, "square"));
+  m.setLinesMode(true);
+  m.camera2d.setViewport({1000.0, 800.0});
+  m.fit({{0.0, 0.0}, {1000.0, 800.0}});
+  cv::Interaction ia;
+  const glm::dvec2 from{100.0, 400.0}, to{400.0, 380.0};
+  cv::PointerInput in;
+  in.pos = from;
+  in.down[0] = in.pressed[0] = true;
+  ia.update(in, m);
+  EXPECT_EQ(ia.gesture(), cv::Interaction::Gesture::DrawLine);
+  in.pressed[0] = false;
+  in.delta = to - from;
+  in.pos = to;
+  ia.update(in, m);
+  in.down[0] = false;
+  in.released[0] = true;
+  in.delta = {0.0, 0.0};
+  ia.update(in, m);
+  EXPECT_EQ(ia.gesture(), cv::Interaction::Gesture::None);
+  ASSERT_TRUE(m.lines2d.line());
+  const glm::dvec2 a = m.camera2d.toWorld(from), b = m.camera2d.toWorld(to);
+  EXPECT_EQ(m.lines2d.line()->p1, (Vec2{a.x, a.y}));
+  EXPECT_EQ(m.lines2d.line()->p2, (Vec2{b.x, b.y}));
+  EXPECT_EQ(m.lines2d.line()->hit,
+            m.lines2d.intersector()->intersect(m.lines2d.line()->p1, m.lines2d.line()->p2));
+  // a click (no drag) keeps the line, and places no point
+  cv::PointerInput click;
+  click.pos = {500.0, 500.0};
+  click.down[0] = click.pressed[0] = true;
+  ia.update(click, m);
+  click.down[0] = click.pressed[0] = false;
+  click.released[0] = true;
+  ia.update(click, m);
+  EXPECT_EQ(m.lines2d.line()->p1, (Vec2{a.x, a.y}));
+  EXPECT_FALSE(m.scene2d.probe());
+  // turned off, a drag pans again
+  m.setLinesMode(false);
+  in = {};
+  in.pos = from;
+  in.down[0] = in.pressed[0] = true;
+  ia.update(in, m);
+  EXPECT_EQ(ia.gesture(), cv::Interaction::Gesture::Pending);
+}
+
+TEST(Lines2D, FitHoldsBothFramesAndTheGivenLine) {
+  cv::Model m;
+  cv::Options o;
+  o.line = std::pair<Vec2, Vec2>{{-40.0, 0.0}, {40.0, 1.0}};
+  EXPECT_EQ(m.apply(o), "");
+  m.camera2d.setViewport({1000.0, 800.0});
+  m.fit({{0.0, 0.0}, {1000.0, 800.0}});
+  const cv::DualInset& in = m.lines2d.inset();
+  EXPECT_LE(in.primal.lo.x, -40.0);
+  for (const glm::dvec2 corner :
+       {glm::dvec2{in.primal.lo.x, in.primal.lo.y}, glm::dvec2{in.frame.hi.x, in.frame.hi.y}}) {
+    const glm::dvec2 px = m.camera2d.toScreen(corner);
+    EXPECT_GE(px.x, -0.5);
+    EXPECT_LE(px.x, 1000.5);
+    EXPECT_GE(px.y, -0.5);
+    EXPECT_LE(px.y, 800.5);
+  }
 }

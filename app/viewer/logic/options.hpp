@@ -20,21 +20,22 @@ struct Options {
   std::string shape;                  // a .txt polygon or an .off/.obj polyhedron
   std::optional<std::string> method;  // halfplane..polar (2D), halfspace|walk|cubemap (3D)
   std::optional<std::uint32_t> resolution;
-  std::optional<std::string> preset;          // a degenerate-gallery name
-  std::optional<std::string> generate;        // a core generator kind
-  std::optional<std::size_t> n;               // its size
-  std::optional<std::uint64_t> seed;          // its seed, and the spray's
-  std::optional<std::size_t> spray;           // how many points to spray
-  bool nearBoundary = false;                  // spray core's hard cases near the boundary
-  std::optional<std::string> show;            // all | inside | outside | boundary
-  std::optional<Vec2> probe;                  // place a point there (2D world coordinates)
-  std::optional<Vec3> probe3;                 // place a point there (3D)
-  std::optional<SlicePlane> slice;            // 3D: the slicing plane
-  std::optional<std::size_t> cell;            // 3D: pin this cube-map cell
-  bool solid = false;                         // --3d: the 3D scene
-  std::optional<Vec2> hover;                  // hover there (2D world coordinates)
-  std::optional<std::pair<Vec2, Vec2>> line;  // 2D: the Lines mode, with the line through these
-  std::optional<Vec3> view;                   // 2D: look at (x, y) showing a width w of the world
+  std::optional<std::string> preset;    // a degenerate-gallery name
+  std::optional<std::string> generate;  // a core generator kind
+  std::optional<std::size_t> n;         // its size
+  std::optional<std::uint64_t> seed;    // its seed, and the spray's
+  std::optional<std::size_t> spray;     // how many points to spray
+  bool nearBoundary = false;            // spray core's hard cases near the boundary
+  std::optional<std::string> show;      // all | inside | outside | boundary
+  std::optional<Vec2> probe;            // place a point there (2D world coordinates)
+  std::optional<Vec3> probe3;           // place a point there (3D)
+  std::optional<SlicePlane> slice;      // 3D: the slicing plane
+  std::optional<std::size_t> cell;      // 3D: pin this cube-map cell
+  bool solid = false;                   // --3d: the 3D scene
+  std::optional<Vec2> hover;            // hover there (2D world coordinates)
+  std::optional<Vec3> view;             // 2D: look at (x, y) showing a width w of the world
+  // 2D: the Lines mode (the dual problem), with the line through these two points
+  std::optional<std::pair<Vec2, Vec2>> line;
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
   bool hideUi = false;
