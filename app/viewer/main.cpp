@@ -173,6 +173,7 @@ int main(int argc, char** argv) {
       for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
     }
     if (options.animate && stats.frames() > 0) nudgeCamera(model);
+    model.lines2d.sync(model.scene2d);
     model.collectErrors();
     idle.note(cv::hadInput(dropped || ui.pendingFontScale > 0.0f));
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "logic/dual_view2d.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/structure3d.hpp"
 
@@ -37,9 +38,9 @@ void classColours(const Palette& pal, FrameParams& f) {
 
 void SceneView::sync(Model& model, Renderer& renderer) {
   const bool dimChanged = first_ || model.dim != dim_;
-  const bool restyle = dimChanged || theme_ != model.settings.theme ||
-                       !same(options2_, model.settings.view2d) ||
-                       !same(options3_, model.settings.view3d);
+  const bool restyle =
+      dimChanged || theme_ != model.settings.theme || !same(options2_, model.settings.view2d) ||
+      !same(options3_, model.settings.view3d) || linesShown_ != model.lines2d.enabled();
   if (dimChanged) {
     seen_ = {~0ull, ~0ull, ~0ull, ~0ull, ~0ull};
     mesh_.clear();
@@ -57,6 +58,7 @@ void SceneView::sync(Model& model, Renderer& renderer) {
   theme_ = model.settings.theme;
   options2_ = model.settings.view2d;
   options3_ = model.settings.view3d;
+  linesShown_ = model.lines2d.enabled();
   first_ = false;
 }
 
@@ -64,7 +66,13 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
   const Scene2D& scene = model.scene2d;
   const Versions& v = scene.versions();
   const Palette& pal = paletteFor(model.settings.theme);
-  const View2DOptions& opt = model.settings.view2d;
+  const Lines2D& lines = model.lines2d;
+  View2DOptions opt = model.settings.view2d;
+  if (lines.enabled()) {
+    // the Lines mode shows the dual's cells instead of the method's, and no handles
+    opt.showStructure = opt.showTints = opt.showOctants = opt.showHandles = opt.showBox = false;
+    opt.showCentre = false;
+  }
 
   bool rebase = false;
   if (v.shape != seen_.shape || scene_ != &scene) {
@@ -82,8 +90,13 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     renderer.upload(Layer::Structure, structure_, origin_);
     ++uploads_;
   }
-  syncOverlayAndPoints(scene, renderer, rebase, restyle,
-                       [&](DrawList& out) { buildOverlay2D(scene, pal, opt, out); });
+  const bool linesStale = lines.version() != linesSeen_;
+  linesSeen_ = lines.version();
+  syncOverlayAndPoints(scene, renderer, rebase, restyle, linesStale, [&](DrawList& out) {
+    if (!lines.enabled()) return buildOverlay2D(scene, pal, opt, out);
+    out.clear();
+    buildLines2D(lines, pal, opt.showLabels, out);
+  });
 }
 
 void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
@@ -123,15 +136,16 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     renderer.upload(Layer::Section, section_, origin_);
     ++uploads_;
   }
-  syncOverlayAndPoints(scene, renderer, reshape, restyle,
+  syncOverlayAndPoints(scene, renderer, reshape, restyle, false,
                        [&](DrawList& out) { buildOverlay3D(scene, pal, opt, out); });
 }
 
 template <class Scene, class BuildOverlay>
 void SceneView::syncOverlayAndPoints(const Scene& scene, Renderer& renderer, bool moved,
-                                     bool restyle, BuildOverlay buildOverlay) {
+                                     bool restyle, bool overlayStale, BuildOverlay buildOverlay) {
   const Versions& v = scene.versions();
-  if (moved || restyle || v.overlay != seen_.overlay || v.structure != seen_.structure) {
+  if (moved || restyle || overlayStale || v.overlay != seen_.overlay ||
+      v.structure != seen_.structure) {
     buildOverlay(overlay_);
     renderer.upload(Layer::Overlay, overlay_, origin_);
   }
@@ -148,7 +162,9 @@ FrameParams SceneView::frameParams(Model& model, glm::vec2 fbSize, float pixelRa
   FrameParams f;
   f.framebuffer = fbSize;
   f.pixelRatio = pixelRatio;
-  f.visibleMask = model.settings.visibleMask;
+  // the Lines mode hides the spray: the line and the dual are the subject
+  f.visibleMask =
+      model.dim == Dim::Two && model.lines2d.enabled() ? 0u : model.settings.visibleMask;
   classColours(pal, f);
   if (model.dim == Dim::Two) {
     const Camera2D& cam = model.camera2d;

@@ -52,7 +52,7 @@ class SceneView {
   // restyle or a change of theirs; then remembers what they were built from
   template <class Scene, class BuildOverlay>
   void syncOverlayAndPoints(const Scene& scene, Renderer& renderer, bool moved, bool restyle,
-                            BuildOverlay buildOverlay);
+                            bool overlayStale, BuildOverlay buildOverlay);
 
   glm::dvec3 origin_{0.0};
   DrawList structure_, overlay_, mesh_, section_;
@@ -64,7 +64,9 @@ class SceneView {
   View2DOptions options2_{};
   View3DOptions options3_{};
   unsigned farFaces_ = 0;
-  std::uint64_t uploads_ = 0;  // grows with every upload the base depends on
+  bool linesShown_ = false;          // the 2D Lines mode was on
+  std::uint64_t linesSeen_ = ~0ull;  // the Lines mode's version drawn
+  std::uint64_t uploads_ = 0;        // grows with every upload the base depends on
   BaseKey lastKey_;
   bool cached_ = false;          // the cache holds lastKey_'s picture
   bool partial_ = false;         // ... drawn with a subsample of the points

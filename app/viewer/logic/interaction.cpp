@@ -49,12 +49,16 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
   if (gesture_ == Gesture::None) {
     if (in.wheel != 0.0) cam.zoomAt(in.pos, std::pow(kWheelZoom, in.wheel));
     const auto v = scene.polygon().vertices();
-    const bool handles = model.settings.view2d.showHandles && v.size() <= kMaxHandles;
+    const bool lines = model.lines2d.enabled();
+    const bool handles = !lines && model.settings.view2d.showHandles && v.size() <= kMaxHandles;
     const std::ptrdiff_t grab =
         in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
     if (grab >= 0) {
       scene.beginDrag(static_cast<std::size_t>(grab));
       gesture_ = Gesture::DragVertex;
+    } else if (lines && in.pressed[0]) {
+      gesture_ = Gesture::DrawLine;
+      pressAt_ = in.pos;
     } else {
       startGesture(in);
     }
@@ -77,13 +81,24 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
         gesture_ = Gesture::None;
       }
       break;
+    case Gesture::DrawLine: drawLine(in, model); break;
     case Gesture::None:
     case Gesture::Orbit: break;
   }
-  if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
+  if (model.lines2d.enabled()) {
+    if (scene.hoverPoint()) scene.hover(std::nullopt);
+  } else if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
     scene.hover(toVec2(cam.toWorld(in.pos)));
   else if (gesture_ == Gesture::Pan && scene.hoverPoint())
     scene.hover(std::nullopt);
+}
+
+void Interaction::drawLine(const PointerInput& in, Model& model) {
+  // a press without a drag leaves the line as it was
+  if (glm::length(in.pos - pressAt_) > kClickSlop)
+    model.lines2d.setLine(toVec2(model.camera2d.toWorld(pressAt_)),
+                          toVec2(model.camera2d.toWorld(in.pos)));
+  if (!in.down[0]) gesture_ = Gesture::None;
 }
 
 void Interaction::click2d(const PointerInput& in, Model& model) {

@@ -34,7 +34,7 @@ class Interaction {
 
   void update(const PointerInput& in, Model& model);
 
-  enum class Gesture { None, Pending, Pan, Orbit, DragVertex };
+  enum class Gesture { None, Pending, Pan, Orbit, DragVertex, DrawLine };
   Gesture gesture() const { return gesture_; }
 
  private:
@@ -45,6 +45,8 @@ class Interaction {
   void update3d(const PointerInput& in, Model& model);
   void click2d(const PointerInput& in, Model& model);
   void click3d(const PointerInput& in, Model& model);
+  // the Lines mode: a left drag places the line from the press to the cursor
+  void drawLine(const PointerInput& in, Model& model);
   // ImGui has the mouse and no gesture of ours is under way: nothing moves
   bool ignored(const PointerInput& in) const;
   // a left press may become a click or a drag; the others pan

@@ -197,6 +197,12 @@ void Model::apply2d(const Options& o, bool method3d) {
   if (o.probe) scene2d.place(*o.probe);
   if (o.hover) scene2d.hover(*o.hover);
   if (o.view) pendingView = *o.view;
+  if (o.line) {
+    setLinesMode(true);
+    lines2d.setLine(o.line->first, o.line->second);
+    lines2d.frameLine();
+    lines2d.sync(scene2d);
+  }
   if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
 }
 
@@ -213,12 +219,19 @@ void Model::apply3d(const Options& o, bool method3d) {
       note("--cell " + std::to_string(*o.cell) + ": the scene has " +
            std::to_string(s3.cells().size()) + " cells");
   }
-  if (o.probe || o.hover) note("--probe X,Y and --hover are for a 2D scene");
+  if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
+}
+
+void Model::setLinesMode(bool on) {
+  lines2d.setEnabled(on);
+  lines2d.sync(scene2d);
+  requestFit();
 }
 
 void Model::fit(ScreenRect area) {
   if (dim == Dim::Two) {
-    camera2d.fit(scene2d.polygon().bounds(), area);
+    lines2d.sync(scene2d);
+    camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : scene2d.polygon().bounds(), area);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
       const double scale = area.size().x / pendingView->z;

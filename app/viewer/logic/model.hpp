@@ -12,6 +12,7 @@
 #include "logic/camera2d.hpp"
 #include "logic/camera3d.hpp"
 #include "logic/colour.hpp"
+#include "logic/lines2d.hpp"
 #include "logic/options.hpp"
 #include "logic/picking.hpp"
 #include "logic/scene2d.hpp"
@@ -48,6 +49,10 @@ class Model {
   bool hasScene3d() const { return scene3d_ != nullptr; }
   // shows the 2D or the 3D scene
   void show(Dim d);
+  // the 2D scene's Lines mode (the dual problem)
+  Lines2D lines2d;
+  // turns the Lines mode on or off (the camera is fitted again: the dual view sits beside)
+  void setLinesMode(bool on);
   Camera2D camera2d;
   Camera3D camera3d;
   Settings settings;

@@ -150,7 +150,7 @@ bool sprayOption(std::string_view a, ArgReader& in, Options& o) {
   return true;
 }
 
-// --probe, --hover, --view: places in the scene
+// --probe, --hover, --line, --view: places in the scene
 bool placeOption(std::string_view a, ArgReader& in, Options& o) {
   std::string_view v;
   Vec2 p;
@@ -166,6 +166,12 @@ bool placeOption(std::string_view a, ArgReader& in, Options& o) {
   } else if (a == "--hover") {
     if (!in.value(v) || !parsePoint(v, p)) return in.fail("--hover needs X,Y");
     o.hover = p;
+  } else if (a == "--line") {
+    double c[4] = {};
+    for (double& x : c)
+      if (!in.value(v) || !parseDouble(v, x)) return in.fail("--line needs X1 Y1 X2 Y2");
+    if (c[0] == c[2] && c[1] == c[3]) return in.fail("--line needs two different points");
+    o.line = std::pair<Vec2, Vec2>{{c[0], c[1]}, {c[2], c[3]}};
   } else if (a == "--view") {
     if (!in.value(v) || !parsePoint3(v, q) || !(q.z > 0.0))
       return in.fail("--view needs X,Y,WIDTH with WIDTH > 0");
@@ -298,6 +304,8 @@ Scene:
   --compare             time every method on the spray at start (see the Method panel)
   --probe X,Y[,Z]       place a point there and show its trace
   --hover X,Y           2D: hover there (shows the cell under it)
+  --line X1 Y1 X2 Y2    2D: the Lines mode (the dual problem) with the line through
+                        (X1, Y1) and (X2, Y2)
   --view X,Y,W          2D: look at (X, Y), the scene W wide (zoom in on tiny things)
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
   --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
@@ -318,8 +326,9 @@ Without hands:
 
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
-drag a vertex handle to edit the polygon. Keys: F fit, H hide panels, 1..5 method,
-Space new spray, Esc clear the point, F12 screenshot.
+drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
+Keys: F fit, H hide panels, 1..5 method, L lines mode, Space new spray, Esc clear the
+point, F12 screenshot.
 )";
 }
 

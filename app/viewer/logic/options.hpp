@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "convexloc/geometry.hpp"
 #include "logic/camera3d.hpp"
@@ -33,6 +34,8 @@ struct Options {
   bool solid = false;                   // --3d: the 3D scene
   std::optional<Vec2> hover;            // hover there (2D world coordinates)
   std::optional<Vec3> view;             // 2D: look at (x, y) showing a width w of the world
+  // 2D: the Lines mode (the dual problem), with the line through these two points
+  std::optional<std::pair<Vec2, Vec2>> line;
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
   bool hideUi = false;

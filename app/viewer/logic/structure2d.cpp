@@ -314,7 +314,7 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   // the polygon's edges, over the structure
   for (std::size_t e = 0; e < scene.polygon().size(); ++e)
     strokeEdge(scene.polygon(), e, pal.polygonEdge, 2.25f, out);
-  markCentre(scene, pal, opt, out);
+  if (opt.showCentre) markCentre(scene, pal, opt, out);
   vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
 }
 

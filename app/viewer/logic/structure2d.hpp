@@ -21,6 +21,7 @@ struct View2DOptions {
   bool showOctants = true;    // polar: the eight octant lines through the centre
   bool showLabels = true;     // vertex, octant and edge numbers where they fit
   bool showHandles = true;    // vertex handles (drag to edit)
+  bool showCentre = true;     // the method's centre x_T (off in the Lines mode)
 };
 
 // limits above which the drawing thins out (the scene stays exact, only less is drawn)

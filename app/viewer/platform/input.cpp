@@ -28,7 +28,7 @@ struct KeyBinding {
 constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
     {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
-    {GLFW_KEY_SPACE, ActionKind::NewSpray},
+    {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
 };
 // keys 1..5 choose a method
 constexpr int kMethodKeys = 5;

@@ -230,6 +230,9 @@ void perform(const Action& action, Model& model, UiState& ui) {
   switch (action.kind) {
     case ActionKind::Screenshot: ui.screenshotRequested = true; break;
     case ActionKind::Fit: model.requestFit(); break;
+    case ActionKind::ToggleLines:
+      if (model.dim == Dim::Two) model.setLinesMode(!model.lines2d.enabled());
+      break;
     case ActionKind::ToggleUi:
       model.settings.showUi = !model.settings.showUi;
       model.requestFit();  // the scene's area changed
@@ -240,6 +243,7 @@ void perform(const Action& action, Model& model, UiState& ui) {
     case ActionKind::ClearPoint:
       if (model.dim == Dim::Two) {
         model.scene2d.clearProbe();
+        model.lines2d.clearLine();
       } else {
         model.scene3d().clearProbe();
         model.scene3d().pin(-1);

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "logic/lines2d.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -70,8 +71,31 @@ void shapePanel2D(Model& model, UiState& ui) {
   ImGui::TextDisabled("Drag a vertex handle to edit the polygon.");
 }
 
+// the Lines mode's switch: the dual problem, line against polygon
+void linesSwitch(Model& model) {
+  bool on = model.lines2d.enabled();
+  if (ImGui::Checkbox("Lines: the dual problem (L)", &on)) model.setLinesMode(on);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Drag in the scene to place a line; core's dual method answers it, and the\n"
+        "dual polygon P* with its polar slabs shows beside the polygon");
+}
+
 void methodPanel2D(Model& model, UiState& ui) {
   Scene2D& scene = model.scene2d;
+  linesSwitch(model);
+  if (model.lines2d.enabled()) {
+    if (const LineIntersector* li = model.lines2d.intersector()) {
+      const LineStats s = li->stats();
+      const std::string text = "the dual P*: " + grouped(s.dualVertices) + " vertices, " +
+                               grouped(s.cells) + " polar cells, at most " +
+                               std::to_string(s.maxPerCell) + " edges per cell";
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+      ImGui::TextWrapped("%s", text.c_str());
+      ImGui::PopStyleColor();
+    }
+    return;
+  }
   methodChoice(scene);
   if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
   if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
@@ -90,13 +114,34 @@ void pointsPanel2D(Model& model, UiState& ui) {
 }
 
 bool inspectable2D(Model& model) {
+  if (model.lines2d.enabled()) return model.lines2d.line().has_value();
   return model.scene2d.hoveredCell() >= 0 || model.scene2d.probe().has_value();
 }
 
 constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a point",
-                                    "F fit, H hide panels, 1-5 method, Space spray", nullptr};
+                                    "F fit, H hide panels, 1-5 method, Space spray",
+                                    "L lines mode: drag to place a line", nullptr};
+
+// the Lines mode's legend: what the marks in both views are
+void legendLines(Model& model) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  ImGui::Text("Lines: the dual problem");
+  swatchLine(pal.text, false, 1.5f);
+  ImGui::Text("the line through p1, p2");
+  swatchLine(pal.inside, false, 4.0f);
+  ImGui::Text("segment p1-p2 clipped");
+  swatchBox(pal.boundary, pal.boundary);
+  ImGui::Text("entry and exit");
+  swatchBox(pal.positive, pal.negative);
+  ImGui::Text("extreme vertices (sign of f)");
+  swatchBox(withAlpha(pal.hoverEdge, 0.28f), pal.hoverEdge);
+  ImGui::Text("b's dual cell, its proposals");
+  swatchLine(pal.structure, false, 1.0f);
+  ImGui::Text("polar slabs of P*");
+}
 
 void legend2D(Model& model) {
+  if (model.lines2d.enabled()) return legendLines(model);
   const Scene2D& scene = model.scene2d;
   const Palette& pal = paletteFor(model.settings.theme);
   const Stats2D& s = scene.stats();
@@ -125,7 +170,29 @@ void legend2D(Model& model) {
   }
 }
 
+// the line's answer and the steps core took
+void lineInspector(Model& model, bool hints) {
+  const Lines2D& lines = model.lines2d;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const auto& line = lines.line();
+  if (!line) {
+    if (hints) {
+      ImGui::TextDisabled("Line");
+      ImGui::TextWrapped("drag in the scene: press at one point, release at another");
+    }
+    return;
+  }
+  const Rgba colour = line->hit.crossing == Crossing::Crosses   ? pal.inside
+                      : line->hit.crossing == Crossing::Touches ? pal.boundary
+                                                                : pal.outside;
+  ImGui::TextColored(im(colour), "Line: %s", std::string(toString(line->hit.crossing)).c_str());
+  traceLines(describeLine(*line, lines.dualVertices(), lines.intersector()->dualLocator()), pal,
+             colour);
+  if (ImGui::SmallButton("Clear (Esc)")) model.lines2d.clearLine();
+}
+
 void inspector2D(Model& model, bool hints) {
+  if (model.lines2d.enabled()) return lineInspector(model, hints);
   Scene2D& scene = model.scene2d;
   const Palette& pal = paletteFor(model.settings.theme);
   if (scene.hoveredCell() >= 0) {

@@ -127,6 +127,9 @@ class LineIntersector {
   // dual: the dual polygon (unit normals of the edges and their antipodes) and its polar
   // locator, whose cells are the ones trace() names; null for the other methods
   const PolarLocator* dualLocator() const noexcept;
+  // dual: the dual polygon's vertices, counter-clockwise (the polygon dualLocator() was built
+  // on); empty for the other methods
+  std::span<const Vec2> dualVertices() const noexcept;
 
  private:
   // the vertices where f is largest and smallest, and their exact signs; records in `trace`

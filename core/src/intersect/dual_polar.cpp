@@ -136,6 +136,7 @@ DualPolar2D::DualPolar2D(std::span<const Vec2> ring) {
   if (hull.size() < 3) return;  // cannot happen for a polygon; propose() then says no
   const ConvexPolygon dual(hull);
   dualVertices_ = dual.size();
+  vertices_.assign(dual.vertices().begin(), dual.vertices().end());
   const std::vector<ExtremePair> labels = labelEdges(dual.vertices(), ring);
   polar_.emplace(dual);
   const std::optional<Vec2> centre = polar_->centre();

@@ -29,11 +29,14 @@ class DualPolar2D {
   // the polar locator of the dual polygon
   const PolarLocator& locator() const noexcept { return *polar_; }
   std::size_t dualVertices() const noexcept { return dualVertices_; }
+  // the dual polygon's vertices, counter-clockwise
+  std::span<const Vec2> vertices() const noexcept { return vertices_; }
   std::size_t maxPerCell() const noexcept { return maxPerCell_; }
   std::size_t bytes() const noexcept;
 
  private:
   std::optional<PolarLocator> polar_;
+  std::vector<Vec2> vertices_;
   std::vector<ExtremePair> byCell_;  // per polar cell: the labels of the middle edge it lists
   Vec2 centre_{};
   std::size_t dualVertices_ = 0;

@@ -145,4 +145,9 @@ const PolarLocator* LineIntersector::dualLocator() const noexcept {
   return dual_ ? &dual_->locator() : nullptr;
 }
 
+std::span<const Vec2> LineIntersector::dualVertices() const noexcept {
+  if (!dual_) return {};
+  return dual_->vertices();
+}
+
 }  // namespace convexloc
