@@ -26,8 +26,9 @@ class DualPolar2D {
   // The proposal for the line p1 -> p2 (f = (p2 - p1) x (x - p1)) and the polar cell it came
   // from; false when the direction has no cell (the caller then searches without one).
   bool propose(Vec2 p1, Vec2 p2, ExtremePair& out, std::int64_t& cell) const noexcept;
-  // the polar locator of the dual polygon
-  const PolarLocator& locator() const noexcept { return *polar_; }
+  // the polar locator of the dual polygon; null when the dual has no centre (never for the
+  // centrally symmetric dual built here, but then every query searches)
+  const PolarLocator* locator() const noexcept { return polar_ ? &*polar_ : nullptr; }
   std::size_t dualVertices() const noexcept { return dualVertices_; }
   // the dual polygon's vertices, counter-clockwise
   std::span<const Vec2> vertices() const noexcept { return vertices_; }

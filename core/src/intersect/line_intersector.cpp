@@ -134,7 +134,7 @@ LineStats LineIntersector::stats() const {
   s.buildSeconds = buildSeconds_;
   if (dual_) {
     s.dualVertices = dual_->dualVertices();
-    s.cells = dual_->locator().cellCount();
+    s.cells = dual_->locator() ? dual_->locator()->cellCount() : 0;
     s.maxPerCell = dual_->maxPerCell();
     s.bytes += dual_->bytes();
   }
@@ -142,7 +142,7 @@ LineStats LineIntersector::stats() const {
 }
 
 const PolarLocator* LineIntersector::dualLocator() const noexcept {
-  return dual_ ? &dual_->locator() : nullptr;
+  return dual_ ? dual_->locator() : nullptr;
 }
 
 std::span<const Vec2> LineIntersector::dualVertices() const noexcept {
