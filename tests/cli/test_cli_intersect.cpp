@@ -2,63 +2,38 @@
 // standard input, the file format's rules, and every way a LINES file or the usage can be
 // wrong (exit 1 with FILE:LINE, or 2 with the usage; nothing on stdout either way).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "cli_run.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
+using cli_test::q;
+using Outcome = cli_test::Result;
 
-const std::string kBin = CONVEXLOC_BIN;
-
-// what one run of the tool gave
-struct Outcome {
-  int code = -1;
-  std::string out, err;
-};
-
-class CliIntersect : public ::testing::Test {
+// The intersect tests: a unit square and a cube in the scratch directory, which is where the
+// tool runs, so that the tests name their files plainly.
+class CliIntersect : public cli_test::Cli {
  protected:
   void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "convexloc-intersect-XXXXXX").string();
-    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    Cli::SetUp();
     write("square.txt", "0 0\n1 0\n1 1\n0 1\n");
     write("cube.off",
           "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
           "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n");
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
   // writes a scratch file, returns its path
   std::string write(const std::string& name, const std::string& text) const {
-    const std::string path = (fs::path(dir_) / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-  std::string read(const std::string& name) const {
-    std::ifstream in(fs::path(dir_) / name, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    std::ofstream(scratch(name), std::ios::binary) << text;
+    return scratch(name);
   }
   // runs `convexloc intersect ARGS` in the scratch directory, with `input` on stdin
   Outcome run(const std::string& args, const std::string& input = "") const {
     write("stdin", input);
-    const std::string cmd =
-        "cd '" + dir_ + "' && '" + kBin + "' intersect " + args + " <stdin >stdout 2>stderr";
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read("stdout"), read("stderr")};
+    return Cli::run("intersect " + args, "cd " + q(dir_) + " && cat stdin");
   }
-  std::string dir_;
 };
 
 TEST_F(CliIntersect, LinesEveryMethod) {
