@@ -27,6 +27,7 @@
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/text_reader.hpp"
 #include "fuzz_support.hpp"
+#include "reference_lines2d.hpp"
 
 namespace {
 
@@ -35,73 +36,8 @@ using convexloc::BoundaryHit;
 using convexloc::Crossing;
 using convexloc::LineHit;
 using convexloc::Segment2D;
-
-// the hit a line must report, from every vertex's exact side (see LineHit)
-LineHit referenceHit(const std::vector<Vec2>& v, Vec2 p1, Vec2 p2) {
-  const std::size_t n = v.size();
-  std::vector<int> s(n);
-  bool above = false, below = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    s[i] = exactOrient(p1, p2, v[i]);
-    above |= s[i] > 0;
-    below |= s[i] < 0;
-  }
-  auto at = [](std::size_t i, bool vertex) { return BoundaryHit{std::uint32_t(i), vertex}; };
-  LineHit hit;
-  if (above && below) {
-    hit.crossing = Crossing::Crosses;
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t j = (i + 1) % n;
-      if (s[i] < 0 && s[j] >= 0) hit.exit = s[j] == 0 ? at(j, true) : at(i, false);
-      if (s[i] > 0 && s[j] <= 0) hit.entry = s[j] == 0 ? at(j, true) : at(i, false);
-    }
-    return hit;
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (s[i] != 0) continue;
-    const std::size_t j = (i + 1) % n;
-    if (s[j] == 0) return {Crossing::Touches, at(above ? i : j, true), at(above ? j : i, true)};
-    if (s[(i + n - 1) % n] != 0) return {Crossing::Touches, at(i, true), at(i, true)};
-  }
-  return hit;
-}
-
-// the double nearest to q, ties to even
-double nearest(const mpq_class& q) {
-  const mpq_class a = abs(q);
-  std::uint64_t lo = 0, hi = 0x7ff0000000000000ULL;
-  while (hi - lo > 1) {
-    const std::uint64_t mid = lo + (hi - lo) / 2;
-    (mpq_class(std::bit_cast<double>(mid)) <= a ? lo : hi) = mid;
-  }
-  const mpq_class dl = a - std::bit_cast<double>(lo), dh = std::bit_cast<double>(hi) - a;
-  const double r = std::bit_cast<double>(dl < dh || (dl == dh && (lo & 1) == 0) ? lo : hi);
-  return sgn(q) < 0 ? -r : r;
-}
-
-// the exact Cyrus-Beck clip of the segment, its ends rounded to nearest
-std::optional<Segment2D> referenceClip(const std::vector<Vec2>& v, Vec2 s1, Vec2 s2) {
-  const mpq_class dx = mpq_class(s2.x) - s1.x, dy = mpq_class(s2.y) - s1.y;
-  mpq_class lo = 0, hi = 1;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const Vec2 a = v[i], b = v[(i + 1) % v.size()];
-    const mpq_class ex = mpq_class(b.x) - a.x, ey = mpq_class(b.y) - a.y;
-    const mpq_class g0 = ex * (mpq_class(s1.y) - a.y) - ey * (mpq_class(s1.x) - a.x);
-    const mpq_class g1 = ex * dy - ey * dx;
-    if (sgn(g1) == 0) {
-      if (sgn(g0) < 0) return std::nullopt;
-    } else if (sgn(g1) > 0) {
-      lo = std::max(lo, mpq_class(-g0 / g1));
-    } else {
-      hi = std::min(hi, mpq_class(-g0 / g1));
-    }
-  }
-  if (lo > hi) return std::nullopt;
-  auto at = [&](const mpq_class& t) {
-    return t == 0 ? s1 : (t == 1 ? s2 : Vec2{nearest(s1.x + t * dx), nearest(s1.y + t * dy)});
-  };
-  return Segment2D{at(lo), at(hi)};
-}
+using ref::referenceClip;
+using ref::referenceHit;
 
 void intersect2D(ByteSource& src, Encoding encoding) {
   const std::size_t count = 3 + src.byte() % 22;
