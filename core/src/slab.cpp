@@ -47,8 +47,7 @@ Location SlabLocator::run(Vec2 p, Sink& sink) const noexcept {
     return Location::Outside;
   }
   const std::size_t slabs = vertexYs_.size() - 1;
-  std::size_t s = static_cast<std::size_t>(
-      std::upper_bound(vertexYs_.begin(), vertexYs_.end(), p.y) - vertexYs_.begin());
+  std::size_t s = sink.upperBound(vertexYs_, p.y);  // std::upper_bound, probes traced
   s = std::min(s == 0 ? 0 : s - 1, slabs - 1);
   sink.cell(static_cast<std::int64_t>(s), -1);
   const std::uint32_t* pair = activeEdges_.data() + 2 * s;

@@ -133,6 +133,7 @@ Location UniformLocator::run(Vec2 p, Sink& sink) const noexcept {
     return Location::Outside;
   }
   const std::uint32_t s = slabOf(p.y);
+  sink.uniformIndex(p.y, box_.lo.y, slabScale_, slabCount_);
   sink.cell(s, -1);
   const std::uint32_t* first = entries_.data() + offsets_[s];
   const std::uint32_t* last = entries_.data() + offsets_[s + 1];

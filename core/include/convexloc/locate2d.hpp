@@ -42,6 +42,36 @@ struct RayTest {
   int sign = 0;
 };
 
+// one probe of the slab method's binary search: the vertex y at rank `rank` (ascending,
+// distinct) against the point's y; `above`: p.y >= y, the search goes on above it
+struct SlabProbe {
+  std::uint32_t rank = 0;
+  double y = 0.0;
+  bool above = false;
+};
+
+// the uniform method's index, eq. (4): slab = floor((y - yMin) / height), computed as
+// (y - yMin) * slabs / (box height) and clamped to the last slab
+struct UniformIndex {
+  double yMin = 0.0;        // the bounding box's bottom
+  double height = 0.0;      // one slab's height, (box height) / slabs
+  double value = 0.0;       // (y - yMin) * slabs / (box height), before the floor
+  std::uint32_t slabs = 0;  // the slab count
+};
+
+// the polar index: the octant from the signs of dx, dy and |dy| > |dx|, then the slab
+// k = floor(ratio * q) with ratio = min(|dx|, |dy|) / max(|dx|, |dy|), and the cell
+// base + step * k of that octant
+struct PolarIndexTrace {
+  Vec2 direction{};         // p - centre
+  double ratio = 0.0;       // min / max of |dx|, |dy|
+  bool steep = false;       // |dy| > |dx|: the ratio is |dx| / |dy|, else |dy| / |dx|
+  std::uint32_t slab = 0;   // k, 0 .. q - 1
+  std::uint32_t slabs = 0;  // q, the slabs per octant
+  std::int64_t base = 0;    // the octant's cell for k = 0
+  std::int64_t step = 0;    // +1 or -1: the cell is base + step * k
+};
+
 // What one query did, step by step.
 struct Trace2D {
   Method2D method = Method2D::Halfplane;
@@ -58,6 +88,11 @@ struct Trace2D {
   Vec2 apex{};                  // wedge: vertex 0; polar: the centre (vertex 0 on the fan)
   std::vector<RayTest> rays;    // bisection steps (wedge, crowded polar cells)
   std::vector<EdgeTest> edges;  // edges tested, in order
+  // the numbers of each step, for teaching
+  bool radiusFilter = true;       // polar: the radius filter ran (TraceOptions::radii)
+  std::vector<SlabProbe> probes;  // slab: the binary search's probes, in order
+  UniformIndex uniform;           // uniform: eq. (4) with its numbers (slabs 0 when unused)
+  PolarIndexTrace polar;          // polar: the index's numbers (slabs 0 when no cell)
 };
 
 // Size and shape of a subdivision. Methods without cells report zero cells.
@@ -222,7 +257,9 @@ class PolarLocator {
   // out[i] = locate(points[i]) over the shorter of the two spans; allocates nothing
   void locate(std::span<const Vec2> points, std::span<Location> out) const noexcept;
   // the steps locate(p) takes, and its answer
-  Trace2D trace(Vec2 p) const;
+  Trace2D trace(Vec2 p) const { return trace(p, TraceOptions{}); }
+  // the same with `options`: without the radii, the cell's edges decide (the paper's query)
+  Trace2D trace(Vec2 p, TraceOptions options) const;
   // the cells and the edges they list
   Stats2D stats() const;
   // every cell, counter-clockwise from +x, clipped to box(); none without a centre

@@ -64,6 +64,11 @@ struct Trace3D {
   std::vector<std::uint32_t> path;  // walk: the faces visited, in order
   std::vector<WalkTest> steps;      // walk: every edge test
   std::vector<FaceTest> faces;      // plane tests, in order
+  bool radiusFilter = true;         // cubemap: the radius filter ran (TraceOptions::radii)
+  Vec3 direction{};                 // cubemap: p - centre, whose largest |coordinate| picks
+                                    // the cube face and whose quotients are s and t
+  std::uint32_t cellsPerSide = 0;   // cubemap: cells per side of the cube face at `level`;
+                                    // cellI = floor((s + 1) / 2 * cellsPerSide), clamped
 };
 
 // Size and shape of a subdivision. Methods without cells report zero cells.
@@ -192,7 +197,9 @@ class CubemapLocator {
   // CPU has it); the same answers
   void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
   // the cube face and cell, the radii, the plane tests or the walk
-  Trace3D trace(Vec3 p) const;
+  Trace3D trace(Vec3 p) const { return trace(p, TraceOptions{}); }
+  // the same with `options`: without the radii, the cell's faces decide (the paper's query)
+  Trace3D trace(Vec3 p, TraceOptions options) const;
   // cells, nodes, entries per cell, levels, memory and build time
   Stats3D stats() const;
   // every leaf cell, cube face by cube face

@@ -42,6 +42,14 @@ inline std::string_view toString(Method2D m) noexcept { return methodInfo(m).nam
 // "halfspace", "walk", "cubemap"
 inline std::string_view toString(Method3D m) noexcept { return methodInfo(m).name; }
 
+// How trace() runs a query. The radius filter is convexloc's own shortcut (a cell's two
+// radii decide most points before any predicate); without it polar and cubemap queries run
+// exactly as the paper describes, the cell's edges (faces) deciding. Either way the answer is
+// locate(p)'s.
+struct TraceOptions {
+  bool radii = true;  // polar, cubemap: let the cell's radii decide first
+};
+
 // the method with that name, if any
 std::optional<Method2D> parseMethod2D(std::string_view name) noexcept;
 std::optional<Method3D> parseMethod3D(std::string_view name) noexcept;

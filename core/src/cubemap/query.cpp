@@ -36,8 +36,14 @@ std::span<const std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const noexcept 
   return {entries_.data() + leaf.first, leaf.count};
 }
 
-Trace3D CubemapLocator::trace(Vec3 p) const {
-  return detail::traced(Method3D::Cubemap, centre(), [&](auto& sink) { return run(p, sink); });
+Trace3D CubemapLocator::trace(Vec3 p, TraceOptions options) const {
+  Trace3D t = detail::traced(
+      Method3D::Cubemap, centre(), [&](auto& sink) { return run(p, sink); }, options);
+  if (t.cubeFace >= 0) {
+    t.direction = {p.x - centre_.x, p.y - centre_.y, p.z - centre_.z};
+    t.cellsPerSide = resolution_ << t.level;
+  }
+  return t;
 }
 
 }  // namespace convexloc

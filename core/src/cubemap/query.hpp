@@ -41,9 +41,11 @@ Location CubemapLocator::run(Vec3 p, Sink& sink) const noexcept {
 
 template <class Sink>
 Location CubemapLocator::fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sink) const noexcept {
-  const bool decided = detail::radiiDecide(d2, leaf.in2, leaf.out2);
-  sink.radius(d2, leaf.in2, leaf.out2, decided);
-  if (decided) return detail::insideOrOutside(d2 > static_cast<double>(leaf.out2));
+  if (sink.radii()) {  // always, but in a trace asked without the radius filter
+    const bool decided = detail::radiiDecide(d2, leaf.in2, leaf.out2);
+    sink.radius(d2, leaf.in2, leaf.out2, decided);
+    if (decided) return detail::insideOrOutside(d2 > static_cast<double>(leaf.out2));
+  }
   if constexpr (std::is_same_v<Sink, detail::NoSink3D>) {
     // Untraced, a leaf that is not crowded: every face's filter, then the answer without a
     // branch on it (inside and outside come at random). A face surely beyond p's side

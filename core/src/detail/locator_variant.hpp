@@ -28,6 +28,18 @@ T LocatorVariant<M, P, T, S, C, L...>::trace(P p) const {
 }
 
 template <class M, class P, class T, class S, class C, class... L>
+T LocatorVariant<M, P, T, S, C, L...>::trace(P p, TraceOptions options) const {
+  return std::visit(
+      [&](const auto& l) {
+        if constexpr (requires { l.trace(p, options); })
+          return l.trace(p, options);
+        else
+          return l.trace(p);
+      },
+      impl_);
+}
+
+template <class M, class P, class T, class S, class C, class... L>
 S LocatorVariant<M, P, T, S, C, L...>::stats() const {
   return std::visit([&](const auto& l) { return l.stats(); }, impl_);
 }

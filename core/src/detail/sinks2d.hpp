@@ -5,7 +5,9 @@
 // compile away, so locate() and the batches pay nothing for trace().
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -27,6 +29,13 @@ struct NoSink2D {
   void atCentre() {}
   void apex(Vec2) {}
   void radius(double, float, float, bool) {}
+  void uniformIndex(double, double, double, std::uint32_t) {}
+  // the radius filter runs
+  static constexpr bool radii() { return true; }
+  // the first of the ascending `ys` above y (std::upper_bound)
+  static std::size_t upperBound(std::span<const double> ys, double y) {
+    return static_cast<std::size_t>(std::upper_bound(ys.begin(), ys.end(), y) - ys.begin());
+  }
 };
 
 // records every step into a Trace2D
@@ -47,6 +56,24 @@ struct TraceSink2D {
     t.innerRadius = std::sqrt(static_cast<double>(in2));
     t.outerRadius = std::sqrt(static_cast<double>(out2));
     t.byRadius = decided;
+  }
+  // eq. (4)'s numbers: slab = floor((y - yMin) * scale), scale = slabs / (box height)
+  void uniformIndex(double y, double yMin, double scale, std::uint32_t slabs) {
+    t.uniform = {yMin, 1.0 / scale, (y - yMin) * scale, slabs};
+  }
+  // the radius filter runs unless the trace was asked without it
+  bool radii() const { return t.radiusFilter; }
+  // std::upper_bound's bisection (half the range each probe), each probe recorded
+  std::size_t upperBound(std::span<const double> ys, double y) {
+    std::size_t first = 0, count = ys.size();
+    while (count > 0) {
+      const std::size_t half = count / 2, mid = first + half;
+      const bool above = !(y < ys[mid]);
+      t.probes.push_back({static_cast<std::uint32_t>(mid), ys[mid], above});
+      first = above ? mid + 1 : first;
+      count = above ? count - half - 1 : half;
+    }
+    return first;
   }
 };
 

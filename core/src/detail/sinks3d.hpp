@@ -28,6 +28,8 @@ struct NoSink3D {
   void nonFinite() {}
   void atCentre() {}
   void radius(double, float, float, bool) {}
+  // the radius filter runs
+  static constexpr bool radii() { return true; }
 };
 
 // records every step into a Trace3D
@@ -54,14 +56,18 @@ struct TraceSink3D {
   void fallback() { t.fallback = true; }
   void nonFinite() { t.nonFinite = true; }
   void atCentre() { t.atCentre = true; }
+  // the radius filter runs unless the trace was asked without it
+  bool radii() const { return t.radiusFilter; }
 };
 
 // the trace of one query: `query(sink)` runs it into a TraceSink3D, its answer the result
 template <class Query>
-Trace3D traced(Method3D method, std::optional<Vec3> centre, Query&& query) {
+Trace3D traced(Method3D method, std::optional<Vec3> centre, Query&& query,
+               TraceOptions options = {}) {
   Trace3D t;
   t.method = method;
   t.centre = centre;
+  t.radiusFilter = options.radii;
   TraceSink3D sink{t};
   t.result = query(sink);
   return t;

@@ -1,6 +1,8 @@
 // convexloc — the polar locator's one-point queries: locate(p), with its fast path (the
 // cell's radii, then the two edges of a cell listing one or two, by the filtered
 // predicate alone), trace(p) and the public index function.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -33,12 +35,34 @@ Location PolarLocator::locate(Vec2 p) const noexcept {
   return run(p, sink);
 }
 
-Trace2D PolarLocator::trace(Vec2 p) const {
+namespace {
+
+// the index function's numbers for a point that has a cell, with cellIndex()'s operations
+PolarIndexTrace indexNumbers(const detail::PolarIndex& index, Vec2 p) {
+  PolarIndexTrace n;
+  n.direction = {p.x - index.centre.x, p.y - index.centre.y};
+  const double ax = std::fabs(n.direction.x), ay = std::fabs(n.direction.y);
+  n.steep = ay > ax;
+  n.ratio = std::min(ax, ay) / std::max(ax, ay);
+  n.slabs = index.slabsPerOctant;
+  n.slab = std::min(static_cast<std::uint32_t>(n.ratio * index.slabScale), n.slabs - 1);
+  const unsigned o = (std::signbit(n.direction.x) ? 4u : 0u) |
+                     (std::signbit(n.direction.y) ? 2u : 0u) | (n.steep ? 1u : 0u);
+  n.base = index.cellBase[o];
+  n.step = index.cellStep[o];
+  return n;
+}
+
+}  // namespace
+
+Trace2D PolarLocator::trace(Vec2 p, TraceOptions options) const {
   Trace2D t;
   t.method = Method2D::Polar;
   t.apex = entries_.empty() ? vertices_[0] : index_.centre;
+  t.radiusFilter = options.radii;
   detail::TraceSink2D sink{t};
   t.result = run(p, sink);
+  if (t.cell >= 0) t.polar = indexNumbers(index_, p);
   return t;
 }
 

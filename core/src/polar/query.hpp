@@ -52,11 +52,13 @@ template <class Sink>
   }
   const std::uint32_t cell = static_cast<std::uint32_t>(c);
   sink.cell(c, static_cast<int>(cell / index_.slabsPerOctant));
-  const Radii r = radii_[cell];
-  const double d2 = polar::distance2(p, index_.centre);
-  const bool decided = detail::radiiDecide(d2, r.in2, r.out2);
-  sink.radius(d2, r.in2, r.out2, decided);
-  if (decided) return detail::insideOrOutside(d2 > static_cast<double>(r.out2));
+  if (sink.radii()) {  // always, but in a trace asked without the radius filter
+    const Radii r = radii_[cell];
+    const double d2 = polar::distance2(p, index_.centre);
+    const bool decided = detail::radiiDecide(d2, r.in2, r.out2);
+    sink.radius(d2, r.in2, r.out2, decided);
+    if (decided) return detail::insideOrOutside(d2 > static_cast<double>(r.out2));
+  }
   const std::uint32_t b = offsets_[cell], k = offsets_[cell + 1] - b;
   if (k <= kCrowdedCell)
     return detail::testEdges(ring(), entries_.data() + b, entries_.data() + b + k, p, sink);

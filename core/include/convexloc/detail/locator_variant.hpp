@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "convexloc/geometry.hpp"
+#include "convexloc/methods.hpp"
 
 namespace convexloc::detail {
 
@@ -29,6 +30,8 @@ class LocatorVariant {
   void locate(std::span<const Point> points, std::span<Location> out) const noexcept;
   // the steps locate(p) takes, and its answer
   Trace trace(Point p) const;
+  // the same with `options` (ignored by the methods without a radius filter)
+  Trace trace(Point p, TraceOptions options) const;
   // size and shape of the subdivision
   Stats stats() const;
   // the subdivision as drawable geometry (empty for methods without cells)
