@@ -14,6 +14,10 @@ enum class ActionKind : std::uint8_t {
   ClearPoint,   // the placed point (and in 3D the pinned cell) cleared
   NewSpray,     // a spray with the next seed
   ToggleLines,  // the 2D Lines mode (the dual problem) on or off
+  // the placed point's query step by step
+  PrevStep,     // the previous step (from all shown: the last)
+  NextStep,     // the next step (from all shown: the first)
+  ToggleRadii,  // the radius filter off (paper-faithful mode) or on
   ChooseMethod  // the method numbered `method` (0 = the first) in the scene's list
 };
 

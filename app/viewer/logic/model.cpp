@@ -59,6 +59,7 @@ Scene3D& Model::scene3d() {
   if (!scene3d_) {
     scene3d_ = std::make_unique<Scene3D>();
     seen3d_ = scene3d_->errorSerial();
+    scene3d_->setTraceOptions({.radii = !settings.paperMode});
   }
   return *scene3d_;
 }
@@ -144,6 +145,9 @@ std::string Model::apply(const Options& o) {
   else
     apply3d(o, method3d);
   if (o.show) settings.visibleMask = visibleMaskFor(*o.show);
+  // the query step by step: the mode first (it traces again), then the step
+  setPaperMode(o.paper);
+  setStep(o.step >= 1 ? o.step - 1 : -1);
   collectErrors();
   requestFit();
   return firstProblem_;
@@ -220,6 +224,47 @@ void Model::apply3d(const Options& o, bool method3d) {
            std::to_string(s3.cells().size()) + " cells");
   }
   if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
+}
+
+// === Step by step
+
+std::optional<StepModel> Model::steps() const {
+  if (dim == Dim::Two) {
+    if (!scene2d.probe()) return std::nullopt;
+    return buildSteps(scene2d.probe()->trace, scene2d.probe()->point, scene2d.polygon());
+  }
+  if (!scene3d_ || !scene3d_->probe()) return std::nullopt;
+  const Bounds3 b = scene3d_->bounds();
+  return buildSteps3D(scene3d_->probe()->trace, scene3d_->probe()->point, glm::length(b.hi - b.lo));
+}
+
+int Model::step() const {
+  const std::optional<StepModel> m = steps();
+  if (!m) return -1;
+  const int k = dim == Dim::Two ? scene2d.step() : scene3d_->step();
+  return clampStep(k, m->steps.size());
+}
+
+void Model::setStep(int k) {
+  const std::optional<StepModel> m = steps();
+  const int shown = m ? clampStep(k, m->steps.size()) : k;
+  if (dim == Dim::Two)
+    scene2d.setStep(shown);
+  else
+    scene3d().setStep(shown);
+}
+
+void Model::stepBy(bool forward) {
+  const std::optional<StepModel> m = steps();
+  if (!m) return;
+  stepPlayer.playing = false;
+  setStep(nextStep(step(), m->steps.size(), forward));
+}
+
+void Model::setPaperMode(bool on) {
+  settings.paperMode = on;
+  scene2d.setTraceOptions({.radii = !on});
+  if (scene3d_) scene3d_->setTraceOptions({.radii = !on});
 }
 
 void Model::setLinesMode(bool on) {

@@ -17,6 +17,7 @@
 #include "logic/picking.hpp"
 #include "logic/scene2d.hpp"
 #include "logic/scene3d.hpp"
+#include "logic/steps.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/structure3d.hpp"
 
@@ -33,6 +34,9 @@ struct Settings {
   unsigned visibleMask = kAllClasses;  // which classes of sprayed points are drawn
   View2DOptions view2d;
   View3DOptions view3d;
+  // the query step by step
+  bool stepBoxVisible = true;  // the Steps window, also with the panels hidden
+  bool paperMode = false;      // traces without the radius filter (the paper's query)
 };
 
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
@@ -78,6 +82,19 @@ class Model {
   void fit(ScreenRect area);
   // a 2D view to apply at the next fit instead: centre and width in world units
   std::optional<Vec3> pendingView;
+
+  // === The placed point's query, step by step (the shown scene's)
+  // the steps of the shown scene's placed point, none without one
+  std::optional<StepModel> steps() const;
+  // the step shown, clamped to the steps there are (-1: all)
+  int step() const;
+  // shows step `k` (clamped; -1: all)
+  void setStep(int k);
+  // the next or the previous step (from all shown: the first or the last)
+  void stepBy(bool forward);
+  // paper-faithful mode on or off in both scenes: the placed point traced again
+  void setPaperMode(bool on);
+  StepPlayer stepPlayer;
 
   // the last error shown to the user, from the model or a scene; the serial grows with each
   const std::string& error() const { return error_; }

@@ -249,6 +249,20 @@ bool batchOption(std::string_view a, ArgReader& in, Options& o) {
   return true;
 }
 
+// --step, --paper: the placed point's query step by step
+bool stepOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--step") {
+    if (!in.value(v) || !parseInt<int>(v, -1, 1000000, o.step))
+      return in.fail("--step needs a step number from 1 (0 or -1: all steps)");
+  } else if (a == "--paper") {
+    o.paper = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // an unknown option, or the shape file (only one)
 std::string shapeArgument(std::string_view a, Options& o) {
   if (!a.empty() && a[0] == '-' && a != "-")
@@ -276,7 +290,7 @@ ParsedOptions parseOptions(std::span<const std::string_view> args) {
     const std::string_view a = in.take();
     if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
         !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
-        !batchOption(a, in, o))
+        !batchOption(a, in, o) && !stepOption(a, in, o))
       in.error = shapeArgument(a, o);
   }
   r.error = in.error.empty() ? conflicts(o) : in.error;
@@ -310,6 +324,12 @@ Scene:
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
   --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
   --cell K              3D: pin cube-map cell K (its pyramid and the faces it lists)
+Step by step:
+  --step K              show step K (1 = the first) of the placed point's query, highlighted
+                        in the drawing and the Steps window (beyond the last: the last;
+                        0 or -1: all steps)
+  --paper               paper-faithful mode: polar and cubemap queries without the radius
+                        filter, so the cell's edges (faces) decide (key R toggles it)
 View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
@@ -328,7 +348,8 @@ Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, cl
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
 Keys: F fit, H hide panels, 1..5 method, L lines mode, Space new spray, Esc clear the
-point, F12 screenshot.
+point, F12 screenshot; Left/Right previous/next step of the placed point's query, R the
+radius filter on/off (paper-faithful mode).
 )";
 }
 

@@ -49,6 +49,9 @@ struct Options {
   bool animate = false;            // move the camera every frame (timing)
   bool compare = false;            // time every method at start (the Method panel)
   bool help = false, version = false;
+  // a query, step by step
+  int step = -1;       // --step K: the placed point's step K shown, from 1 (0, -1: all steps)
+  bool paper = false;  // --paper: traces without the radius filter (the paper's query)
 };
 
 // the result of parsing: options, or the reason they are wrong

@@ -135,7 +135,7 @@ void SceneState<Traits>::classify() {
 
 template <class Traits>
 void SceneState<Traits>::place(Point p) {
-  probe_ = Probe{p, locator_->trace(p)};
+  probe_ = Probe{p, locator_->trace(p, traceOptions_)};
   ++versions_.overlay;
 }
 
@@ -148,7 +148,24 @@ void SceneState<Traits>::clearProbe() {
 
 template <class Traits>
 void SceneState<Traits>::retrace() {
-  if (probe_) probe_->trace = locator_->trace(probe_->point);
+  if (probe_) probe_->trace = locator_->trace(probe_->point, traceOptions_);
+}
+
+// === Steps
+
+template <class Traits>
+void SceneState<Traits>::setTraceOptions(TraceOptions options) {
+  if (options.radii == traceOptions_.radii) return;
+  traceOptions_ = options;
+  retrace();
+  ++versions_.overlay;
+}
+
+template <class Traits>
+void SceneState<Traits>::setStep(int step) {
+  if (step == step_) return;
+  step_ = step;
+  ++versions_.overlay;
 }
 
 // === Compare

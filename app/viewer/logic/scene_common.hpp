@@ -21,6 +21,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/geometry.hpp"
+#include "convexloc/methods.hpp"
 
 namespace convexloc::viewer {
 
@@ -138,6 +139,14 @@ class SceneState {
   void clearProbe();
   const std::optional<Probe>& probe() const { return probe_; }
 
+  // === Steps: how the placed point is traced, and which of its steps is shown
+  // traces without the radius filter (the paper's query) when `radii` is false; retraces
+  void setTraceOptions(TraceOptions options);
+  TraceOptions traceOptions() const { return traceOptions_; }
+  // the step of the placed point's query shown, -1 for all (clamped where it is drawn)
+  void setStep(int step);
+  int step() const { return step_; }
+
   // === Compare: every method timed on the current spray (a temporary one when empty),
   // at most about `secondsPerMethod` each, and checked against the current method
   std::vector<Timing> compare(double secondsPerMethod = 0.12) const;
@@ -200,6 +209,8 @@ class SceneState {
   double locateNsPerPoint_ = 0.0;
 
   std::optional<Probe> probe_;
+  TraceOptions traceOptions_;  // how the placed point is traced
+  int step_ = -1;              // its step shown, -1 for all
 
   std::string error_;
   std::uint64_t errorSerial_ = 0;

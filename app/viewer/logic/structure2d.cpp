@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "logic/camera2d.hpp"
+#include "logic/steps.hpp"
 #include "logic/text.hpp"
 
 namespace convexloc::viewer {
@@ -251,6 +253,144 @@ void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
     out.label(at2(x), std::string(toString(t.result)), textColourOf(pal, t.result), {12.0f, 12.0f});
 }
 
+// === The query step by step: each step up to the current one drawn, the current one bold
+
+// what a step is drawn from
+struct StepDraw {
+  const Scene2D& scene;
+  const Trace2D& t;
+  glm::dvec2 point;
+  const Palette& pal;
+  const View2DOptions& opt;
+  DrawList& out;
+};
+
+// a circle around c of radius r (for the radii)
+void circle(glm::dvec2 c, double r, Rgba colour, float width, DrawList& out) {
+  constexpr int kSides = 96;
+  for (int k = 0; k < kSides; ++k) {
+    const double a0 = 2.0 * std::numbers::pi * k / kSides,
+                 a1 = 2.0 * std::numbers::pi * (k + 1) / kSides;
+    out.segment(at2(c + r * glm::dvec2(std::cos(a0), std::sin(a0))),
+                at2(c + r * glm::dvec2(std::cos(a1), std::sin(a1))), colour, width, 6.0f);
+  }
+}
+
+// the horizontal line y = value across the (grown) box, with a label at its left end
+void probeLine(const StepDraw& d, double y, Rgba c, float width, const std::string& label) {
+  const Box2 b = grow(d.scene.polygon().bounds(), 0.06);
+  d.out.segment(at2({b.lo.x, y}), at2({b.hi.x, y}), c, width);
+  if (d.opt.showLabels && !label.empty()) d.out.label(at2({b.lo.x, y}), label, c, {-28.0f, 0.0f});
+}
+
+// the cell with this index, outlined (and filled when current)
+void stepCell(const StepDraw& d, std::int64_t index, bool current) {
+  const std::ptrdiff_t pos = cellPosition(d.scene, index);
+  if (pos < 0) return;
+  const Cell2D& c = d.scene.cells()[static_cast<std::size_t>(pos)];
+  const Rgba colour = d.pal.hoverEdge;
+  if (current) fillOutline(c.outline, withAlpha(colour, 0.18f), d.out);
+  strokeOutline(c.outline, withAlpha(colour, current ? 1.0f : 0.5f), current ? 2.5f : 1.25f, d.out);
+}
+
+// polar: the octant's two bounding rays from the centre (the first cell's lower ray, the
+// last cell's upper one)
+void stepOctant(const StepDraw& d, int octant, bool current) {
+  const auto& cells = d.scene.cells();
+  const std::size_t q = cells.size() / 8;
+  if (q == 0 || octant < 0 || static_cast<std::size_t>(octant) >= 8) return;
+  const glm::dvec2 c = toGlm(d.t.apex);
+  const Rgba colour = withAlpha(d.pal.hoverEdge, current ? 1.0f : 0.5f);
+  const float w = current ? 2.5f : 1.25f;
+  d.out.segment(at2(c), at2(toGlm(cells[octant * q].hitLo)), colour, w);
+  d.out.segment(at2(c), at2(toGlm(cells[octant * q + q - 1].hitHi)), colour, w);
+  if (current && d.opt.showLabels)
+    d.out.label(
+        at2(0.5 * (toGlm(cells[octant * q].hitLo) + toGlm(cells[octant * q + q - 1].hitHi))),
+        numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
+}
+
+// polar: the cell's two radii around the centre, and the point's distance
+void stepRadii(const StepDraw& d, bool current) {
+  const glm::dvec2 c = toGlm(d.t.apex);
+  const float w = current ? 2.0f : 1.0f;
+  const float a = current ? 1.0f : 0.5f;
+  circle(c, d.t.innerRadius, withAlpha(d.pal.positive, a), w, d.out);
+  circle(c, d.t.outerRadius, withAlpha(d.pal.negative, a), w, d.out);
+  if (current && d.opt.showLabels) {
+    d.out.label(at2(c + glm::dvec2(0.0, d.t.innerRadius)), "r_in", d.pal.positive, {0.0f, -12.0f});
+    d.out.label(at2(c + glm::dvec2(0.0, d.t.outerRadius)), "r_out", d.pal.negative, {0.0f, -12.0f});
+  }
+}
+
+// a ray from the apex through a vertex, by its sign
+void stepRay(const StepDraw& d, const Step& s, bool current, std::size_t number) {
+  const ConvexPolygon& poly = d.scene.polygon();
+  if (s.item < 0 || static_cast<std::size_t>(s.item) >= poly.size()) return;
+  const glm::dvec2 a = toGlm(d.t.apex), v = toGlm(poly.vertex(static_cast<std::size_t>(s.item)));
+  const Rgba c = withAlpha(signColour(d.pal, s.sign), current ? 1.0f : 0.45f);
+  d.out.segment(at2(a), at2(a + 1.08 * (v - a)), c, current ? 3.0f : 1.5f);
+  if (current && d.opt.showLabels)
+    d.out.label(at2(a + 1.08 * (v - a)), "step " + std::to_string(number) + signText(s.sign), c,
+                {0.0f, -12.0f});
+}
+
+// an edge tested, by its sign
+void stepEdge(const StepDraw& d, const Step& s, bool current) {
+  const ConvexPolygon& poly = d.scene.polygon();
+  if (s.item < 0 || static_cast<std::size_t>(s.item) >= poly.size()) return;
+  const auto e = static_cast<std::size_t>(s.item);
+  const Rgba c = withAlpha(signColour(d.pal, s.sign), current ? 1.0f : 0.5f);
+  strokeEdge(poly, e, c, current ? 6.0f : 3.5f, d.out);
+  if (current && d.opt.showLabels)
+    labelEdge(poly, e, numbered("e", e).append(signText(s.sign)), c, 20.0f, d.out);
+}
+
+// one step's drawing; `number` counts from 1
+void drawStep(const StepDraw& d, const Step& s, bool current, std::size_t number) {
+  const Rgba hi = withAlpha(d.pal.hoverEdge, current ? 1.0f : 0.45f);
+  switch (s.focus) {
+    case StepFocus::Box: drawBox(d.scene.polygon().bounds(), d.pal.negative, 2.5f, d.out); break;
+    case StepFocus::Search:
+      for (const SlabProbe& p : d.t.probes)
+        if (p.rank == s.item)
+          probeLine(d, p.y, hi, current ? 2.5f : 1.25f, current ? numbered("y", p.rank) : "");
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+      break;
+    case StepFocus::Index:
+      stepCell(d, s.item, current);
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+      break;
+    case StepFocus::Octant: stepOctant(d, static_cast<int>(s.item), current); break;
+    case StepFocus::Cell: stepCell(d, s.item, current); break;
+    case StepFocus::Radii: stepRadii(d, current); break;
+    case StepFocus::Ray: stepRay(d, s, current, number); break;
+    case StepFocus::Edge: stepEdge(d, s, current); break;
+    default: break;
+  }
+}
+
+// the placed point's steps up to `step` (the current one bold), the point and its ray
+void probeSteps(const Scene2D& scene, const Probe& probe, const Palette& pal,
+                const View2DOptions& opt, int step, DrawList& out) {
+  const Trace2D& t = probe.trace;
+  const StepModel m = buildSteps(t, probe.point, scene.polygon());
+  const int k = clampStep(step, m.steps.size());
+  const glm::dvec2 x = toGlm(probe.point);
+  const StepDraw d{scene, t, x, pal, opt, out};
+  if ((t.method == Method2D::Polar || t.method == Method2D::Wedge) && !t.atCentre)
+    out.segment(at2(toGlm(t.apex)), at2(x), pal.text, 1.25f, 5.0f);
+  for (int j = 0; j <= k; ++j)
+    drawStep(d, m.steps[static_cast<std::size_t>(j)], j == k, static_cast<std::size_t>(j) + 1);
+  const bool done = m.steps[static_cast<std::size_t>(k)].focus == StepFocus::Result;
+  const Rgba colour = done ? colourOf(pal, t.result) : pal.text;
+  out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
+  out.marker(at2(x), colour, 13.0f, MarkerShape::Disc);
+  if (opt.showLabels)
+    out.label(at2(x), done ? std::string(toString(t.result)) : "p",
+              done ? textColourOf(pal, t.result) : pal.text, {12.0f, 12.0f});
+}
+
 // A dragged vertex: accepted edits are the shape itself; a rejected one shows where the
 // mouse is, tied to the kept vertex, with the reason.
 void dragMarker(const Scene2D& scene, const Drag& d, const Palette& pal, DrawList& out) {
@@ -322,7 +462,12 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
                     DrawList& out) {
   out.clear();
   if (scene.hoveredCell() >= 0 && !scene.drag()) hoveredCell(scene, pal, opt, out);
-  if (const auto& probe = scene.probe()) probeTrace(scene, *probe, pal, opt, out);
+  if (const auto& probe = scene.probe()) {
+    if (scene.step() >= 0)
+      probeSteps(scene, *probe, pal, opt, scene.step(), out);  // the query step by step
+    else
+      probeTrace(scene, *probe, pal, opt, out);
+  }
   if (const auto& d = scene.drag()) dragMarker(scene, *d, pal, out);
 }
 

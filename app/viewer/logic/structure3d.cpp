@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "logic/steps.hpp"
 #include "logic/text.hpp"
 
 namespace convexloc::viewer {
@@ -63,6 +64,83 @@ Rgba signColour(const Palette& p, int sign) {
 }
 
 const char* kCubeFaceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+
+// === The query step by step: each step up to the current one drawn, the current one bold
+
+// the square of cube face f on the drawing cube around the centre, outlined
+void cubeFaceSquare(const Scene3D& scene, int f, Rgba colour, float width, DrawList& out) {
+  const auto c = scene.centre();
+  if (!c || f < 0 || f > 5) return;
+  const int axis = f / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double h = scene.cubeHalfSize();
+  glm::dvec3 n(0.0), du(0.0), dv(0.0);
+  n[axis] = f % 2 ? -h : h;
+  du[u] = h;
+  dv[v] = h;
+  const glm::dvec3 m = toGlm(*c) + n;
+  const glm::dvec3 q[4] = {m - du - dv, m + du - dv, m + du + dv, m - du + dv};
+  for (int k = 0; k < 4; ++k) out.segment(q[k], q[(k + 1) % 4], colour, width);
+}
+
+// the radii along the ray from the centre: inside up to r_in, undecided up to r_out
+void radiiOnRay(const Trace3D& t, const Palette& pal, bool current, DrawList& out) {
+  if (!t.centre || t.distance <= 0.0) return;
+  const glm::dvec3 c = toGlm(*t.centre), dir = toGlm(t.direction) / t.distance;
+  const float w = current ? 4.0f : 2.0f;
+  out.segment(c, c + t.innerRadius * dir, withAlpha(pal.positive, current ? 1.0f : 0.5f), w);
+  out.segment(c + t.innerRadius * dir, c + t.outerRadius * dir,
+              withAlpha(pal.zero, current ? 1.0f : 0.5f), w);
+  out.marker(c + t.innerRadius * dir, pal.positive, 9.0f, MarkerShape::Ring);
+  out.marker(c + t.outerRadius * dir, pal.negative, 9.0f, MarkerShape::Ring);
+}
+
+// a face tested (a plane test or a walk's edge test), by its sign
+void stepFace(const ConvexPolyhedron& p, const Step& s, const Palette& pal, bool current,
+              bool labels, DrawList& out) {
+  if (s.item < 0 || static_cast<std::size_t>(s.item) >= p.faceCount()) return;
+  const auto f = static_cast<std::uint32_t>(s.item);
+  const Rgba c =
+      s.focus == StepFocus::Walk && s.sign <= 0 ? pal.structureStrong : signColour(pal, s.sign);
+  fillFace(p, f, withAlpha(c, current ? 0.6f : 0.25f), false, out);
+  if (current) strokeFace(p, f, c, 2.5f, out);
+  if (current && labels) out.label(faceMiddle(p, f), numbered("f", f) + signText(s.sign), c);
+}
+
+// one step's drawing
+void drawStep3D(const Scene3D& scene, const Trace3D& t, const Step& s, const Palette& pal,
+                bool current, bool labels, DrawList& out) {
+  const Rgba hi = withAlpha(pal.hoverEdge, current ? 1.0f : 0.45f);
+  switch (s.focus) {
+    case StepFocus::Octant: cubeFaceSquare(scene, static_cast<int>(s.item), hi, 2.5f, out); break;
+    case StepFocus::Cell:
+      if (const std::ptrdiff_t k = scene.probeCell(); k >= 0)
+        pyramid(scene.cells()[static_cast<std::size_t>(k)], hi, current ? 2.0f : 1.0f, out);
+      break;
+    case StepFocus::Radii: radiiOnRay(t, pal, current, out); break;
+    case StepFocus::Walk:
+    case StepFocus::Face: stepFace(scene.polyhedron(), s, pal, current, labels, out); break;
+    default: break;
+  }
+}
+
+// the placed point's steps up to `step`, the point and the ray from the centre
+void probeSteps3D(const Scene3D& scene, const Probe3D& probe, const Palette& pal,
+                  const View3DOptions& opt, DrawList& out) {
+  const Trace3D& t = probe.trace;
+  const Bounds3 b = scene.bounds();
+  const StepModel m = buildSteps3D(t, probe.point, glm::length(b.hi - b.lo));
+  const int k = clampStep(scene.step(), m.steps.size());
+  const glm::dvec3 x = toGlm(probe.point);
+  if (t.centre) out.segment(toGlm(*t.centre), x, pal.text, 1.25f, 5.0f);
+  for (int j = 0; j <= k; ++j)
+    drawStep3D(scene, t, m.steps[static_cast<std::size_t>(j)], pal, j == k, opt.showLabels, out);
+  const bool done = m.steps[static_cast<std::size_t>(k)].focus == StepFocus::Result;
+  out.marker(x, pal.rim, 17.0f, MarkerShape::Disc);
+  out.marker(x, done ? colourOf(pal, t.result) : pal.text, 13.0f, MarkerShape::Disc);
+  if (opt.showLabels)
+    out.label(x, done ? std::string(toString(t.result)) : "p",
+              done ? textColourOf(pal, t.result) : pal.text, {12.0f, 12.0f});
+}
 
 }  // namespace
 
@@ -193,7 +271,9 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
   showCell(scene.pinnedCell(), pal.crowded);
   if (scene.hoveredCell() != scene.pinnedCell()) showCell(scene.hoveredCell(), pal.hoverEdge);
 
-  if (const auto& probe = scene.probe()) {
+  if (const auto& probe = scene.probe(); probe && scene.step() >= 0) {
+    probeSteps3D(scene, *probe, pal, opt, out);  // the query step by step
+  } else if (probe) {
     const Trace3D& t = probe->trace;
     const glm::dvec3 x = toGlm(probe->point);
     const Rgba rc = colourOf(pal, t.result);

@@ -2,6 +2,7 @@
 #include "logic/text.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <initializer_list>
 
@@ -57,6 +58,36 @@ std::string exactTuple(std::initializer_list<double> values) {
 }
 
 }  // namespace
+
+std::string compact(double v, double scale) {
+  if (v == 0.0 || std::fabs(v) < 1e-12 * scale) return "0";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+namespace {
+
+// "(a,b,...)" with compact()
+std::string compactTuple(std::initializer_list<double> values, double scale) {
+  std::string out = "(";
+  for (const double v : values) {
+    if (out.size() > 1) out += ',';
+    out += compact(v, scale);
+  }
+  out += ')';
+  return out;
+}
+
+}  // namespace
+
+std::string compact(Vec2 p, double scale) {
+  return compactTuple({p.x, p.y}, scale);
+}
+
+std::string compact(Vec3 p, double scale) {
+  return compactTuple({p.x, p.y, p.z}, scale);
+}
 
 std::string exact(Vec2 p) {
   return exactTuple({p.x, p.y});
@@ -151,6 +182,8 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
                                    std::to_string(t.cell));
         if (t.outerRadius > 0)
           add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "edge"));
+        else if (!t.radiusFilter)
+          add(TraceLine::Step, "radius filter off: the cell's edges decide (the paper's query)");
       } else {
         add(TraceLine::Step,
             "no polar cell (no centre strictly inside, or too far): fan from vertex 0");
@@ -171,7 +204,7 @@ std::string exact(Vec3 p) {
   return exactTuple({p.x, p.y, p.z});
 }
 
-std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
+std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p, double scale) {
   static const char* kFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   std::vector<TraceLine> out;
   auto add = [&](TraceLine::Kind k, std::string s) { out.push_back({k, std::move(s)}); };
@@ -179,7 +212,7 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
   if (t.nonFinite) add(TraceLine::Step, "a coordinate is not finite: outside");
   if (t.atCentre) add(TraceLine::Step, "the point is the centre x_T itself");
   if (t.centre && t.method != Method3D::Halfspace)
-    add(TraceLine::Step, "centre x_T = " + exact(*t.centre));
+    add(TraceLine::Step, "centre x_T = " + compact(*t.centre, scale));
   if (t.cubeFace >= 0) {
     add(TraceLine::Step, std::string("direction from x_T: cube face ") + kFaces[t.cubeFace] +
                              " (the largest |coordinate| and its sign)");
@@ -189,6 +222,8 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
     add(TraceLine::Step, cell);
     if (t.outerRadius > 0)
       add(TraceLine::Step, radiusLine(t.distance, t.innerRadius, t.outerRadius, "face"));
+    else if (!t.radiusFilter)
+      add(TraceLine::Step, "radius filter off: the cell's faces decide (the paper's query)");
   }
   if (t.crowded) add(TraceLine::Step, "the cell lists many faces: a walk among them");
   if (t.fallback) add(TraceLine::Step, "no cell could be used: every face is tested");
@@ -201,6 +236,11 @@ std::vector<TraceLine> describeTrace3D(const Trace3D& t, Vec3 p) {
     if (t.path.size() > 40) path += " ...";
     add(TraceLine::Step, path);
   }
+  // every edge test of the walk, so that the count below lists what it counts
+  for (const WalkTest& w : t.steps)
+    add(signKind(w.sign), "face " + std::to_string(w.face) + ", edge " + std::to_string(w.edge) +
+                              ": orient3d(x_T, a, b, p) = " + signWord(w.sign) +
+                              (w.sign > 0 ? "  (beyond: cross)" : "  (stay)"));
   for (const FaceTest& f : t.faces) {
     const char* side = f.sign > 0 ? "inner side" : (f.sign < 0 ? "outer side" : "on its plane");
     add(f.sign > 0 ? TraceLine::Positive : (f.sign < 0 ? TraceLine::Negative : TraceLine::Zero),

@@ -31,6 +31,14 @@ std::string grouped(std::size_t n);
 // "12.3 kB", "4.0 MB"
 std::string bytesText(std::size_t bytes);
 
+// Numbers for captions, which must never break across lines: `v` to 6 significant digits
+// without spaces ("0.43", "-1.5e+07"), 0 for |v| < 1e-12 * scale (display only: the centre
+// (8.28e-21, 0, 0) of a cube of size 2 reads (0, 0, 0)) and for -0.
+std::string compact(double v, double scale = 0.0);
+// "(x,y)" and "(x,y,z)" with compact(), no spaces
+std::string compact(Vec2 p, double scale = 0.0);
+std::string compact(Vec3 p, double scale = 0.0);
+
 // one line of the inspector
 struct TraceLine {
   enum Kind { Heading, Step, Positive, Zero, Negative, Result } kind = Step;
@@ -47,8 +55,9 @@ std::vector<TraceLine> describeTrace(const Trace2D& trace, Vec2 point, const Con
 std::string exact(Vec3 p);
 
 // The trace of one 3D query, told for a student: the cube face and cell of the direction
-// from the centre (cube map), the faces walked across (walk), each plane tested with its
-// sign, the result.
-std::vector<TraceLine> describeTrace3D(const Trace3D& trace, Vec3 point);
+// from the centre (cube map), the faces walked across and each edge test of the walk, each
+// plane tested with its sign, the result. `scale` (the shape's size) snaps the centre's tiny
+// coordinates to 0.
+std::vector<TraceLine> describeTrace3D(const Trace3D& trace, Vec3 point, double scale = 0.0);
 
 }  // namespace convexloc::viewer

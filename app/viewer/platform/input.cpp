@@ -32,6 +32,9 @@ constexpr KeyBinding kKeys[] = {
 };
 // keys 1..5 choose a method
 constexpr int kMethodKeys = 5;
+// the placed point's query step by step (the arrows repeat while held)
+constexpr KeyBinding kStepKeys[] = {{GLFW_KEY_LEFT, ActionKind::PrevStep},
+                                    {GLFW_KEY_RIGHT, ActionKind::NextStep}};
 
 }  // namespace
 
@@ -71,6 +74,9 @@ std::vector<Action> keyActions() {
     if (pressed(b.key)) actions.push_back({b.kind, 0});
   for (int k = 0; k < kMethodKeys; ++k)
     if (pressed(GLFW_KEY_1 + k)) actions.push_back({ActionKind::ChooseMethod, k});
+  for (const KeyBinding& b : kStepKeys)
+    if (ImGui::IsKeyPressed(b.key, true)) actions.push_back({b.kind, 0});
+  if (pressed(GLFW_KEY_R)) actions.push_back({ActionKind::ToggleRadii, 0});
   return actions;
 }
 

@@ -13,6 +13,7 @@
 #include "logic/text.hpp"
 #include "ui/panels2d.hpp"
 #include "ui/panels3d.hpp"
+#include "ui/steps_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -256,6 +257,10 @@ void perform(const Action& action, Model& model, UiState& ui) {
       else
         model.scene3d().spray(spray);
       break;
+    // the placed point's query step by step
+    case ActionKind::PrevStep: model.stepBy(false); break;
+    case ActionKind::NextStep: model.stepBy(true); break;
+    case ActionKind::ToggleRadii: model.setPaperMode(!model.settings.paperMode); break;
     case ActionKind::ChooseMethod:
       if (model.dim == Dim::Two)
         model.scene2d.setMethod(kAllMethods2D[action.method]);
@@ -278,6 +283,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, area, window);
   }
+  stepsWindow(model, area, now);  // also with the panels hidden
   toast(model, ui, area, now);
 }
 

@@ -33,4 +33,16 @@ void cellHistogram(const char* id, const std::vector<std::size_t>& histogram, co
   ImGui::EndTooltip();
 }
 
+void paperModeCheckbox(Model& model, bool hasRadii) {
+  // always shown, greyed for methods without the filter, so that nothing below it moves
+  bool on = model.settings.paperMode;
+  ImGui::BeginDisabled(!hasRadii);
+  if (ImGui::Checkbox("paper-faithful: no radius filter (R)", &on)) model.setPaperMode(on);
+  ImGui::EndDisabled();
+  help(
+      "The radius filter is convexloc's own shortcut: a cell's two radii decide most points "
+      "before any predicate. Without it the placed point's query runs exactly as the paper "
+      "describes: the cell's edges (faces) decide. Answers are the same either way.");
+}
+
 }  // namespace convexloc::viewer

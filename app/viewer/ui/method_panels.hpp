@@ -71,6 +71,10 @@ void resolutionSlider(Scene& scene, const SliderText& text) {
     scene.setResolution(static_cast<std::uint32_t>(std::max(r, 1)));
 }
 
+// the paper-faithful mode's check box (key R): the placed point traced without the radius
+// filter; greyed for the methods that have none (all but polar and cubemap)
+void paperModeCheckbox(Model& model, bool hasRadii);
+
 // === Compare all methods
 
 // the table of a comparison: ns per point (the fastest in the positive colour), build

@@ -97,6 +97,7 @@ void methodPanel2D(Model& model, UiState& ui) {
     return;
   }
   methodChoice(scene);
+  paperModeCheckbox(model, scene.method() == Method2D::Polar);
   if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
   if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
   methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);

@@ -86,6 +86,7 @@ void shapePanel3D(Model& model, UiState& ui) {
 void methodPanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   methodChoice(scene);
+  paperModeCheckbox(model, scene.method() == Method3D::Cubemap);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
 }
@@ -176,7 +177,10 @@ void inspector3D(Model& model, bool hints) {
     if (ImGui::SmallButton("Unpin")) scene.pin(-1);
   }
   placedPoint(scene, pal, hints, "click on the slicing plane to place a point and follow its query",
-              [](const Probe3D& probe) { return describeTrace3D(probe.trace, probe.point); });
+              [&](const Probe3D& probe) {
+                const Bounds3 b = scene.bounds();
+                return describeTrace3D(probe.trace, probe.point, glm::length(b.hi - b.lo));
+              });
 }
 
 }  // namespace

@@ -1,0 +1,168 @@
+// convexloc-viewer — the Steps window.
+#include "ui/steps_panel.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// the colour of a step's line: its sign, the result's class, or plain text
+Rgba stepColour(const Step& s, const Palette& pal, Rgba result) {
+  switch (s.kind) {
+    case TraceLine::Positive: return pal.positive;
+    case TraceLine::Negative: return pal.negative;
+    case TraceLine::Zero: return pal.zero;
+    case TraceLine::Result: return result;
+    default: return pal.text;
+  }
+}
+
+// Previous, Next, Play / Pause, All, the speed, "step k of n"
+void stepControls(Model& model, const StepModel& m, int step, double now) {
+  const std::size_t n = m.steps.size();
+  if (ImGui::Button("< Prev")) model.stepBy(false);
+  ImGui::SameLine();
+  if (ImGui::Button("Next >")) model.stepBy(true);
+  ImGui::SameLine();
+  StepPlayer& player = model.stepPlayer;
+  if (ImGui::Button(player.playing ? "Pause" : "Play")) {
+    if (player.playing) {
+      player.playing = false;
+    } else {
+      int k = step;
+      player.start(k, n, now);
+      model.setStep(k);
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("All")) {
+    player.playing = false;
+    model.setStep(-1);
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+  ImGui::SliderFloat("##speed", &player.speed, 0.25f, 4.0f, "%.2g steps/s",
+                     ImGuiSliderFlags_Logarithmic);
+  ImGui::SameLine();
+  if (step < 0)
+    ImGui::TextDisabled("all %zu steps", n);
+  else
+    ImGui::Text("step %d of %zu", step + 1, n);
+}
+
+// the steps, the current one on a highlighted row and those after it dimmed
+void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, float height) {
+  ImGui::BeginChild("##steplist", ImVec2(0.0f, height), false);
+  for (std::size_t i = 0; i < m.steps.size(); ++i) {
+    const Step& s = m.steps[i];
+    const bool current = static_cast<int>(i) == step;
+    const bool later = step >= 0 && static_cast<int>(i) > step;
+    Rgba c = stepColour(s, pal, result);
+    if (later) c = withAlpha(c, 0.35f);
+    if (current) {
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      const float w = ImGui::GetContentRegionAvail().x;
+      ImGui::GetWindowDrawList()->AddRectFilled(
+          at, ImVec2(at.x + w, at.y + ImGui::GetTextLineHeightWithSpacing()),
+          u32(withAlpha(pal.hoverEdge, 0.22f)));
+      static int scrolledTo = -2;  // scrolls once per new step, then the list scrolls freely
+      if (scrolledTo != step) ImGui::SetScrollHereY(0.5f);
+      scrolledTo = step;
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
+    ImGui::PopStyleColor();
+  }
+  ImGui::EndChild();
+}
+
+// the pseudo-code, the current step's line marked
+void codeList(const StepModel& m, int step, const Palette& pal) {
+  const int line = step >= 0 ? m.steps[static_cast<std::size_t>(step)].line : -1;
+  for (std::size_t i = 0; i < m.code.size(); ++i) {
+    const bool on = static_cast<int>(i) == line;
+    ImGui::PushStyleColor(ImGuiCol_Text, im(on ? pal.hoverEdge : pal.textMuted));
+    textWrappedAtSpaces((on ? "> " : "  ") + m.code[i]);
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace
+
+void textWrappedAtSpaces(const std::string& text) {
+  const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
+  std::string line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string wider = line.empty() ? word : line + " " + word;
+    if (!line.empty() && ImGui::CalcTextSize(wider.c_str()).x > width) {
+      ImGui::TextUnformatted(line.c_str());
+      line = "    " + word;  // continued lines indented
+    } else {
+      line = wider;
+    }
+    start = end + 1;
+  }
+  ImGui::TextUnformatted(line.c_str());
+}
+
+void stepsWindow(Model& model, ScreenRect area, double now) {
+  const std::optional<StepModel> m = model.steps();
+  if (!model.settings.stepBoxVisible || !m || m->steps.empty()) return;
+  int step = model.step();
+  if (model.stepPlayer.playing) {
+    step = model.stepPlayer.tick(step, m->steps.size(), now);
+    model.setStep(step);
+  }
+  const Palette& pal = paletteFor(model.settings.theme);
+  const Rgba result =
+      m->steps.back().kind == TraceLine::Result
+          ? textColourOf(pal, model.dim == Dim::Two ? model.scene2d.probe()->trace.result
+                                                    : model.scene3d().probe()->trace.result)
+          : pal.text;
+  const float font = ImGui::GetFontSize();
+  const float w = std::min(static_cast<float>(area.size().x) - 20.0f, font * 50.0f);
+  const bool sideBySide = w > font * 40.0f;
+  ImGui::SetNextWindowPos(
+      ImVec2(static_cast<float>(area.lo.x) + 10.0f, static_cast<float>(area.hi.y) - 10.0f),
+      ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.9f);
+  ImGui::Begin("Steps", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  ImGui::TextColored(im(pal.textMuted), "%s", m->title.c_str());
+  if (!m->note.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(im(pal.hoverEdge), "(%s)", m->note.c_str());
+  }
+  stepControls(model, *m, step, now);
+  ImGui::Separator();
+  const float rows = static_cast<float>(std::min<std::size_t>(m->steps.size(), 9));
+  const float listHeight = rows * ImGui::GetTextLineHeightWithSpacing() * 1.15f + 4.0f;
+  if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableNextColumn();
+    stepList(*m, step, pal, result, listHeight);
+    ImGui::TableNextColumn();
+    codeList(*m, step, pal);
+    ImGui::EndTable();
+  } else {
+    stepList(*m, step, pal, result, listHeight);
+    ImGui::Separator();
+    codeList(*m, step, pal);
+  }
+  ImGui::End();
+}
+
+}  // namespace convexloc::viewer

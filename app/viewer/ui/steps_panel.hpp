@@ -1,0 +1,18 @@
+// convexloc-viewer — the Steps window: the placed point's query told step by step (core's
+// trace, as logic/steps.hpp tells it), the current step highlighted in the list and its
+// line marked in the method's pseudo-code, Previous / Next, Play / Pause at a speed.
+#pragma once
+
+#include "logic/model.hpp"
+
+namespace convexloc::viewer {
+
+// The Steps window over the lower left corner of `area` (the scene's part of the window),
+// while Settings::stepBoxVisible and a point is placed, with the panels shown or hidden;
+// plays the steps at `now` (seconds).
+void stepsWindow(Model& model, ScreenRect area, double now);
+
+// `text` wrapped to the available width at spaces only, so that no number breaks
+void textWrappedAtSpaces(const std::string& text);
+
+}  // namespace convexloc::viewer
