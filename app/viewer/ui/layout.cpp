@@ -214,6 +214,10 @@ void dimensionButtons(Model& model) {
 // the scene's own panels, in the left window
 void scenePanels(Model& model, UiState& ui) {
   const ScenePanels& p = panelsOf(model);
+  // a new comparison table folds the Shape panel, so that the table shows without scrolling
+  const std::size_t compared = ui.compare2d.size() + ui.compare3d.size();
+  if (compared != ui.compareSeen && compared > 0) ImGui::SetNextItemOpen(false);
+  ui.compareSeen = compared;
   if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) p.shape(model, ui);
   if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) p.method(model, ui);
   if (p.ownTitle && ImGui::CollapsingHeader(p.ownTitle, ImGuiTreeNodeFlags_DefaultOpen))

@@ -34,6 +34,7 @@ struct UiState {
   float legendPos[2] = {0.0f, 0.0f};
   float legendSize[2] = {0.0f, 0.0f};  // the floating legend's size in the last frame
   float captionHeight = 0.0f;          // the caption box's height in the last frame
+  std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
   double refitUntil = 0.0;             // until then a change of the legend's size refits the scene
 
   // widget state
