@@ -45,11 +45,13 @@ using MeasureText = std::function<glm::dvec2(std::string_view)>;
 // Places the labels in order (earlier ones win a contested spot): the asked offset times
 // `scale` first, then 8 directions around the anchor at growing distances. A label whose
 // every candidate overlaps a placed label or a marker is dropped, unless essential: then
-// it goes to the least crowded candidate farther out with a leader line. Returns one
+// it goes to the least crowded candidate farther out with a leader line. With a `window`
+// size (> 0), a candidate reaching past the window's edges is not taken. Returns one
 // placement per request, in order.
 std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
                                         std::span<const PixelDisc> markers,
-                                        const MeasureText& measure, double scale = 1.0);
+                                        const MeasureText& measure, double scale = 1.0,
+                                        glm::dvec2 window = {0.0, 0.0});
 
 // true when the two placed boxes overlap (the gap between them below `pad` pixels)
 bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad = 0.0);

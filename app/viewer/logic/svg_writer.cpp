@@ -162,21 +162,22 @@ void addSegments(const SvgScene& s, const DrawList& list, std::vector<Item>& out
   }
 }
 
-// a marker of each shape, as the marker shader draws it
+// a marker of each shape, as the marker shader draws it: a disc of the marker's diameter,
+// a ring inside its rim, the ring crossed, a square
 std::string markerSvg(glm::dvec2 c, double size, const Marker& m) {
-  const double r = std::max(0.5 * size - 1.0, 0.5);
+  const double r = std::max(0.5 * size, 0.5);
   const std::string at = " cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\"";
+  const std::string ring = "<circle" + at + " r=\"" + num(std::max(r - 1.0, 0.5)) + "\"";
   switch (m.shape) {
     case MarkerShape::Disc:
       return "<circle" + at + " r=\"" + num(r) + "\"" + paint("fill", m.colour) + "/>";
     case MarkerShape::Ring:
-      return "<circle" + at + " r=\"" + num(r - 1.0) + "\" fill=\"none\"" +
-             paint("stroke", m.colour) + " stroke-width=\"2.5\"/>";
+      return ring + " fill=\"none\"" + paint("stroke", m.colour) + " stroke-width=\"2\"/>";
     case MarkerShape::Cross: {
-      const double b = std::max(r - 2.5, 0.5);
-      return "<g" + paint("stroke", m.colour) + " fill=\"none\" stroke-width=\"2.5\"><circle" + at +
-             " r=\"" + num(r - 1.0) + "\"/><path d=\"M" + num(c.x - b) + " " + num(c.y) + "H" +
-             num(c.x + b) + "M" + num(c.x) + " " + num(c.y - b) + "V" + num(c.y + b) + "\"/></g>";
+      const double b = std::max(r - 2.0, 0.5);
+      return "<g" + paint("stroke", m.colour) + " fill=\"none\" stroke-width=\"2\">" + ring +
+             "/><path d=\"M" + num(c.x - b) + " " + num(c.y) + "H" + num(c.x + b) + "M" + num(c.x) +
+             " " + num(c.y - b) + "V" + num(c.y + b) + "\"/></g>";
     }
     case MarkerShape::Square: break;
   }
@@ -345,7 +346,8 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
     for (const Marker& m : list->markers)
       if (const std::optional<glm::dvec3> s = project(m.p))
         markers.push_back({glm::dvec2(*s), 0.5 * m.size * scale});
-  const std::vector<LabelPlacement> placed = placeLabels(requests, markers, measure, scale);
+  const std::vector<LabelPlacement> placed =
+      placeLabels(requests, markers, measure, scale, viewport);
   std::vector<PlacedSceneLabel> out;
   for (std::size_t i = 0; i < shown.size(); ++i)
     if (placed[i].shown) out.push_back({shown[i].label, shown[i].anchor, placed[i]});
