@@ -18,7 +18,7 @@ constexpr int kEssentialRings = 3;
 constexpr double kGap = 5.0;
 constexpr double kRingStep = 9.0;
 // labels keep this many pixels apart
-constexpr double kPad = 1.0;
+constexpr double kPad = 3.0;
 
 // the box of `size` put in direction `d` from the anchor, `gap` pixels clear of it
 LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double gap) {
