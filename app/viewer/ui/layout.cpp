@@ -80,7 +80,9 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   ImGui::TextDisabled("%.2f ms/frame (%.0f fps), %s points", ui.frameMs,
                       ui.frameMs > 0 ? 1000.0 / ui.frameMs : 0.0,
                       grouped(renderer.pointCount()).c_str());
-  if (!ui.glInfo.empty()) ImGui::TextDisabled("%s", ui.glInfo.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  textAtSpaces(ui.glInfo);
+  ImGui::PopStyleColor();
 }
 
 // The legend alone, over the scene's lower right corner (above the caption), or where the
@@ -256,13 +258,17 @@ void rightPanel(Model& model, glm::dvec2 window, float width) {
   ImGui::End();
 }
 
-// the inspector floating over the scene's upper right corner (no right panel)
-void floatingInspector(Model& model, ScreenRect area, glm::dvec2 window) {
+// the inspector floating over the scene's upper right corner (no right panel), above the
+// legend when that sits in the corner below
+void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dvec2 window) {
   const float iw =
       std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
+  float ih = static_cast<float>(window.y) * 0.6f;
+  if (model.settings.showLegend && !ui.legendMoved)
+    ih = std::min(ih,
+                  static_cast<float>(area.size().y) - ui.legendSize[1] - ui.captionHeight - 36.0f);
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f),
-                                      ImVec2(iw, static_cast<float>(window.y) * 0.6f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, std::max(ih, 120.0f)));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("Inspector", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -388,7 +394,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   } else {
     if (model.settings.showLegend) legendOverlay(model, ui, area, window, now);
     if (model.settings.showUi && panelsOf(model).inspectable(model))
-      floatingInspector(model, area, window);
+      floatingInspector(model, ui, area, window);
   }
   toast(model, ui, area, now);
 }
