@@ -202,6 +202,10 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     visible += (sp.visibleMask >> static_cast<unsigned>(sp.classes[i])) & 1u;
   const std::size_t stride =
       std::max<std::size_t>(1, (visible + s.maxPoints - 1) / std::max<std::size_t>(s.maxPoints, 1));
+  // fewer points are drawn larger (up to the size of a light spray's), so that the thinned
+  // spray still reads as the classes' areas
+  const double size =
+      std::min(sp.size * std::sqrt(static_cast<double>(stride)), std::max<double>(sp.size, 3.5));
   std::size_t seen = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto c = static_cast<unsigned>(sp.classes[i]);
@@ -209,7 +213,7 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     const std::optional<glm::dvec3> p = s.project(sp.points[i]);
     if (!p || offScreen(std::span(&*p, 1), s.size, 4.0)) continue;
     const bool boundary = sp.classes[i] == Location::Boundary;
-    const double r = 0.5 * sp.size * (boundary ? 1.7 : 1.0);
+    const double r = 0.5 * size * (boundary ? 1.7 : 1.0);
     std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
                     "\"" + paint("fill", sp.colours[c]);
     if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
