@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
     std::cerr << "convexloc-viewer: no display (DISPLAY is not set)\n";
     return 1;
   }
-  const bool headless = !options.screenshot.empty() || options.framesGiven;
+  const bool headless = !options.screenshot.empty() || options.framesGiven || !options.svg.empty();
 
   cv::Window window;
   if (!window.open(options, headless)) return 1;
@@ -160,14 +160,15 @@ int main(int argc, char** argv) {
   while (!window.shouldClose()) {
     stats.begin();
     window.takeEvents(!headless && idle.idle());
-    style.update(model.settings, ui.pendingFontScale);  // outside the ImGui frame
+    // outside the ImGui frame; a new text size refits the scene (the panels changed width)
+    if (style.update(model.settings, ui.pendingFontScale)) model.requestFit();
     window.newFrame();
 
     const cv::FrameSize size = window.frameSize();
     model.camera2d.setViewport(size.window);
     model.camera3d.setViewport(size.window);
     const bool dropped = openDropped(model, ui);
-    if (model.takeFitRequest()) model.fit(cv::sceneArea(model, size.window));
+    if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
     if (!headless) {
       interaction.update(cv::pointerInput(window.hovered()), model);
       for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
@@ -190,6 +191,8 @@ int main(int argc, char** argv) {
     const std::string finalShot = lastFrame ? options.screenshot : "";
     if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
                                stats.seconds()))
+      exitCode = 1;
+    if (!cv::svgIfAsked(model, view, ui, lastFrame ? options.svg : "", stats.seconds()))
       exitCode = 1;
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();

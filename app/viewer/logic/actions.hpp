@@ -7,18 +7,22 @@
 namespace convexloc::viewer {
 
 enum class ActionKind : std::uint8_t {
-  Screenshot,   // a PNG of the window in the working directory
-  Fit,          // the camera fitted to the shape
-  ToggleUi,     // the panels hidden or shown
-  ToggleTheme,  // dark and light swapped
-  ClearPoint,   // the placed point (and in 3D the pinned cell) cleared
-  NewSpray,     // a spray with the next seed
-  ToggleLines,  // the 2D Lines mode (the dual problem) on or off
+  Screenshot,    // a PNG of the window in the export directory
+  Fit,           // the camera fitted to the shape
+  ToggleUi,      // the panels hidden or shown
+  ToggleTheme,   // dark and light swapped
+  ClearPoint,    // the placed point (and in 3D the pinned cell) cleared
+  NewSpray,      // a spray with the next seed
+  ToggleLines,   // the 2D Lines mode (the dual problem) on or off
+  ChooseMethod,  // the method numbered `method` (0 = the first) in the scene's list
   // the placed point's query step by step
   PrevStep,     // the previous step (from all shown: the last)
   NextStep,     // the next step (from all shown: the first)
   ToggleRadii,  // the radius filter off (paper-faithful mode) or on
-  ChooseMethod  // the method numbered `method` (0 = the first) in the scene's list
+  // presentation and vector figures
+  SaveSvg,        // the scene as an SVG file in the export directory
+  TogglePresent,  // presentation mode on or off
+  ToggleLegend,   // the legend shown or hidden
 };
 
 struct Action {

@@ -37,6 +37,12 @@ struct Settings {
   // the query step by step
   bool stepBoxVisible = true;  // the Steps window, also with the panels hidden
   bool paperMode = false;      // traces without the radius filter (the paper's query)
+  // presentation: panels hidden (P, --present), a caption over the scene, the legend shown
+  bool present = false;
+  bool showLegend = true;
+  std::string caption;
+  // how much line widths, marker sizes and label offsets grow: with the text
+  float drawScale() const { return fontScale; }
 };
 
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
@@ -50,6 +56,8 @@ class Model {
   Scene2D scene2d;
   // the 3D scene, made on first use (building it takes a moment)
   Scene3D& scene3d();
+  // the 3D scene, which must have been made (hasScene3d())
+  const Scene3D& scene3d() const { return *scene3d_; }
   bool hasScene3d() const { return scene3d_ != nullptr; }
   // shows the 2D or the 3D scene
   void show(Dim d);

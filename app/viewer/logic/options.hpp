@@ -52,6 +52,11 @@ struct Options {
   // a query, step by step
   int step = -1;       // --step K: the placed point's step K shown, from 1 (0, -1: all steps)
   bool paper = false;  // --paper: traces without the radius filter (the paper's query)
+  // presentation and vector figures
+  std::string svg;       // render, write the scene as this SVG and exit (with --screenshot too)
+  bool present = false;  // presentation mode: panels hidden, caption, legend movable
+  bool noLegend = false;
+  std::string caption;  // a caption written large over the scene
 };
 
 // the result of parsing: options, or the reason they are wrong

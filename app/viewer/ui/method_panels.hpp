@@ -74,6 +74,8 @@ void resolutionSlider(Scene& scene, const SliderText& text) {
 // the paper-faithful mode's check box (key R): the placed point traced without the radius
 // filter; greyed for the methods that have none (all but polar and cubemap)
 void paperModeCheckbox(Model& model, bool hasRadii);
+// the resolution slider's row for a method without one, as high as the slider's
+void noResolutionRow();
 
 // === Compare all methods
 
