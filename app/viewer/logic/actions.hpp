@@ -14,7 +14,12 @@ enum class ActionKind : std::uint8_t {
   ClearPoint,   // the placed point (and in 3D the pinned cell) cleared
   NewSpray,     // a spray with the next seed
   ToggleLines,  // the 2D Lines mode (the dual problem) on or off
-  ChooseMethod  // the method numbered `method` (0 = the first) in the scene's list
+  ChooseMethod,  // the method numbered `method` (0 = the first) in the scene's list
+  // a lecture's slides
+  NextSlide,
+  PreviousSlide,
+  FirstSlide,
+  LastSlide,
 };
 
 struct Action {

@@ -29,6 +29,9 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
     {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
     {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
+    // a lecture: what a presentation clicker sends
+    {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide}, {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
+    {GLFW_KEY_HOME, ActionKind::FirstSlide},     {GLFW_KEY_END, ActionKind::LastSlide},
 };
 // keys 1..5 choose a method
 constexpr int kMethodKeys = 5;
