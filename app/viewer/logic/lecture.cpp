@@ -107,7 +107,7 @@ class LectureReader {
 
   // the last slide checked as a whole; the lecture, or the problem
   ParsedLecture finish() {
-    if (error_.empty()) finishSlide();
+    if (error_.empty() && !out_.slides.empty()) finishSlide();
     if (error_.empty() && out_.slides.empty()) fail("no slides (start one with: slide TITLE)");
     ParsedLecture r;
     r.error = error_;

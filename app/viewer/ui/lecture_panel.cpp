@@ -87,7 +87,7 @@ bool startLecture(Model& model, UiState& ui, const Options& options, bool headle
     return true;
   }
   ui.show.lecture = std::move(parsed.lecture);
-  const std::string problem = ui.show.go(model, 0);
+  const std::string problem = showSlideNow(model, ui, 0);
   if (!problem.empty() && headless) {
     std::cerr << "convexloc-viewer: " << options.lecture << ": slide 1: " << problem << "\n";
     return false;
@@ -95,8 +95,19 @@ bool startLecture(Model& model, UiState& ui, const Options& options, bool headle
   return true;
 }
 
-void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k) {
+std::string showSlideNow(Model& model, UiState& ui, std::ptrdiff_t k) {
   const std::string problem = ui.show.go(model, k);
+  ui.compare2d.clear();
+  ui.compare3d.clear();
+  if (ui.show.active() && ui.show.slide().options.compare) {
+    if (model.dim == Dim::Two) ui.compare2d = model.scene2d.compare();
+    if (model.dim == Dim::Three) ui.compare3d = model.scene3d().compare();
+  }
+  return problem;
+}
+
+void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k) {
+  const std::string problem = showSlideNow(model, ui, k);
   if (!problem.empty()) model.fail("slide " + std::to_string(ui.show.current + 1) + ": " + problem);
 }
 

@@ -4,6 +4,9 @@
 // opening --lecture or --figure at start.
 #pragma once
 
+#include <cstddef>
+#include <string>
+
 #include "logic/actions.hpp"
 #include "logic/camera2d.hpp"
 #include "logic/model.hpp"
@@ -15,6 +18,10 @@ namespace convexloc::viewer {
 // lecture. A bad lecture becomes the model's error (a toast); `headless` runs print it
 // and get false (nothing is to be written).
 bool startLecture(Model& model, UiState& ui, const Options& options, bool headless);
+
+// Shows slide k of the lecture (clamped), with the method comparison the slide asks for
+// (`compare`); the first problem, or an empty string.
+std::string showSlideNow(Model& model, UiState& ui, std::ptrdiff_t k);
 
 // shows slide k of the lecture (clamped); a problem becomes the model's error
 void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k);

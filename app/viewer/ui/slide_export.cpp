@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "ui/lecture_panel.hpp"
 #include "ui/screenshot.hpp"
 
 namespace convexloc::viewer {
@@ -26,7 +27,7 @@ bool SlideExporter::afterFrame(Model& model, UiState& ui, int width, int height)
     finished_ = true;
     return true;
   }
-  const std::string problem = ui.show.go(model, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
+  const std::string problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
   if (!problem.empty()) {
     std::cerr << "convexloc-viewer: slide " << ui.show.current + 1 << ": " << problem << "\n";
     return false;
