@@ -202,3 +202,14 @@ TEST(Defects, HelpNamesEveryKey) {
                           "--slice AXIS=V|none", "--y-gap"})
     EXPECT_NE(help.find(key), std::string::npos) << key;
 }
+
+TEST(Defects, DocsTinyEdgesExampleShowsTheBisection) {
+  // docs/viewer.md: --preset tiny-edges --probe 0.99,0.96 (a crowded cell, past its radii)
+  cv::Model m;
+  ASSERT_EQ(m.apply(parsed({"--preset", "tiny-edges", "--probe", "0.99,0.96"})), "");
+  ASSERT_TRUE(m.scene2d.probe());
+  const auto& t = m.scene2d.probe()->trace;
+  EXPECT_TRUE(t.crowded);
+  EXPECT_FALSE(t.byRadius);
+  EXPECT_GE(t.rays.size(), 2u);
+}
