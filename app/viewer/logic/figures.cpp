@@ -36,7 +36,7 @@ constexpr Figure kFigures[kFigureCount] = {
      "--hide-ui"},
     {"Fig. 6  Polar slabs: O(1)",
      "From x_T the octant and the slab follow from the direction to x; one edge test decides.",
-     "--generate random --n 8 --seed 3 --method polar --probe -0.3,-0.45 --spray 0 "
+     "--generate random --n 8 --seed 3 --method polar --probe 0.0,-0.45 --spray 0 "
      "--theme light --font-scale 2 --hide-ui"},
     {"Fig. 7  Spherical subdivision of a polyhedron",
      "Cells around x_T on the bounding cube: a typical cell lists one face, a cell where "
