@@ -213,3 +213,11 @@ TEST(Defects, DocsTinyEdgesExampleShowsTheBisection) {
   EXPECT_FALSE(t.byRadius);
   EXPECT_GE(t.rays.size(), 2u);
 }
+
+TEST(Lecture, AFigureSlideWithoutCaptionSaysWhatTheFigureShows) {
+  const cv::ParsedLecture p =
+      cv::parseLecture("slide A\nfigure 3\nslide B\nfigure 3\ncaption mine\n", "t.lecture");
+  ASSERT_EQ(p.error, "");
+  EXPECT_EQ(p.lecture.slides[0].caption, cv::figure(3).caption);
+  EXPECT_EQ(p.lecture.slides[1].caption, "mine");
+}

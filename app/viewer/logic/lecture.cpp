@@ -141,6 +141,8 @@ class LectureReader {
       return fail("slide '" + s.title + "': " + inLectureWords(p.error));
     }
     s.options = std::move(p.options);
+    // a figure's slide without a caption of its own says what the figure shows
+    if (s.caption.empty() && s.options.figure) s.caption = figure(*s.options.figure).caption;
     return true;
   }
 

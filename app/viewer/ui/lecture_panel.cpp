@@ -129,7 +129,7 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
   }
   const Slide& s = ui.show.slide();
   const std::size_t count = ui.show.lecture.slides.size();
-  const float w = std::min(static_cast<float>(area.size().x) * 0.55f, ImGui::GetFontSize() * 40.0f);
+  const float w = std::min(static_cast<float>(area.size().x) * 0.7f, ImGui::GetFontSize() * 44.0f);
   // at the window's top, not the area's: the area starts below the card
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 12.0f, 12.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(w, 1e6f));
