@@ -25,7 +25,9 @@
 #include "platform/input.hpp"
 #include "platform/window.hpp"
 #include "ui/layout.hpp"
+#include "ui/lecture_panel.hpp"
 #include "ui/screenshot.hpp"
+#include "ui/slide_export.hpp"
 #include "ui/style.hpp"
 
 #ifndef CONVEXLOC_SHADER_DIR
@@ -128,7 +130,8 @@ int main(int argc, char** argv) {
     std::cerr << "convexloc-viewer: no display (DISPLAY is not set)\n";
     return 1;
   }
-  const bool headless = !options.screenshot.empty() || options.framesGiven || !options.svg.empty();
+  const bool headless = !options.screenshot.empty() || !options.svg.empty() ||
+                        options.framesGiven || !options.exportDir.empty();
 
   cv::Window window;
   if (!window.open(options, headless)) return 1;
@@ -143,6 +146,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   cv::UiState ui = startUi(model, options, gl, samples);
+  if (!cv::startLecture(model, ui, options, headless)) return 1;
+  cv::SlideExporter exporter(options.exportDir);
   cv::StyleKeeper style(model.settings, window.contentScale());
   cv::Renderer renderer;
   const std::string shaderDir = shaderDirFor(options, argv[0]);
@@ -187,7 +192,12 @@ int main(int argc, char** argv) {
     window.renderImGui();
 
     stats.count();
-    const bool lastFrame = headless && stats.frames() >= options.frames;
+    bool lastFrame = headless && stats.frames() >= options.frames;
+    if (exporter.active()) {  // --export: every slide written, then the run ends
+      if (!exporter.afterFrame(model, ui, size.framebufferWidth, size.framebufferHeight))
+        exitCode = 1;
+      lastFrame = exporter.finished() || exitCode != 0;
+    }
     const std::string finalShot = lastFrame ? options.screenshot : "";
     if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
                                stats.seconds()))

@@ -23,6 +23,11 @@ enum class ActionKind : std::uint8_t {
   SaveSvg,        // the scene as an SVG file in the export directory
   TogglePresent,  // presentation mode on or off
   ToggleLegend,   // the legend shown or hidden
+  // a lecture's slides
+  NextSlide,
+  PreviousSlide,
+  FirstSlide,
+  LastSlide,
 };
 
 struct Action {

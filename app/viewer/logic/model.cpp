@@ -153,6 +153,7 @@ std::string Model::apply(const Options& o) {
   // the query step by step: the mode first (it traces again), then the step
   setPaperMode(o.paper);
   setStep(o.step >= 1 ? o.step - 1 : -1);
+  applyFigureOptions(o);
   collectErrors();
   requestFit();
   return firstProblem_;
@@ -270,6 +271,43 @@ void Model::setPaperMode(bool on) {
   settings.paperMode = on;
   scene2d.setTraceOptions({.radii = !on});
   if (scene3d_) scene3d_->setTraceOptions({.radii = !on});
+void Model::applyFigureOptions(const Options& o) {
+  if (o.yGap) settings.view2d.showGap = true;
+  if (o.hideSlice) settings.view3d.showSlice = false;
+  if (dim != Dim::Three || (!o.cellAuto && !o.cellSecond)) return;
+  Scene3D& s3 = scene3d();
+  if (o.cellAuto) {
+    const auto [one, many] = s3.typicalCells();
+    s3.pin(one);
+    s3.pinSecond(many);
+  } else if (*o.cellSecond < s3.cells().size()) {
+    s3.pinSecond(static_cast<std::ptrdiff_t>(*o.cellSecond));
+  } else {
+    note("--cell " + std::to_string(*o.cellSecond) + ": the scene has " +
+         std::to_string(s3.cells().size()) + " cells");
+  }
+}
+
+void Model::reset() {
+  const Versions seen2 = scene2d.versions();
+  scene2d = Scene2D();
+  scene2d.followVersions(seen2);
+  seen2d_ = scene2d.errorSerial();
+  if (scene3d_) {
+    const Versions seen3 = scene3d_->versions();
+    scene3d_ = std::make_unique<Scene3D>();
+    scene3d_->followVersions(seen3);
+    seen3d_ = scene3d_->errorSerial();
+  }
+  lines2d.clearLine();
+  lines2d.setEnabled(false);
+  dim = Dim::Two;
+  settings.pointSize = 0.0f;
+  settings.visibleMask = kAllClasses;
+  settings.view2d = View2DOptions{};
+  settings.view3d = View3DOptions{};
+  pendingView.reset();
+  requestFit();
 }
 
 void Model::setLinesMode(bool on) {

@@ -43,6 +43,8 @@ struct Settings {
   std::string caption;
   // how much line widths, marker sizes and label offsets grow: with the text
   float drawScale() const { return fontScale; }
+  // a lecture's slide card over the scene's top, in window pixels: the scene fits below it
+  float slideCardHeight = 0.0f;
 };
 
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
@@ -78,6 +80,10 @@ class Model {
   // Applies the command line's scene settings (shape, method, spray, probe, ...). Returns
   // an empty string, or what went wrong (the scene then keeps what could be applied).
   std::string apply(const Options& o);
+  // Puts back the viewer's default scenes and drawing options (not the theme, the text
+  // size, the panels or the recent files), so that what one slide set does not leak into
+  // the next.
+  void reset();
 
   // the camera is fitted to the shape at the next frame (the UI knows the free area)
   void requestFit() { fitPending_ = true; }
@@ -120,6 +126,8 @@ class Model {
   void applyToScene(Scene& scene, const Options& o, std::optional<Method> method);
   void apply2d(const Options& o, bool method3d);
   void apply3d(const Options& o, bool method3d);
+  // --y-gap, --slice none, --cell auto or K,L: the paper's figures
+  void applyFigureOptions(const Options& o);
   // a problem apply() reports (the first one is returned), and a scene's last error as one
   void note(const std::string& problem);
   void noteSceneError();

@@ -3,6 +3,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <vector>
+
+#include "logic/figures.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -63,6 +66,8 @@ constexpr Flag kFlags[] = {
     {"--hide-ui", &Options::hideUi},  {"--no-xvfb", &Options::noXvfb},
     {"--animate", &Options::animate}, {"--compare", &Options::compare},
     {"--3d", &Options::solid},
+    // lectures and the paper's figures
+    {"--y-gap", &Options::yGap},
 };
 
 // The arguments, read one at a time: an option's value is the next argument. A step
@@ -188,15 +193,33 @@ bool solidOption(std::string_view a, ArgReader& in, Options& o) {
   if (a == "--slice") {
     // AXIS=VALUE, e.g. z=0.25
     SlicePlane s;
-    if (!in.value(v) || v.size() < 3 || v[1] != '=' ||
+    if (in.value(v) && v == "none") {
+      o.hideSlice = true;
+      return true;
+    }
+    if (v.size() < 3 || v[1] != '=' ||
         (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') || !parseDouble(v.substr(2), s.offset))
-      return in.fail("--slice needs AXIS=VALUE, e.g. z=0.25");
+      return in.fail("--slice needs AXIS=VALUE, e.g. z=0.25, or none");
     s.axis = v[0] - 'x';
     o.slice = s;
+    o.hideSlice = false;
   } else if (a == "--cell") {
-    std::size_t k = 0;
-    if (!in.value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
-      return in.fail("--cell needs a cell index");
+    std::size_t k = 0, l = 0;
+    const bool given = in.value(v);
+    const std::size_t comma = given ? v.find(',') : std::string_view::npos;
+    o.cellAuto = given && v == "auto";
+    o.cellSecond.reset();
+    if (o.cellAuto) {
+      o.cell.reset();
+      return true;
+    }
+    if (comma != std::string_view::npos &&
+        parseInt<std::size_t>(v.substr(comma + 1), 0, std::size_t{1} << 40, l)) {
+      o.cellSecond = l;
+      v = v.substr(0, comma);
+    }
+    if (!given || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
+      return in.fail("--cell needs a cell index, two (K,L) or auto");
     o.cell = k;
   } else {
     return false;
@@ -296,23 +319,56 @@ std::string conflicts(const Options& o) {
   if (!o.shape.empty() && (o.preset || o.generate))
     return "give a shape file, --preset or --generate, not several";
   if (o.preset && o.generate) return "give --preset or --generate, not both";
+  if (!o.exportDir.empty() && o.lecture.empty() && !o.figure)
+    return "--export needs --lecture FILE or --figure N";
   return {};
+}
+
+bool lectureOption(std::string_view a, ArgReader& in, Options& o);
+
+// every argument into `o`, in order; the first problem, or an empty string
+std::string parseInto(std::span<const std::string_view> args, Options& o) {
+  ArgReader in(args);
+  while (!in.done() && in.error.empty()) {
+    const std::string_view a = in.take();
+    if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
+        !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
+        !batchOption(a, in, o) && !stepOption(a, in, o) && !presentOption(a, in, o) &&
+        !lectureOption(a, in, o))
+      in.error = shapeArgument(a, o);
+  }
+  return in.error;
+}
+
+// --figure N (its options, which later ones override), --lecture, --export
+bool lectureOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--figure") {
+    int n = 0;
+    if (!in.value(v) || !parseInt<int>(v, 1, kFigureCount, n))
+      return in.fail("--figure needs a figure number from 1 to " + std::to_string(kFigureCount));
+    const std::vector<std::string> words = figureArgs(n);
+    const std::vector<std::string_view> args(words.begin(), words.end());
+    if (std::string e = parseInto(args, o); !e.empty()) return in.fail("--figure: " + e);
+    o.figure = n;
+  } else if (a == "--lecture") {
+    if (!in.value(v) || v.empty()) return in.fail("--lecture needs a .lecture file");
+    o.lecture = std::string(v);
+  } else if (a == "--export") {
+    if (!in.value(v) || v.empty()) return in.fail("--export needs a directory");
+    o.exportDir = std::string(v);
+  } else {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
 
 ParsedOptions parseOptions(std::span<const std::string_view> args) {
   ParsedOptions r;
-  Options& o = r.options;
-  ArgReader in(args);
-  while (!in.done() && in.error.empty()) {
-    const std::string_view a = in.take();
-    if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
-        !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
-        !batchOption(a, in, o) && !stepOption(a, in, o) && !presentOption(a, in, o))
-      in.error = shapeArgument(a, o);
-  }
-  r.error = in.error.empty() ? conflicts(o) : in.error;
+  r.error = parseInto(args, r.options);
+  if (r.error.empty()) r.error = conflicts(r.options);
   return r;
 }
 
@@ -328,7 +384,8 @@ Scene:
                         halfspace | walk | cubemap (3D)
   --resolution R        uniform slabs, polar slabs per octant, cube grid size (0: automatic)
   --preset NAME         degenerate gallery: sliver, tiny-edges, large-offset,
-                        collinear-duplicate, thin-slab, tiny-faces, coplanar-faces
+                        collinear-duplicate, thin-slab, small-gap, tiny-faces,
+                        coplanar-faces
   --generate KIND       a generated shape (regular, random, ellipse, sliver, ...) with
   --n N --seed S        its size and seed
   --spray N             spray N points (0 .. 10^7; 1e6 works) classified by the locator
@@ -341,14 +398,23 @@ Scene:
                         (X1, Y1) and (X2, Y2)
   --view X,Y,W          2D: look at (X, Y), the scene W wide (zoom in on tiny things)
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
-  --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
-  --cell K              3D: pin cube-map cell K (its pyramid and the faces it lists)
+  --slice AXIS=V|none   3D: the slicing plane, e.g. z=0.25; none hides it
+  --cell K[,L]|auto     3D: pin cube-map cell K (its pyramid and the faces it lists), and L
+                        beside it; auto: a cell listing one face and one listing the most
+  --y-gap               2D: mark the smallest y-gap between vertices and the uniform slab
+                        count the paper's rule (ymax - ymin) / gap needs
 Step by step:
   --step K              show step K (1 = the first) of the placed point's query, highlighted
                         in the drawing and the Steps window (beyond the last: the last;
                         0 or -1: all steps)
   --paper               paper-faithful mode: polar and cubemap queries without the radius
                         filter, so the cell's edges (faces) decide (key R toggles it)
+Lectures:
+  --figure N            the paper's figure N (1..7) as a slide; later options override it
+  --lecture FILE        a slide show (.lecture, see docs/viewer.md): PageDown / PageUp,
+                        Home / End move through it
+  --export DIR          with --lecture or --figure: write every slide as DIR/slide-NN.png
+                        and exit
 View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
@@ -371,10 +437,11 @@ Without hands:
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
-Keys: F fit, H hide panels, 1..5 method, L lines mode, Space new spray, Esc clear the
-point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode, G legend; Left/Right
-previous/next step of the placed point's query, R the radius filter on/off (paper-faithful
-mode).
+Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode, Space new
+spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode, G
+legend; Left/Right previous/next step of the placed point's query, R the radius filter
+on/off (paper-faithful mode); in a lecture PageDown / PageUp next and previous slide,
+Home / End first and last.
 )";
 }
 

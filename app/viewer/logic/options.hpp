@@ -57,6 +57,14 @@ struct Options {
   bool present = false;  // presentation mode: panels hidden, caption, legend movable
   bool noLegend = false;
   std::string caption;  // a caption written large over the scene
+  // lectures and the paper's figures
+  std::optional<int> figure;              // --figure N: start from the paper's figure N
+  std::string lecture;                    // --lecture FILE: a slide show
+  std::string exportDir;                  // --export DIR: every slide (or the figure) as PNG
+  bool yGap = false;                      // 2D: mark the smallest y-gap and its slab count
+  bool hideSlice = false;                 // 3D: --slice none
+  bool cellAuto = false;                  // 3D: --cell auto (a one-face and a crowded cell)
+  std::optional<std::size_t> cellSecond;  // 3D: --cell K,L pins L beside K
 };
 
 // the result of parsing: options, or the reason they are wrong

@@ -24,6 +24,9 @@ constexpr Preset kPresets[] = {
     {"thin-slab", "Thin slab",
      "Two vertices 10^-12 apart in y: a slab that thin, and uniform slabs listing extra edges.",
      false, Method2D::Uniform},
+    {"small-gap", "Small y-gap",
+     "Two vertices 0.05 apart in y: the paper's uniform slabs must be that thin (Fig. 5).",
+     false, Method2D::Uniform},
     {"tiny-faces", "Tiny faces",
      "A cube with one corner rounded by a cap of tiny triangles (areas 10^10 apart): the "
      "cube map refines its cells there as a quadtree.",
@@ -54,6 +57,9 @@ std::vector<Vec2> presetPolygon(std::string_view name) {
   if (name == "thin-slab")
     return {{0.0, -1.0}, {1.8, -0.4},         {2.2, 0.5},  {1.2, 1.4},
             {-1.0, 1.3}, {-2.0, 0.5 + 1e-12}, {-1.5, -0.5}};
+  if (name == "small-gap")
+    return {{0.0, -1.0}, {1.8, -0.4},         {2.2, 0.5},  {1.2, 1.4},
+            {-1.0, 1.3}, {-2.0, 0.5 + 0.05}, {-1.5, -0.5}};
   return {};
 }
 

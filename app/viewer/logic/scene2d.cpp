@@ -16,6 +16,22 @@ constexpr std::uint64_t kDefaultSeed = 7;
 constexpr std::size_t kDefaultSpray = 3000;
 constexpr std::uint32_t kDefaultPolarSlabs = 8;
 
+// Core counts input vertices from 1 (as lines of a file); the viewer labels them from 0.
+// A drag's message names every "vertex K" as the label on the drawing, K - 1.
+std::string countedFromZero(std::string message) {
+  const std::string word = "vertex ";
+  for (std::size_t at = message.find(word); at != std::string::npos;
+       at = message.find(word, at + 1)) {
+    const std::size_t digits = at + word.size();
+    std::size_t end = digits;
+    while (end < message.size() && message[end] >= '0' && message[end] <= '9') ++end;
+    if (end == digits || end - digits > 18) continue;
+    const unsigned long long k = std::stoull(message.substr(digits, end - digits));
+    if (k > 0) message.replace(digits, end - digits, std::to_string(k - 1));
+  }
+  return message;
+}
+
 }  // namespace
 
 std::vector<Vec2> Traits2D::sprayPoints(const ConvexPolygon& p, std::size_t n, std::uint64_t seed,
@@ -149,7 +165,7 @@ bool Scene2D::dragTo(Vec2 p) {
     return true;
   } catch (const Error& e) {
     drag_->rejected = true;
-    drag_->message = e.what();
+    drag_->message = countedFromZero(e.what());
   }
   return false;
 }

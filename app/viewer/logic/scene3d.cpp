@@ -43,7 +43,9 @@ bool Scene3D::adoptShape(ConvexPolyhedron poly, std::string label) {
   // the slicing plane through the middle of the new box
   const Bounds3 b = bounds();
   slice_.offset = b.middle()[slice_.axis];
-  pinned_ = hovered_ = -1;
+  pinned_ = pinned2_ = hovered_ = -1;
+  pinKey_.reset();
+  pinKey2_.reset();
   probe_.reset();
   resection();
   if (!points_.empty()) spray(spray_);
@@ -72,7 +74,9 @@ Bounds3 Scene3D::bounds() const {
 
 void Scene3D::cellsChanged() {
   hovered_ = -1;
-  if (pinned_ >= static_cast<std::ptrdiff_t>(cells_.size())) pinned_ = -1;
+  // the pinned cells come back where the new cells hold them (a method switched back)
+  pinned_ = findCell(pinKey_);
+  pinned2_ = findCell(pinKey2_);
   resection();
 }
 
@@ -228,9 +232,62 @@ void Scene3D::hover(std::optional<Ray3> ray) {
 
 void Scene3D::pin(std::ptrdiff_t cell) {
   if (cell >= static_cast<std::ptrdiff_t>(cells_.size())) cell = -1;
+  pinKey_ = keyOf(cell);
+  if (cell < 0) pinSecond(-1);
   if (cell == pinned_) return;
   pinned_ = cell;
   ++versions_.overlay;
+}
+
+void Scene3D::pinSecond(std::ptrdiff_t cell) {
+  if (cell >= static_cast<std::ptrdiff_t>(cells_.size())) cell = -1;
+  pinKey2_ = keyOf(cell);
+  if (cell == pinned2_) return;
+  pinned2_ = cell;
+  ++versions_.overlay;
+}
+
+std::optional<Scene3D::CellKey> Scene3D::keyOf(std::ptrdiff_t cell) const {
+  if (cell < 0 || cell >= static_cast<std::ptrdiff_t>(cells_.size())) return std::nullopt;
+  const Cell3D& c = cells_[static_cast<std::size_t>(cell)];
+  return CellKey{c.cubeFace, c.level, c.i, c.j, effectiveResolution()};
+}
+
+std::ptrdiff_t Scene3D::findCell(const std::optional<CellKey>& key) const {
+  if (!key || key->grid != effectiveResolution()) return -1;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const Cell3D& c = cells_[k];
+    if (c.cubeFace == key->cubeFace && c.level == key->level && c.i == key->i && c.j == key->j)
+      return static_cast<std::ptrdiff_t>(k);
+  }
+  return -1;
+}
+
+std::pair<std::ptrdiff_t, std::ptrdiff_t> Scene3D::typicalCells() const {
+  // the crowded one first: the most faces, then the single-face cell farthest from it
+  std::ptrdiff_t many = -1, one = -1;
+  std::size_t most = 1;
+  for (std::size_t k = 0; k < cells_.size(); ++k)
+    if (cells_[k].faces.size() > most) {
+      most = cells_[k].faces.size();
+      many = static_cast<std::ptrdiff_t>(k);
+    }
+  double far = -1.0;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const Cell3D& c = cells_[k];
+    if (c.faces.size() != 1) continue;
+    double d = 0.0;
+    if (many >= 0) {
+      const Cell3D& m = cells_[static_cast<std::size_t>(many)];
+      if (c.cubeFace != m.cubeFace) continue;
+      d = std::hypot(c.s0 - m.s0, c.t0 - m.t0);
+    }
+    if (d > far) {
+      far = d;
+      one = static_cast<std::ptrdiff_t>(k);
+    }
+  }
+  return {one, many};
 }
 
 }  // namespace convexloc::viewer

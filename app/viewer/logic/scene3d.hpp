@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -96,21 +97,38 @@ class Scene3D : public SceneState<Traits3D> {
   // === Cells under the cursor and pinned: positions in cells(), -1 for none
   void hover(std::optional<Ray3> ray);
   std::ptrdiff_t hoveredCell() const { return hovered_; }
+  // Pins a cell (-1: none, which also drops the second). A pinned cell survives a switch
+  // to a method without cells and back: the same cell of the same grid is pinned again.
   void pin(std::ptrdiff_t cell);
   std::ptrdiff_t pinnedCell() const { return pinned_; }
+  // a second pinned cell, shown beside the first (a figure compares two cells); -1: none
+  void pinSecond(std::ptrdiff_t cell);
+  std::ptrdiff_t secondPinnedCell() const { return pinned2_; }
+  // a cell listing exactly one face and a cell listing the most faces on the same cube
+  // face, far apart (-1 where there is none): the paper's Fig. 7
+  std::pair<std::ptrdiff_t, std::ptrdiff_t> typicalCells() const;
   // the cell whose square on the drawing cube the ray leaves it by (the far side), or -1
   std::ptrdiff_t pickCell(const Ray3& ray) const;
 
  private:
   void cellsChanged() override;
   bool adoptShape(ConvexPolyhedron poly, std::string label) override;
-  void dropChosenCell() override { pinned_ = -1; }
+  void dropChosenCell() override { pinned_ = pinned2_ = -1; }
   void resection();
+  // a cell by its place on the cube and the grid size, to pin it again in new cells
+  struct CellKey {
+    int cubeFace = 0, level = 0;
+    std::uint32_t i = 0, j = 0, grid = 0;
+  };
+  std::optional<CellKey> keyOf(std::ptrdiff_t cell) const;
+  std::ptrdiff_t findCell(const std::optional<CellKey>& key) const;
 
   SlicePlane slice_;
   Section section_;
   std::ptrdiff_t hovered_ = -1;
   std::ptrdiff_t pinned_ = -1;
+  std::ptrdiff_t pinned2_ = -1;
+  std::optional<CellKey> pinKey_, pinKey2_;  // the pinned cells, by place
 };
 
 // conversions between core's points and GLM's vectors

@@ -158,6 +158,11 @@ class SceneState {
   void setError(std::string message);
 
   const Versions& versions() const { return versions_; }
+  // every part counted as changed since `before`: a fresh scene put in place of another
+  void followVersions(const Versions& before) {
+    versions_ = {before.shape + 1, before.structure + 1, before.points + 1, before.overlay + 1,
+                 before.section + 1};
+  }
 
  protected:
   // Builds the locator of the current shape, method and resolution again, then what

@@ -9,6 +9,7 @@
 #include "logic/camera2d.hpp"
 #include "logic/steps.hpp"
 #include "logic/text.hpp"
+#include "logic/y_gap.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -456,6 +457,7 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
     strokeEdge(scene.polygon(), e, pal.polygonEdge, 2.25f, out);
   if (opt.showCentre) markCentre(scene, pal, opt, out);
   vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
+  if (opt.showGap) drawYGap(scene, pal, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,

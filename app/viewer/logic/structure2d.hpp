@@ -22,6 +22,7 @@ struct View2DOptions {
   bool showLabels = true;     // vertex, octant and edge numbers where they fit
   bool showHandles = true;    // vertex handles (drag to edit)
   bool showCentre = true;     // the method's centre x_T (off in the Lines mode)
+  bool showGap = false;       // the smallest y-gap marked, with the paper's slab count
 };
 
 // limits above which the drawing thins out (the scene stays exact, only less is drawn)

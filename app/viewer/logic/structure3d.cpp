@@ -269,7 +269,10 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
       for (std::uint32_t f : c.faces) out.label(faceMiddle(p, f), numbered("f", f), colour);
   };
   showCell(scene.pinnedCell(), pal.crowded);
-  if (scene.hoveredCell() != scene.pinnedCell()) showCell(scene.hoveredCell(), pal.hoverEdge);
+  if (scene.secondPinnedCell() != scene.pinnedCell())
+    showCell(scene.secondPinnedCell(), pal.inside);
+  if (scene.hoveredCell() != scene.pinnedCell() && scene.hoveredCell() != scene.secondPinnedCell())
+    showCell(scene.hoveredCell(), pal.hoverEdge);
 
   if (const auto& probe = scene.probe(); probe && scene.step() >= 0) {
     probeSteps3D(scene, *probe, pal, opt, out);  // the query step by step

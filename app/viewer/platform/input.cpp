@@ -31,6 +31,9 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
     {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
     {GLFW_KEY_G, ActionKind::ToggleLegend},
+    // a lecture: what a presentation clicker sends
+    {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide}, {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
+    {GLFW_KEY_HOME, ActionKind::FirstSlide},     {GLFW_KEY_END, ActionKind::LastSlide},
 };
 // keys 1..5 choose a method
 constexpr int kMethodKeys = 5;

@@ -12,6 +12,7 @@
 
 #include "logic/label_layout.hpp"
 #include "logic/text.hpp"
+#include "ui/lecture_panel.hpp"
 #include "ui/panels2d.hpp"
 #include "ui/panels3d.hpp"
 #include "ui/steps_panel.hpp"
@@ -244,6 +245,7 @@ void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window)
   dimensionButtons(model);
   scenePanels(model, ui);
   if (ImGui::CollapsingHeader("View")) viewPanel(model, renderer, ui);
+  lecturePanel(model, ui);
   hints(model);
   ImGui::End();
 }
@@ -315,7 +317,8 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
 }
 
 ScreenRect sceneArea(const Model& model, glm::dvec2 window) {
-  return {{static_cast<double>(leftPanelWidth(model, window)), 0.0},
+  return {{static_cast<double>(leftPanelWidth(model, window)),
+           static_cast<double>(model.settings.slideCardHeight)},
           {window.x - static_cast<double>(rightPanelWidth(model, window)), window.y}};
 }
 
@@ -333,6 +336,9 @@ void scanAssets(UiState& ui) {
 }
 
 void perform(const Action& action, Model& model, UiState& ui) {
+  // the panel's settings, taken from the scene first where the scene's changed
+  followSpray(ui, model.dim == Dim::Two ? model.scene2d.spraySettings()
+                                        : model.scene3d().spraySettings());
   const SpraySettings spray{static_cast<std::size_t>(ui.sprayCount), ui.spraySeed + 1,
                             ui.sprayNear};
   switch (action.kind) {
@@ -384,6 +390,11 @@ void perform(const Action& action, Model& model, UiState& ui) {
       else if (action.method < static_cast<int>(std::size(kAllMethods3D)))
         model.scene3d().setMethod(kAllMethods3D[action.method]);
       break;
+    // a lecture's slides
+    case ActionKind::NextSlide:
+    case ActionKind::PreviousSlide:
+    case ActionKind::FirstSlide:
+    case ActionKind::LastSlide: moveSlide(action.kind, model, ui); break;
   }
 }
 
@@ -402,6 +413,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
       floatingInspector(model, ui, area, window);
   }
   stepsWindow(model, area, now);  // also with the panels hidden
+  slideCard(model, ui, area);
   toast(model, ui, area, now);
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include <imgui.h>
 
@@ -129,7 +130,8 @@ void viewOptions3D(Model& model) {
 
 bool inspectable3D(Model& model) {
   const Scene3D& s = model.scene3d();
-  return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.probe().has_value();
+  return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.secondPinnedCell() >= 0 ||
+         s.probe().has_value();
 }
 
 constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
@@ -160,6 +162,14 @@ void legend3D(Model& model) {
     swatchLine(pal.cube, false, 1.0f);
     ImGui::Text("cube-map grid around x_T");
   }
+  // the pinned cells: their pyramids from x_T and the faces they list
+  for (const auto& [k, colour] : {std::pair{scene.pinnedCell(), pal.crowded},
+                                  std::pair{scene.secondPinnedCell(), pal.inside}}) {
+    if (k < 0) continue;
+    const std::size_t faces = scene.cells()[static_cast<std::size_t>(k)].faces.size();
+    swatchBox(withAlpha(colour, 0.25f), colour);
+    ImGui::Text("cell %td: its pyramid lists %zu face%s", k, faces, faces == 1 ? "" : "s");
+  }
   if (model.settings.view3d.showSlice && section) {
     swatchBox(withAlpha(pal.inside, 0.45f), withAlpha(pal.inside, 0.8f));
     ImGui::Text("section: inside, per core");
@@ -184,6 +194,11 @@ void inspector3D(Model& model, bool hints) {
     ImGui::TextColored(im(pal.crowded), "Pinned cell");
     cellText(cells[static_cast<std::size_t>(scene.pinnedCell())]);
     if (ImGui::SmallButton("Unpin")) scene.pin(-1);
+  }
+  if (scene.secondPinnedCell() >= 0) {
+    ImGui::Spacing();
+    ImGui::TextColored(im(pal.inside), "Second pinned cell");
+    cellText(cells[static_cast<std::size_t>(scene.secondPinnedCell())]);
   }
   placedPoint(scene, pal, hints, "click on the slicing plane to place a point and follow its query",
               [&](const Probe3D& probe) {

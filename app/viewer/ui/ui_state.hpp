@@ -2,10 +2,13 @@
 // loop to do (it owns the window and the GL context).
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "logic/lecture.hpp"
 #include "logic/scene2d.hpp"
 #include "logic/scene3d.hpp"
 
@@ -60,7 +63,24 @@ struct UiState {
   // timing, for the View panel
   double frameMs = 0.0;
   std::string glInfo;
+
+  // the lecture (or the paper's figure) shown, and the spray settings the Points panel last
+  // took from the scene
+  SlideShow show;
+  SpraySettings sprayFollowed{~std::size_t{0}, 0, false};
 };
+
+// The Points panel's spray settings follow the scene's whenever the scene's change (a
+// --spray, a slide, a new scene), so that the panel, Spray and Space go on from the spray
+// shown; edits in the panel stay until the scene's settings change again.
+inline void followSpray(UiState& ui, const SpraySettings& s) {
+  const SpraySettings& f = ui.sprayFollowed;
+  if (s.count == f.count && s.seed == f.seed && s.nearBoundary == f.nearBoundary) return;
+  ui.sprayFollowed = s;
+  ui.sprayCount = static_cast<int>(std::min<std::size_t>(s.count, 10000000));
+  ui.spraySeed = s.seed;
+  ui.sprayNear = s.nearBoundary;
+}
 
 class Model;
 

@@ -51,6 +51,7 @@ void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size
 // === Points: spray settings and buttons, counts, filters, point size (2D and 3D alike)
 template <class Scene>
 void pointsPanel(Model& model, UiState& ui, Scene& scene) {
+  followSpray(ui, scene.spraySettings());
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::SliderInt("##count", &ui.sprayCount, 1000, 1000000, "%d points",
                    ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);

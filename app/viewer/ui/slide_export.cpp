@@ -1,0 +1,38 @@
+// convexloc-viewer — writing every slide.
+#include "ui/slide_export.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "ui/lecture_panel.hpp"
+#include "ui/screenshot.hpp"
+
+namespace convexloc::viewer {
+
+bool SlideExporter::afterFrame(Model& model, UiState& ui, int width, int height) {
+  if (!active() || finished_ || ++frames_ < kFramesPerSlide) return true;
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  char name[32];
+  std::snprintf(name, sizeof name, "slide-%02zu.png", ui.show.current + 1);
+  const std::string path = (std::filesystem::path(dir_) / name).string();
+  if (const std::string problem = saveScreenshot(path, width, height); !problem.empty()) {
+    std::cerr << "convexloc-viewer: " << problem << "\n";
+    return false;
+  }
+  ++written_;
+  frames_ = 0;
+  if (ui.show.current + 1 >= ui.show.lecture.slides.size()) {
+    finished_ = true;
+    return true;
+  }
+  const std::string problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
+  if (!problem.empty()) {
+    std::cerr << "convexloc-viewer: slide " << ui.show.current + 1 << ": " << problem << "\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Exports a lecture under xvfb-run and checks that every slide became a PNG; a bad lecture
+# must exit 1 and write nothing.
+# usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR
+set -euo pipefail
+xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5
+rm -rf "$out"
+"$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$lecture" --export "$out/good" \
+  --size 960x540
+slides=$(grep -c '^slide ' "$lecture")
+pngs=$(find "$out/good" -name 'slide-*.png' | wc -l)
+if [[ $slides -ne $pngs ]]; then
+  echo "expected $slides slides, found $pngs PNGs" >&2
+  exit 1
+fi
+for png in "$out"/good/slide-*.png; do
+  "$checker" "$png" --size 960x540 --not-uniform 0.0,0.0,1.0,1.0
+done
+# a bad lecture: FILE:LINE on stderr, exit 1, no PNG
+mkdir -p "$out"
+printf 'slide One\nmethod polar\nwobble 3\n' >"$out/bad.lecture"
+if "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$out/bad.lecture" \
+  --export "$out/bad" 2>"$out/bad.err"; then
+  echo "a bad lecture was exported" >&2
+  exit 1
+fi
+grep -q "bad.lecture:3: unknown key 'wobble'" "$out/bad.err"
+[[ ! -e $out/bad ]]
+echo "$pngs slides exported"

@@ -1,0 +1,223 @@
+// Lecture files, the paper's figures, and the defects met on the way: the parser's
+// FILE:LINE errors, slides that reset what the previous one set, figure presets, the drag
+// message's vertex numbers, the Points panel's spray, a pinned 3D cell across methods.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "logic/figures.hpp"
+#include "logic/lecture.hpp"
+#include "logic/model.hpp"
+#include "logic/options.hpp"
+#include "logic/y_gap.hpp"
+#include "ui/ui_state.hpp"
+
+namespace cv = convexloc::viewer;
+using convexloc::Method3D;
+using convexloc::Vec2;
+
+namespace {
+
+// the error of a lecture text named "t.lecture"
+std::string errorOf(const std::string& text) {
+  return cv::parseLecture(text, "t.lecture").error;
+}
+
+cv::Options parsed(std::vector<std::string_view> args) {
+  const cv::ParsedOptions p = cv::parseOptions(args);
+  EXPECT_EQ(p.error, "");
+  return p.options;
+}
+
+}  // namespace
+
+TEST(Lecture, ShippedLectureParsesWithEveryFigure) {
+  const cv::ParsedLecture p =
+      cv::loadLecture(std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/paper.lecture");
+  ASSERT_EQ(p.error, "");
+  EXPECT_GE(p.lecture.slides.size(), 15u);
+  std::vector<bool> seen(cv::kFigureCount + 1, false);
+  for (const cv::Slide& s : p.lecture.slides) {
+    EXPECT_FALSE(s.title.empty());
+    if (s.options.figure) seen[static_cast<std::size_t>(*s.options.figure)] = true;
+  }
+  for (int n = 1; n <= cv::kFigureCount; ++n) EXPECT_TRUE(seen[static_cast<std::size_t>(n)]) << n;
+}
+
+TEST(Lecture, SlidesKeysAndCaptions) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "# a comment\n\nslide First one\ncaption Two words, and more\nmethod wedge\n"
+      "probe 0.5,0.25\nslide Second\nfigure 4\nresolution 9\n",
+      "t.lecture");
+  ASSERT_EQ(p.error, "");
+  ASSERT_EQ(p.lecture.slides.size(), 2u);
+  const cv::Slide& a = p.lecture.slides[0];
+  EXPECT_EQ(a.title, "First one");
+  EXPECT_EQ(a.line, 3u);
+  EXPECT_EQ(a.caption, "Two words, and more");
+  EXPECT_EQ(a.options.method, "wedge");
+  ASSERT_TRUE(a.options.probe);
+  EXPECT_EQ(a.options.probe->y, 0.25);
+  EXPECT_TRUE(a.gives("probe"));
+  EXPECT_FALSE(a.gives("theme"));
+  // figure 4's settings, overridden by the key after it
+  const cv::Slide& b = p.lecture.slides[1];
+  EXPECT_EQ(b.options.figure, 4);
+  EXPECT_EQ(b.options.method, "uniform");
+  EXPECT_EQ(b.options.resolution, 9u);
+}
+
+TEST(Lecture, ErrorsNameFileAndLine) {
+  EXPECT_EQ(errorOf("slide A\nmethod polar\nwobble 3\n"), "t.lecture:3: unknown key 'wobble'");
+  EXPECT_EQ(errorOf("\n\nslide A\nresolution lots\n").rfind("t.lecture:4: resolution needs", 0),
+            0u);
+  EXPECT_EQ(errorOf("# intro\nmethod polar\nslide A\n")
+                .rfind("t.lecture:2: 'method' comes before "
+                       "any slide",
+                       0),
+            0u);
+  EXPECT_EQ(errorOf("slide A\ncaption \"never closed\nslide B\n")
+                .rfind("t.lecture:2: unterminated quote", 0),
+            0u);
+  EXPECT_EQ(errorOf("slide A\nshape \"my file.txt\n").rfind("t.lecture:2: unterminated quote", 0),
+            0u);
+  EXPECT_EQ(errorOf("slide A\nn 3 4\n").rfind("t.lecture:2: 'n' was given more values", 0), 0u);
+  EXPECT_EQ(errorOf("slide A\nsize 800x600\n").rfind("t.lecture:2: 'size' is not a slide key", 0),
+            0u);
+  EXPECT_EQ(errorOf("slide A\nfigure 9\n").rfind("t.lecture:2: figure needs", 0), 0u);
+  // options that exclude each other: the slide's line
+  EXPECT_EQ(
+      errorOf("\nslide A\npreset sliver\ngenerate regular\n").rfind("t.lecture:2: slide 'A'", 0),
+      0u);
+  EXPECT_EQ(errorOf("# nothing\n"), "t.lecture:1: no slides (start one with: slide TITLE)");
+  EXPECT_EQ(cv::loadLecture("/no/such.lecture").error, "/no/such.lecture: cannot be read");
+}
+
+TEST(Figures, EveryFigureParsesAndIsLight) {
+  for (int n = 1; n <= cv::kFigureCount; ++n) {
+    const std::string number = std::to_string(n);
+    const cv::Options o = parsed({"--figure", number});
+    EXPECT_EQ(o.figure, n);
+    EXPECT_EQ(o.theme, cv::Theme::Light) << n;
+    EXPECT_TRUE(o.hideUi) << n;
+    EXPECT_TRUE(o.method.has_value()) << n;
+    EXPECT_FALSE(cv::figure(n).caption.empty());
+  }
+  // later options override the figure's
+  EXPECT_EQ(parsed({"--figure", "1", "--method", "wedge"}).method, "wedge");
+  EXPECT_NE(cv::parseOptions(std::vector<std::string_view>{"--figure", "0"}).error, "");
+  EXPECT_NE(cv::parseOptions(std::vector<std::string_view>{"--export", "d"}).error, "");
+}
+
+TEST(Figures, Figure5MarksTheSmallestGapAndThePapersCount) {
+  cv::Model m;
+  ASSERT_EQ(m.apply(parsed({"--figure", "5"})), "");
+  EXPECT_TRUE(m.settings.view2d.showGap);
+  const auto g = cv::smallestYGap(m.scene2d.polygon());
+  ASSERT_TRUE(g);
+  EXPECT_NEAR(g->gap(), 0.05, 1e-12);
+  EXPECT_NEAR(g->paperSlabs(), 2.4 / 0.05, 1e-6);
+  // convexloc's own count stays bounded, far below the paper's
+  EXPECT_LT(m.scene2d.effectiveResolution(), g->paperSlabs());
+}
+
+TEST(Figures, Figure7PinsAOneFaceCellAndACrowdedOneWithoutThePlane) {
+  cv::Model m;
+  ASSERT_EQ(m.apply(parsed({"--figure", "7"})), "");
+  ASSERT_EQ(m.dim, cv::Dim::Three);
+  EXPECT_FALSE(m.settings.view3d.showSlice);
+  const cv::Scene3D& s = m.scene3d();
+  ASSERT_GE(s.pinnedCell(), 0);
+  ASSERT_GE(s.secondPinnedCell(), 0);
+  EXPECT_EQ(s.cells()[static_cast<std::size_t>(s.pinnedCell())].faces.size(), 1u);
+  EXPECT_GT(s.cells()[static_cast<std::size_t>(s.secondPinnedCell())].faces.size(), 1u);
+}
+
+TEST(Lecture, ASlideResetsWhatThePreviousOneSet) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide A\nmethod wedge\nprobe 0.1,0.1\nspray 500\nline -3 1 3 2\nslide B\ncaption plain\n",
+      "t.lecture");
+  ASSERT_EQ(p.error, "");
+  cv::Model m;
+  cv::SlideShow show{p.lecture, 0};
+  ASSERT_EQ(show.go(m, 0), "");
+  EXPECT_TRUE(m.scene2d.probe());
+  EXPECT_EQ(m.scene2d.points().size(), 500u);
+  EXPECT_TRUE(m.lines2d.enabled());
+  ASSERT_EQ(show.go(m, 5), "");  // clamped to the last
+  EXPECT_EQ(show.current, 1u);
+  EXPECT_FALSE(m.scene2d.probe());
+  EXPECT_FALSE(m.lines2d.enabled());
+  EXPECT_EQ(m.scene2d.method(), cv::Model().scene2d.method());
+  EXPECT_EQ(m.scene2d.points().size(), cv::Model().scene2d.points().size());
+}
+
+TEST(Defects, DragMessageCountsVerticesAsTheLabelsDo) {
+  cv::Scene2D s;
+  const std::vector<Vec2> square = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  ASSERT_TRUE(s.setShape(square, "square"));
+  s.beginDrag(0);
+  EXPECT_FALSE(s.dragTo({1.5, 1.5}));  // vertex 0 made reflex
+  ASSERT_TRUE(s.drag());
+  EXPECT_NE(s.drag()->message.find("vertex 0 "), std::string::npos) << s.drag()->message;
+  EXPECT_EQ(s.drag()->message.find("vertex 1 "), std::string::npos) << s.drag()->message;
+}
+
+TEST(Defects, PointsPanelStartsFromTheScenesSpray) {
+  cv::Model m;
+  ASSERT_EQ(m.apply(parsed({"--spray", "2000"})), "");
+  cv::UiState ui;
+  cv::followSpray(ui, m.scene2d.spraySettings());
+  EXPECT_EQ(ui.sprayCount, 2000);
+  // the user's edit stays until the scene's settings change
+  ui.sprayCount = 7000;
+  cv::followSpray(ui, m.scene2d.spraySettings());
+  EXPECT_EQ(ui.sprayCount, 7000);
+  m.scene2d.spray({4000, 3, true});
+  cv::followSpray(ui, m.scene2d.spraySettings());
+  EXPECT_EQ(ui.sprayCount, 4000);
+  EXPECT_EQ(ui.spraySeed, 3u);
+  EXPECT_TRUE(ui.sprayNear);
+}
+
+TEST(Defects, PinnedCellSurvivesMethodsTwoThenThree) {
+  cv::Scene3D s;
+  s.pin(5);
+  const auto face = s.cells()[5].faces;
+  s.setMethod(Method3D::Walk);
+  EXPECT_EQ(s.pinnedCell(), -1);  // the walk has no cells
+  s.setMethod(Method3D::Cubemap);
+  EXPECT_EQ(s.pinnedCell(), 5);
+  EXPECT_EQ(s.cells()[5].faces, face);
+  s.pin(-1);
+  s.setMethod(Method3D::Walk);
+  s.setMethod(Method3D::Cubemap);
+  EXPECT_EQ(s.pinnedCell(), -1);
+}
+
+TEST(Defects, HelpNamesEveryKey) {
+  const std::string help = cv::usageText();
+  for (const char* key : {"T dark/light", "PageDown", "--figure", "--lecture", "--export",
+                          "--slice AXIS=V|none", "--y-gap"})
+    EXPECT_NE(help.find(key), std::string::npos) << key;
+}
+
+TEST(Defects, DocsTinyEdgesExampleShowsTheBisection) {
+  // docs/viewer.md: --preset tiny-edges --probe 0.99,0.96 (a crowded cell, past its radii)
+  cv::Model m;
+  ASSERT_EQ(m.apply(parsed({"--preset", "tiny-edges", "--probe", "0.99,0.96"})), "");
+  ASSERT_TRUE(m.scene2d.probe());
+  const auto& t = m.scene2d.probe()->trace;
+  EXPECT_TRUE(t.crowded);
+  EXPECT_FALSE(t.byRadius);
+  EXPECT_GE(t.rays.size(), 2u);
+}
+
+TEST(Lecture, AFigureSlideWithoutCaptionSaysWhatTheFigureShows) {
+  const cv::ParsedLecture p =
+      cv::parseLecture("slide A\nfigure 3\nslide B\nfigure 3\ncaption mine\n", "t.lecture");
+  ASSERT_EQ(p.error, "");
+  EXPECT_EQ(p.lecture.slides[0].caption, cv::figure(3).caption);
+  EXPECT_EQ(p.lecture.slides[1].caption, "mine");
+}
