@@ -271,6 +271,8 @@ void Model::setPaperMode(bool on) {
   settings.paperMode = on;
   scene2d.setTraceOptions({.radii = !on});
   if (scene3d_) scene3d_->setTraceOptions({.radii = !on});
+}
+
 void Model::applyFigureOptions(const Options& o) {
   if (o.yGap) settings.view2d.showGap = true;
   if (o.hideSlice) settings.view3d.showSlice = false;
@@ -306,6 +308,8 @@ void Model::reset() {
   settings.visibleMask = kAllClasses;
   settings.view2d = View2DOptions{};
   settings.view3d = View3DOptions{};
+  settings.paperMode = false;  // the new scenes trace with the radius filter
+  settings.caption.clear();
   pendingView.reset();
   requestFit();
 }
