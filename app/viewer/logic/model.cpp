@@ -144,6 +144,7 @@ std::string Model::apply(const Options& o) {
   else
     apply3d(o, method3d);
   if (o.show) settings.visibleMask = visibleMaskFor(*o.show);
+  applyTeachingViews(o);
   collectErrors();
   requestFit();
   return firstProblem_;
@@ -222,6 +223,30 @@ void Model::apply3d(const Options& o, bool method3d) {
   if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
 }
 
+// === Why O(1), the split view, the build animation
+
+void Model::applyTeachingViews(const Options& o) {
+  if (o.why) {
+    whyOpen = true;
+    ScalingConfig c;
+    c.sizes = scalingSizes(o.whyMost);
+    scaling->start(c);
+  }
+  if (o.split) {
+    if (const auto m = parseMethod2D(*o.split)) {
+      split.setEnabled(dim == Dim::Two);
+      split.setMethod(*m);
+      split.sync(scene2d);
+    } else {
+      note("--split needs a 2D method (halfplane, wedge, slab, uniform, polar)");
+    }
+  }
+  if (o.buildStep) {
+    build.active = dim == Dim::Two;
+    build.show(*o.buildStep, scene2d.polygon().size());
+  }
+}
+
 void Model::setLinesMode(bool on) {
   lines2d.setEnabled(on);
   lines2d.sync(scene2d);
@@ -229,6 +254,11 @@ void Model::setLinesMode(bool on) {
 }
 
 void Model::fit(ScreenRect area) {
+  if (dim == Dim::Two && split.enabled()) {
+    // the split view: the camera is fitted to the left half; the right one follows it
+    split.setArea(area);
+    area = split.left();
+  }
   if (dim == Dim::Two) {
     lines2d.sync(scene2d);
     camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : scene2d.polygon().bounds(), area);

@@ -49,6 +49,12 @@ struct Options {
   bool animate = false;            // move the camera every frame (timing)
   bool compare = false;            // time every method at start (the Method panel)
   bool help = false, version = false;
+  // Why O(1), the split view, the build animation
+  bool why = false;                          // open the Why O(1) window and start measuring
+  std::string whySvg;                        // measure without a window, write this SVG, exit
+  std::size_t whyMost = 1000000;             // the largest N measured
+  std::optional<std::string> split;          // 2D: this method beside the current one
+  std::optional<std::size_t> buildStep;      // 2D: the build animation at this step
 };
 
 // the result of parsing: options, or the reason they are wrong

@@ -13,6 +13,8 @@
 #include "logic/text.hpp"
 #include "ui/panels2d.hpp"
 #include "ui/panels3d.hpp"
+#include "ui/scaling_panel.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -192,6 +194,34 @@ void floatingInspector(Model& model, ScreenRect area, glm::dvec2 window) {
   ImGui::End();
 }
 
+// the labels of `lists` over the scene, at most `budget` of them (counted down)
+void writeLabels(const Model& model, ImDrawList* dl, const Camera2D& cam,
+                 std::initializer_list<const DrawList*> lists, int& budget) {
+  const Camera3D& cam3 = model.camera3d;
+  const glm::dvec2 vp = cam.viewport();
+  const Palette& pal = paletteFor(model.settings.theme);
+  const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
+  for (const DrawList* list : lists)
+    for (const Label& l : list->labels) {
+      if (--budget < 0) return;
+      glm::dvec2 s;
+      if (model.dim == Dim::Two) {
+        s = cam.toScreen({l.p.x, l.p.y}) + glm::dvec2(l.offset);
+      } else {
+        const Projected pr = cam3.toScreen(l.p);
+        if (!pr.visible()) continue;
+        s = pr.screen + glm::dvec2(l.offset);
+      }
+      if (s.x < -200.0 || s.y < -50.0 || s.x > vp.x + 200.0 || s.y > vp.y + 50.0) continue;
+      const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
+      const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x),
+                      std::round(static_cast<float>(s.y) - 0.5f * size.y));
+      for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+        dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, l.text.c_str());
+      dl->AddText(at, packAbgr(l.colour), l.text.c_str());
+    }
+}
+
 }  // namespace
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
@@ -279,35 +309,34 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
       floatingInspector(model, area, window);
   }
   toast(model, ui, area, now);
+  // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
+  model.split.setArea(area);
+  if (model.split.enabled() && model.dim == Dim::Two) model.split.sync(model.scene2d);
+  advanceBuild(model, io.DeltaTime);
+  scalingWindow(model, ui);
 }
 
 void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Camera2D& cam = model.camera2d;
-  const Camera3D& cam3 = model.camera3d;
-  const glm::dvec2 vp = cam.viewport();
-  const Palette& pal = paletteFor(model.settings.theme);
-  const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
+  const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   int budget = 400;
-  for (const DrawList* list : {&view.structure(), &view.overlay()})
-    for (const Label& l : list->labels) {
-      if (--budget < 0) return;
-      glm::dvec2 s;
-      if (model.dim == Dim::Two) {
-        s = cam.toScreen({l.p.x, l.p.y}) + glm::dvec2(l.offset);
-      } else {
-        const Projected pr = cam3.toScreen(l.p);
-        if (!pr.visible()) continue;
-        s = pr.screen + glm::dvec2(l.offset);
-      }
-      if (s.x < -200.0 || s.y < -50.0 || s.x > vp.x + 200.0 || s.y > vp.y + 50.0) continue;
-      const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-      const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x),
-                      std::round(static_cast<float>(s.y) - 0.5f * size.y));
-      for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
-        dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, l.text.c_str());
-      dl->AddText(at, packAbgr(l.colour), l.text.c_str());
-    }
+  if (split) {
+    // each half's labels, clipped to it, the right half's through its own camera
+    const ScreenRect l = model.split.left(), r = model.split.right();
+    dl->PushClipRect(ImVec2(static_cast<float>(l.lo.x), static_cast<float>(l.lo.y)),
+                     ImVec2(static_cast<float>(l.hi.x), static_cast<float>(l.hi.y)));
+    writeLabels(model, dl, cam, {&view.structure(), &view.overlay()}, budget);
+    dl->PopClipRect();
+    dl->PushClipRect(ImVec2(static_cast<float>(r.lo.x), static_cast<float>(r.lo.y)),
+                     ImVec2(static_cast<float>(r.hi.x), static_cast<float>(r.hi.y)));
+    writeLabels(model, dl, model.split.rightCamera(cam),
+                {&view.splitStructure(), &view.splitOverlay()}, budget);
+    dl->PopClipRect();
+    splitDecorations(model);
+    return;
+  }
+  writeLabels(model, dl, cam, {&view.structure(), &view.overlay()}, budget);
 }
 
 }  // namespace convexloc::viewer

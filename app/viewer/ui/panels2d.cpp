@@ -7,6 +7,7 @@
 
 #include "logic/lines2d.hpp"
 #include "ui/method_panels.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -100,6 +101,10 @@ void methodPanel2D(Model& model, UiState& ui) {
   if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
   if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
   methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);
+  // the teaching views: split, build, Why O(1)
+  splitControls(model);
+  buildControls(model);
+  whyButton(model);
 }
 
 void viewOptions2D(Model& model) {
