@@ -2,6 +2,7 @@
 #include "logic/build_anim.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "logic/camera2d.hpp"
 #include "logic/scene2d.hpp"
@@ -74,16 +75,25 @@ void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal
   const std::size_t e = step - 1;
   for (const std::size_t c : order.cellsOf(e)) {
     const std::vector<Vec2>& o = cells[c].outline;
-    fan(o, withAlpha(pal.hoverFill, 0.45f), out);
+    fan(o, withAlpha(pal.hoverEdge, 0.22f), out);
     for (std::size_t i = 0; i < o.size(); ++i)
-      out.segment(at2(toGlm(o[i])), at2(toGlm(o[(i + 1) % o.size()])), pal.hoverOutline, 2.0f);
+      out.segment(at2(toGlm(o[i])), at2(toGlm(o[(i + 1) % o.size()])), pal.hoverEdge, 2.0f);
   }
   const glm::dvec2 a = toGlm(poly.edgeStart(e)), b = toGlm(poly.edgeEnd(e));
   out.segment(at2(a), at2(b), pal.hoverEdge, 5.0f);
   std::string text = numbered("e", e);
   text.append(" added: ").append(std::to_string(step)).append(" of ");
   text.append(std::to_string(order.steps())).append(" edges");
-  out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, {0.0f, -18.0f});
+  // written outside the edge, along its outward normal (y down on the screen), far enough
+  // that the text's box (about 7 by 16 pixels a character) clears the edge
+  const glm::dvec2 d = b - a;
+  const double len = glm::length(d);
+  const glm::vec2 n = len > 0.0
+                          ? glm::vec2(static_cast<float>(d.y / len), static_cast<float>(d.x / len))
+                          : glm::vec2(0.0f, -1.0f);
+  const float reach =
+      12.0f + std::abs(n.x) * 3.6f * static_cast<float>(text.size()) + std::abs(n.y) * 9.0f;
+  out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, n * reach);
 }
 
 }  // namespace convexloc::viewer

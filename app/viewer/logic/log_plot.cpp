@@ -85,49 +85,41 @@ void seriesPaths(const LogPlot& plot, const Axes& a, PlotDrawing& d) {
   }
 }
 
-// how many of the series' points, and points along their lines, fall inside `box`
-int covered(const PlotDrawing& d, const ScreenRect& box) {
-  int n = 0;
-  for (const PlotPath& p : d.paths) {
-    if (!p.series) continue;
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      const glm::dvec2 a = p.points[i], b = i + 1 < p.points.size() ? p.points[i + 1] : a;
-      for (int k = 0; k < 16; ++k) n += box.contains(a + (b - a) * (k / 16.0)) ? 1 : 0;
-    }
+// the legend's entries flowed into rows `width` wide: where each entry starts
+struct LegendFlow {
+  std::vector<glm::dvec2> at;  // per series, relative to the legend's top left
+  double height = 0.0;
+};
+
+LegendFlow flowLegend(const LogPlot& plot, const PlotStyle& st, double width) {
+  const double line = 1.3 * st.fontPx, swatch = 2.0 * st.fontPx;
+  LegendFlow f;
+  glm::dvec2 p{0.0, 0.0};
+  for (const PlotSeries& s : plot.series) {
+    const double w = swatch + 8.0 + st.charWidth * static_cast<double>(s.name.size()) + 20.0;
+    if (p.x > 0.0 && p.x + w > width) p = {0.0, p.y + line};
+    f.at.push_back(p);
+    p.x += w;
   }
-  return n;
+  f.height =
+      (plot.series.empty() ? 0.0 : p.y + line) + line * static_cast<double>(plot.notes.size());
+  return f;
 }
 
-// the legend box in the corner of the axes it hides the least of: a swatch and a name
-// per series, then the notes
-void legend(const LogPlot& plot, const Axes& a, const PlotStyle& st, PlotDrawing& d) {
-  const double line = 1.25 * st.fontPx, swatch = 2.0 * st.fontPx;
-  std::size_t longest = 0;
-  for (const PlotSeries& s : plot.series) longest = std::max(longest, s.name.size());
-  for (const std::string& n : plot.notes) longest = std::max(longest, n.size());
-  const double w = swatch + 18.0 + st.charWidth * static_cast<double>(longest);
-  const double h = line * static_cast<double>(plot.series.size() + plot.notes.size()) + 8.0;
-  glm::dvec2 o = a.box.lo + glm::dvec2(8.0, 8.0);
-  int least = 1 << 30;
-  for (const glm::dvec2 c :
-       {a.box.lo + glm::dvec2(8.0, 8.0), glm::dvec2(a.box.hi.x - 8.0 - w, a.box.lo.y + 8.0),
-        glm::dvec2(a.box.hi.x - 8.0 - w, a.box.hi.y - 8.0 - h),
-        glm::dvec2(a.box.lo.x + 8.0, a.box.hi.y - 8.0 - h)}) {
-    const int k = covered(d, {c, c + glm::dvec2(w, h)});
-    if (k < least) {
-      least = k;
-      o = c;
-    }
-  }
-  d.paths.push_back({{o, {o.x + w, o.y}, {o.x + w, o.y + h}, {o.x, o.y + h}, o}, st.grid, 1.0f});
-  double y = o.y + 4.0 + 0.5 * line;
-  for (const PlotSeries& s : plot.series) {
-    d.paths.push_back({{{o.x + 6.0, y}, {o.x + 6.0 + swatch, y}}, s.colour, 2.5f, s.dashed});
-    d.texts.push_back({{o.x + 12.0 + swatch, y}, s.name, st.text, 0.0f});
-    y += line;
+// the legend under the x axis' label: a swatch and a name per series, then the notes
+void legend(const LogPlot& plot, const LegendFlow& flow, glm::dvec2 o, const PlotStyle& st,
+            PlotDrawing& d) {
+  const double line = 1.3 * st.fontPx, swatch = 2.0 * st.fontPx;
+  double y = o.y + 0.5 * line;
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& s = plot.series[i];
+    const glm::dvec2 p = o + flow.at[i] + glm::dvec2(0.0, 0.5 * line);
+    d.paths.push_back({{p, p + glm::dvec2(swatch, 0.0)}, s.colour, 2.5f, s.dashed});
+    d.texts.push_back({p + glm::dvec2(swatch + 8.0, 0.0), s.name, st.text, 0.0f});
+    y = p.y + line;
   }
   for (const std::string& n : plot.notes) {
-    d.texts.push_back({{o.x + 6.0, y}, n, st.textMuted, 0.0f});
+    d.texts.push_back({{o.x, y}, n, st.textMuted, 0.0f});
     y += line;
   }
 }
@@ -190,16 +182,16 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   Axes a;
   a.x = decadesOf(plot, false);
   a.y = decadesOf(plot, true);
-  a.y.hi += 1;  // a decade of headroom, for the legend
   const double left = st.charWidth * 5.0 + 14.0;
+  const LegendFlow flow = flowLegend(plot, st, rect.size().x - left);
   a.box = {{rect.lo.x + left, rect.lo.y + 2.2 * st.fontPx},
-           {rect.hi.x - 0.8 * st.fontPx, rect.hi.y - 3.0 * st.fontPx}};
+           {rect.hi.x - 0.8 * st.fontPx, rect.hi.y - 3.2 * st.fontPx - flow.height}};
   d.texts.push_back(
       {{rect.lo.x + 4.0, rect.lo.y + 0.8 * st.fontPx}, plot.title, st.text, 0.0f, true});
   d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.7 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
   axesAndGrid(plot, a, st, d);
   seriesPaths(plot, a, d);
-  legend(plot, a, st, d);
+  legend(plot, flow, {a.box.lo.x, a.box.hi.y + 2.9 * st.fontPx}, st, d);
   return d;
 }
 

@@ -231,6 +231,8 @@ void Model::applyTeachingViews(const Options& o) {
     ScalingConfig c;
     c.sizes = scalingSizes(o.whyMost);
     scaling->start(c);
+    // a screenshot shows the finished plots
+    if (!o.screenshot.empty()) scaling->wait();
   }
   if (o.split) {
     if (const auto m = parseMethod2D(*o.split)) {

@@ -153,7 +153,7 @@ void legend2D(Model& model) {
   legendHeading(model, scene, s.edges, "edges");
   const Method2D m = scene.method();
   const std::size_t base = baseEdgesPerCell(m);
-  if (s.cells && model.settings.view2d.showTints) {
+  if (s.cells && model.settings.view2d.showTints && !model.build.active) {
     swatchBox(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f));
     ImGui::Text("cell listing %zu+ edges", base + 1);
     if (s.crowdedCells) {
@@ -173,6 +173,7 @@ void legend2D(Model& model) {
     swatchLine(pal.box, true, 1.2f);
     ImGui::Text("bounding box");
   }
+  buildLegend(model);  // the build animation's rows
 }
 
 // the line's answer and the steps core took
@@ -215,6 +216,7 @@ void inspector2D(Model& model, bool hints) {
         return describeTrace(probe.trace, probe.point, scene.polygon(),
                              scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
       });
+  splitInspector(model);  // the split view's right half
 }
 
 }  // namespace

@@ -51,8 +51,15 @@ void drawPlot(ImDrawList* dl, const PlotDrawing& d, ImVec2 o) {
 
 // Measure, the largest N, Cancel, Export SVG
 void controls(Model& model, UiState& ui, const ScalingProgress& p) {
-  static int most = 3;
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 9.0f);
+  // the choice starts at the last run's largest N
+  static int most = -1;
+  if (most < 0) {
+    const auto& sizes = model.scaling->config().sizes;
+    const std::size_t last = sizes.empty() ? kMostChoices[3] : sizes.back();
+    most = 0;
+    while (most < 3 && kMostChoices[most] < last) ++most;
+  }
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 11.0f);
   if (ImGui::BeginCombo("##most", ("N up to " + grouped(kMostChoices[most])).c_str())) {
     for (int i = 0; i < static_cast<int>(std::size(kMostChoices)); ++i)
       if (ImGui::Selectable(("N up to " + grouped(kMostChoices[i])).c_str(), i == most)) most = i;
@@ -92,6 +99,7 @@ void scalingWindow(Model& model, UiState& ui) {
                            ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(1.0f);
   if (!ImGui::Begin("Why O(1): cost against N", &model.whyOpen, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::End();
     return;

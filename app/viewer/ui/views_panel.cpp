@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "logic/text.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -84,12 +85,41 @@ void splitDecorations(const Model& model) {
     const std::string text = SecondView::traceCaption(*scene);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     const ImVec2 at(static_cast<float>(half.middle().x) - 0.5f * size.x,
-                    static_cast<float>(half.hi.y) - size.y - 2.0f * pad);
+                    static_cast<float>(half.lo.y) + 1.5f * pad);
     dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
                       ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
                       packAbgr(withAlpha(pal.background, 0.9f)), 4.0f);
     dl->AddText(at, packAbgr(pal.text), text.c_str());
   }
+}
+
+void splitInspector(const Model& model) {
+  if (!model.split.enabled() || model.dim != Dim::Two || model.lines2d.enabled()) return;
+  const Scene2D& s = model.split.scene();
+  if (!s.probe()) return;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const Trace2D& t = s.probe()->trace;
+  const Rgba colour = textColourOf(pal, t.result);
+  ImGui::Separator();
+  ImGui::TextColored(im(colour), "Right half, %s: %s", std::string(toString(s.method())).c_str(),
+                     std::string(toString(t.result)).c_str());
+  traceLines(describeTrace(t, s.probe()->point, s.polygon(),
+                           s.method() == Method2D::Polar ? s.effectiveResolution() : 0),
+             pal, colour);
+}
+
+void buildLegend(const Model& model) {
+  if (!model.build.active || model.dim != Dim::Two || model.scene2d.cells().empty()) return;
+  const Palette& pal = paletteFor(model.settings.theme);
+  ImGui::TextDisabled("Build: %zu of %zu edges in", model.build.step,
+                      model.scene2d.polygon().size());
+  swatchBox(withAlpha(pal.hoverEdge, 0.22f), pal.hoverEdge);
+  ImGui::Text("cells listing the edge just added");
+  swatchBox(cellTint(pal, 2, 0, false), withAlpha(pal.extraEdges, 0.8f));
+  ImGui::Text("tint: edges held so far");
+  if (model.scene2d.stats().maxPerCell <= kCrowdedCell) return;
+  swatchBox(cellTint(pal, 0, 0, true), withAlpha(pal.crowded, 0.8f));
+  ImGui::Text("crowded (> %zu edges), crossed", kCrowdedCell);
 }
 
 void advanceBuild(Model& model, double seconds) {

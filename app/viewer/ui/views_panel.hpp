@@ -15,6 +15,10 @@ void buildControls(Model& model);
 void whyButton(Model& model);
 // the split view's divider and each half's caption ("polar: 1 predicate, inside")
 void splitDecorations(const Model& model);
+// the right half's placed point and its trace, under the inspector (split view only)
+void splitInspector(const Model& model);
+// the build animation's legend rows (while it shows)
+void buildLegend(const Model& model);
 // moves a playing build animation on by this frame's time
 void advanceBuild(Model& model, double seconds);
 

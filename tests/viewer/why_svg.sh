@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# --why-svg without a display: measures small N-gons, writes the SVG, and the SVG closes
+# and holds one series polyline per curve (5 methods twice, the paper's polar, 3 memory).
+# usage: why_svg.sh VIEWER SVG
+set -euo pipefail
+viewer=$1 svg=$2
+rm -f "$svg"
+env -u DISPLAY "$viewer" --why-svg "$svg" --why-max 512 --theme light
+tail -n 1 "$svg" | grep -qx '</svg>'
+count=$(grep -c '<polyline class="series"' "$svg")
+[[ $count -eq 14 ]] || { echo "expected 14 series polylines, found $count"; exit 1; }
+echo "why-svg: $count series"
