@@ -256,7 +256,7 @@ void Model::setLinesMode(bool on) {
 }
 
 void Model::fit(ScreenRect area) {
-  if (dim == Dim::Two && split.enabled()) {
+  if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
     // the split view: the camera is fitted to the left half; the right one follows it
     split.setArea(area);
     area = split.left();

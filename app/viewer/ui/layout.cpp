@@ -310,8 +310,10 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   }
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
-  model.split.setArea(area);
-  if (model.split.enabled() && model.dim == Dim::Two) model.split.sync(model.scene2d);
+  // (no halves in 3D or the Lines mode: the pointer then goes where it is)
+  const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
+  model.split.setArea(halves ? area : ScreenRect{});
+  if (model.split.enabled() && halves) model.split.sync(model.scene2d);
   advanceBuild(model, io.DeltaTime);
   scalingWindow(model, ui);
 }
