@@ -115,6 +115,33 @@ TEST(Scaling, PolarStaysBoundedWhileHalfplaneGrowsWithN) {
   }
 }
 
+TEST(Scaling, SolidsOnGeodesicSpheres) {
+  cv::ScalingWorker worker;
+  cv::ScalingConfig c;
+  c.faces = cv::geodesicSizes(1280);
+  c.tracedPoints = 200;
+  c.timedPoints = 1024;
+  c.minSeconds = 0.001;
+  EXPECT_EQ(c.faces, (std::vector<std::size_t>{20, 80, 320, 1280}));
+  worker.start(c);
+  worker.wait();
+  const cv::ScalingProgress p = worker.snapshot();
+  EXPECT_TRUE(p.finished);
+  ASSERT_EQ(p.result.series3d.size(), std::size(convexloc::kAllMethods3D));
+  const auto& half = p.result.series3d[0].samples;  // halfspace
+  const auto& cube = p.result.series3d[2].samples;  // cubemap
+  ASSERT_EQ(half.size(), 4u);
+  ASSERT_EQ(cube.size(), 4u);
+  EXPECT_EQ(half.back().n, 1280u);
+  EXPECT_GT(half.back().predicates, 20.0 * half.front().predicates);
+  for (const cv::ScalingSample& x : cube) EXPECT_LE(x.predicates, 4.0);
+  const std::string svg = cv::scalingSvg(p.result, c, cv::Theme::Dark, true);
+  std::string why;
+  EXPECT_TRUE(wellFormed(svg, why)) << why;
+  EXPECT_EQ(countOf(svg, "<polyline"), 3u + 3u);
+  EXPECT_EQ(cv::solidSvgPath("/tmp/why.svg"), "/tmp/why-3d.svg");
+}
+
 TEST(Scaling, TheLinearMethodStopsAtItsLimit) {
   cv::ScalingConfig c;
   c.linearLimit = 64;

@@ -228,9 +228,7 @@ void Model::apply3d(const Options& o, bool method3d) {
 void Model::applyTeachingViews(const Options& o) {
   if (o.why) {
     whyOpen = true;
-    ScalingConfig c;
-    c.sizes = scalingSizes(o.whyMost);
-    scaling->start(c);
+    scaling->start(scalingConfig(o.whyMost));
     // a screenshot shows the finished plots
     if (!o.screenshot.empty()) scaling->wait();
   }

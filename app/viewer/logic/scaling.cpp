@@ -6,6 +6,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
+#include "convexloc/generate3d.hpp"
 #include "convexloc/timing.hpp"
 #include "logic/text.hpp"
 
@@ -13,7 +14,8 @@ namespace convexloc::viewer {
 namespace {
 
 // the batch locate's time per point over `timed`, in chunks until minSeconds have passed
-double nsPerQuery(const Locator2D& locator, std::span<const Vec2> timed, double minSeconds) {
+template <class Locator, class Point>
+double nsPerQuery(const Locator& locator, std::span<const Point> timed, double minSeconds) {
   constexpr std::size_t kChunk = 1024;
   std::vector<Location> out(std::min(kChunk, timed.size()));
   std::size_t located = 0, at = 0;
@@ -27,6 +29,28 @@ double nsPerQuery(const Locator2D& locator, std::span<const Vec2> timed, double 
     seconds = secondsSince(t0);
   } while (seconds < minSeconds);
   return seconds * 1e9 / static_cast<double>(std::max<std::size_t>(located, 1));
+}
+
+// the predicates one traced query evaluated
+std::size_t testsOf(const Trace2D& t) {
+  return t.edges.size() + t.rays.size();
+}
+std::size_t testsOf(const Trace3D& t) {
+  return t.faces.size() + t.steps.size();
+}
+
+// a locator's mean tests per traced point, time per batch point and memory
+template <class Locator, class Point>
+ScalingSample measureWith(const Locator& locator, std::span<const Point> traced,
+                          std::span<const Point> timed, double minSeconds) {
+  ScalingSample s;
+  std::size_t tests = 0;
+  for (const Point p : traced) tests += testsOf(locator.trace(p));
+  s.predicates =
+      static_cast<double>(tests) / static_cast<double>(std::max<std::size_t>(traced.size(), 1));
+  if (!timed.empty()) s.nsPerQuery = nsPerQuery(locator, timed, minSeconds);
+  s.bytes = locator.stats().bytes;
+  return s;
 }
 
 // The edges the paper's polar query tests for `points`, on average: those the point's cell
@@ -67,26 +91,42 @@ std::vector<std::size_t> scalingSizes(std::size_t most) {
   return sizes;
 }
 
+ScalingConfig scalingConfig(std::size_t most) {
+  ScalingConfig c;
+  c.sizes = scalingSizes(most);
+  c.faces = geodesicSizes(most);
+  return c;
+}
+
+std::vector<std::size_t> geodesicSizes(std::size_t most) {
+  std::vector<std::size_t> sizes;
+  for (std::size_t f = 20; f <= std::min<std::size_t>(most, 327680); f *= 4) sizes.push_back(f);
+  return sizes;
+}
+
 bool measured(const ScalingConfig& config, Method2D m, std::size_t n) {
   return m != Method2D::Halfplane || n <= config.linearLimit;
+}
+
+bool measured(const ScalingConfig& config, Method3D m, std::size_t f) {
+  return m != Method3D::Halfspace || f <= config.linearLimit3d;
 }
 
 ScalingSample measureMethod(const ConvexPolygon& polygon, Method2D m, std::span<const Vec2> traced,
                             std::span<const Vec2> timed, double minSeconds) {
   const Locator2D locator(polygon, m);
-  ScalingSample s;
+  ScalingSample s = measureWith(locator, traced, timed, minSeconds);
   s.n = polygon.size();
-  std::size_t tests = 0;
-  for (const Vec2 p : traced) {
-    const Trace2D t = locator.trace(p);
-    tests += t.edges.size() + t.rays.size();
-  }
-  const double count = static_cast<double>(std::max<std::size_t>(traced.size(), 1));
-  s.predicates = static_cast<double>(tests) / count;
   if (const PolarLocator* polar = locator.get<PolarLocator>())
     s.cellEdges = meanCellEdges(*polar, traced);
-  if (!timed.empty()) s.nsPerQuery = nsPerQuery(locator, timed, minSeconds);
-  s.bytes = locator.stats().bytes;
+  return s;
+}
+
+ScalingSample measureMethod3D(const ConvexPolyhedron& polyhedron, Method3D m,
+                              std::span<const Vec3> traced, std::span<const Vec3> timed,
+                              double minSeconds) {
+  ScalingSample s = measureWith(Locator3D(polyhedron, m), traced, timed, minSeconds);
+  s.n = polyhedron.faceCount();
   return s;
 }
 
@@ -125,8 +165,12 @@ void ScalingWorker::start(ScalingConfig config) {
     progress_.running = true;
     for (const std::size_t n : config_.sizes)
       for (const Method2D m : kAllMethods2D) progress_.total += measured(config_, m, n) ? 1 : 0;
+    for (const std::size_t f : config_.faces)
+      for (const Method3D m : kAllMethods3D) progress_.total += measured(config_, m, f) ? 1 : 0;
     progress_.total += 1;  // the memory comparison
     for (const Method2D m : kAllMethods2D) progress_.result.series.push_back({m, {}});
+    if (!config_.faces.empty())
+      for (const Method3D m : kAllMethods3D) progress_.result.series3d.push_back({m, {}});
   }
   running_ = true;
   thread_ = std::thread([this] {
@@ -158,6 +202,10 @@ void ScalingWorker::run() {
       if (stop_) return;
       runSize(n);
     }
+    for (const std::size_t f : config_.faces) {
+      if (stop_) return;
+      runSize3D(f);
+    }
     std::vector<MemorySample> memory;
     for (int e = 1; e <= 9 && !stop_; ++e) memory.push_back(measureMemory(std::pow(10.0, -e)));
     const std::lock_guard lock(mutex_);
@@ -172,25 +220,44 @@ void ScalingWorker::run() {
   }
 }
 
+template <class Method, class Measure>
+void ScalingWorker::runMethods(std::span<const Method> methods, std::size_t size,
+                               std::vector<SeriesOf<Method>>& series, Measure measure) {
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const Method m = methods[i];
+    if (stop_) return;
+    if (!measured(config_, m, size)) continue;
+    {
+      const std::lock_guard lock(mutex_);
+      progress_.current = std::string(toString(m)) + ", " + grouped(size);
+    }
+    const ScalingSample s = measure(m);
+    const std::lock_guard lock(mutex_);
+    series[i].samples.push_back(s);
+    progress_.done += 1;
+  }
+}
+
 void ScalingWorker::runSize(std::size_t n) {
   const ConvexPolygon polygon(generatePolygon(PolygonKind::Regular, n, config_.seed));
   const std::vector<Vec2> traced =
       generatePoints(polygon, config_.tracedPoints, config_.seed + 1, false);
   const std::vector<Vec2> timed =
       generatePoints(polygon, config_.timedPoints, config_.seed + 2, false);
-  for (std::size_t i = 0; i < std::size(kAllMethods2D); ++i) {
-    const Method2D m = kAllMethods2D[i];
-    if (stop_) return;
-    if (!measured(config_, m, n)) continue;
-    {
-      const std::lock_guard lock(mutex_);
-      progress_.current = std::string(toString(m)) + ", N = " + grouped(n);
-    }
-    const ScalingSample s = measureMethod(polygon, m, traced, timed, config_.minSeconds);
-    const std::lock_guard lock(mutex_);
-    progress_.result.series[i].samples.push_back(s);
-    progress_.done += 1;
-  }
+  runMethods<Method2D>(kAllMethods2D, n, progress_.result.series, [&](Method2D m) {
+    return measureMethod(polygon, m, traced, timed, config_.minSeconds);
+  });
+}
+
+void ScalingWorker::runSize3D(std::size_t f) {
+  const ConvexPolyhedron solid(generatePolyhedron(PolyhedronKind::Geodesic, f, config_.seed));
+  const std::vector<Vec3> traced =
+      generatePoints3D(solid, config_.tracedPoints, config_.seed + 1, false);
+  const std::vector<Vec3> timed =
+      generatePoints3D(solid, config_.timedPoints, config_.seed + 2, false);
+  runMethods<Method3D>(kAllMethods3D, f, progress_.result.series3d, [&](Method3D m) {
+    return measureMethod3D(solid, m, traced, timed, config_.minSeconds);
+  });
 }
 
 }  // namespace convexloc::viewer

@@ -11,18 +11,25 @@ namespace {
 // the predicates plot's floor: a mean below it is drawn on it
 constexpr double kPredicateFloor = 0.01;
 
-// the series of one quantity of every method against N
-template <class Value>
-LogPlot methodPlot(const ScalingResult& r, const ScalingConfig& c, Value value) {
+// the series of one quantity of every method against N (F)
+template <class Method, class Value>
+LogPlot methodPlot(const std::vector<SeriesOf<Method>>& series, Value value) {
   LogPlot p;
-  p.xLabel = "N, edges of a regular N-gon";
-  for (const ScalingSeries& s : r.series) {
+  for (const SeriesOf<Method>& s : series) {
     PlotSeries ps{std::string(toString(s.method)), methodColour(s.method), {}, false};
     ps.name.append("  ").append(methodInfo(s.method).cost);
     for (const ScalingSample& x : s.samples)
       ps.points.push_back(glm::dvec2(static_cast<double>(x.n), value(x)));
     p.series.push_back(std::move(ps));
   }
+  return p;
+}
+
+// a plot against N of the 2D methods, and what it leaves out
+template <class Value>
+LogPlot plot2D(const ScalingResult& r, const ScalingConfig& c, Value value) {
+  LogPlot p = methodPlot(r.series, value);
+  p.xLabel = "N, edges of a regular N-gon";
   if (!c.sizes.empty() && c.sizes.back() > c.linearLimit)
     p.notes.push_back(std::string("halfplane stops at N = ")
                           .append(grouped(c.linearLimit))
@@ -30,9 +37,21 @@ LogPlot methodPlot(const ScalingResult& r, const ScalingConfig& c, Value value) 
   return p;
 }
 
+// a plot against F of the 3D methods, and what it leaves out
+template <class Value>
+LogPlot plot3D(const ScalingResult& r, const ScalingConfig& c, Value value) {
+  LogPlot p = methodPlot(r.series3d, value);
+  p.xLabel = "F, faces of a geodesic sphere";
+  if (!c.faces.empty() && c.faces.back() > c.linearLimit3d)
+    p.notes.push_back(std::string("halfspace stops at F = ")
+                          .append(grouped(c.linearLimit3d))
+                          .append(" (O(F) per query)"));
+  return p;
+}
+
 // the measurement in words, in the page's fourth quarter
 PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, ScreenRect rect,
-                           const PlotStyle& st) {
+                           const PlotStyle& st, bool solid) {
   PlotDrawing d;
   d.rect = rect;
   d.background = st.background;
@@ -42,23 +61,34 @@ PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, Scree
     y += 1.5 * st.fontPx;
   };
   line("What was measured", st.text, true);
-  if (!c.sizes.empty())
+  if (!solid && !c.sizes.empty())
     line("regular N-gons, N = 8 .. " + grouped(c.sizes.back()) + ", " + grouped(c.tracedPoints) +
+             " random points traced,",
+         st.textMuted);
+  if (solid && !c.faces.empty())
+    line("geodesic spheres, F = 20 .. " + grouped(c.faces.back()) + ", " + grouped(c.tracedPoints) +
              " random points traced,",
          st.textMuted);
   line(grouped(c.timedPoints) + " located in batches (each timing at least " +
            approx(c.minSeconds * 1e3, 2) + " ms)",
        st.textMuted);
   y += 0.5 * st.fontPx;
-  for (const ScalingSeries& s : r.series) {
-    if (s.samples.empty()) continue;
-    const ScalingSample& x = s.samples.back();
-    std::string text = std::string(toString(s.method)) + ": " + approx(x.predicates, 3) +
-                       " predicates, " + nsText(x.nsPerQuery) +
-                       " ns per query at N = " + grouped(x.n);
-    if (s.method == Method2D::Polar) text += " (cells list " + approx(x.cellEdges, 3) + " edges)";
-    line(text, methodColour(s.method));
+  const auto methodLines = [&](const auto& series, const char* size) {
+    for (const auto& s : series) {
+      if (s.samples.empty()) continue;
+      const ScalingSample& x = s.samples.back();
+      std::string text = std::string(toString(s.method)) + ": " + approx(x.predicates, 3) +
+                         " predicates, " + nsText(x.nsPerQuery) + " ns per query at " + size +
+                         grouped(x.n);
+      if (x.cellEdges > 0.0) text += " (cells list " + approx(x.cellEdges, 3) + " edges)";
+      line(text, methodColour(s.method));
+    }
+  };
+  if (solid) {
+    methodLines(r.series3d, "F = ");
+    return d;
   }
+  methodLines(r.series, "N = ");
   if (!r.memory.empty()) {
     const MemorySample& m = r.memory.back();
     y += 0.5 * st.fontPx;
@@ -74,6 +104,32 @@ PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, Scree
 
 }  // namespace
 
+Rgba methodColour(Method3D m) {
+  switch (m) {
+    case Method3D::Halfspace: return hex(0x9A9A9A);
+    case Method3D::Walk: return hex(0x56B4E9);
+    case Method3D::Cubemap: return hex(0xD55E00);
+  }
+  return hex(0x999999);
+}
+
+LogPlot predicatesPlot3D(const ScalingResult& r, const ScalingConfig& c) {
+  LogPlot p =
+      plot3D(r, c, [](const ScalingSample& s) { return std::max(s.predicates, kPredicateFloor); });
+  p.notes.insert(p.notes.begin(), "cubemap: its radii decide most queries before any plane test");
+  p.title = "Predicates per query (3D)";
+  p.yLabel = "mean plane + walk-edge tests (core's trace)";
+  return p;
+}
+
+LogPlot timePlot3D(const ScalingResult& r, const ScalingConfig& c) {
+  LogPlot p = plot3D(r, c, [](const ScalingSample& s) { return s.nsPerQuery; });
+  p.title = "Time per query (3D)";
+  p.yLabel = "ns per query (batch locate)";
+  p.yUnit = " ns";
+  return p;
+}
+
 Rgba methodColour(Method2D m) {
   switch (m) {
     case Method2D::Halfplane: return hex(0x9A9A9A);
@@ -88,8 +144,8 @@ Rgba methodColour(Method2D m) {
 LogPlot predicatesPlot(const ScalingResult& r, const ScalingConfig& c) {
   // a query deciding before any predicate (outside the box, by the radii) counts 0; the
   // mean is kept above the axis' floor (kPredicateFloor) so that it still shows
-  LogPlot p = methodPlot(
-      r, c, [](const ScalingSample& s) { return std::max(s.predicates, kPredicateFloor); });
+  LogPlot p =
+      plot2D(r, c, [](const ScalingSample& s) { return std::max(s.predicates, kPredicateFloor); });
   PlotSeries paper{
       "polar, the paper's (edges in the cell)", methodColour(Method2D::Polar), {}, true};
   for (const ScalingSeries& s : r.series)
@@ -104,7 +160,7 @@ LogPlot predicatesPlot(const ScalingResult& r, const ScalingConfig& c) {
 }
 
 LogPlot timePlot(const ScalingResult& r, const ScalingConfig& c) {
-  LogPlot p = methodPlot(r, c, [](const ScalingSample& s) { return s.nsPerQuery; });
+  LogPlot p = plot2D(r, c, [](const ScalingSample& s) { return s.nsPerQuery; });
   p.title = "Time per query";
   p.yLabel = "ns per query (batch locate)";
   p.yUnit = " ns";
@@ -145,7 +201,7 @@ PlotStyle plotStyle(Theme theme, double fontPx) {
 }
 
 std::vector<PlotDrawing> scalingDrawings(const ScalingResult& r, const ScalingConfig& c,
-                                         const PlotStyle& style, glm::dvec2 size) {
+                                         const PlotStyle& style, glm::dvec2 size, bool solid) {
   // predicates and time side by side above, memory below on the left half
   const double gap = 2.0 * style.fontPx;
   const double w = 0.5 * (size.x - 3.0 * gap), h = 0.5 * (size.y - 3.0 * gap);
@@ -153,21 +209,29 @@ std::vector<PlotDrawing> scalingDrawings(const ScalingResult& r, const ScalingCo
   const ScreenRect b{{2.0 * gap + w, gap}, {2.0 * gap + 2.0 * w, gap + h}};
   const ScreenRect m{{gap, 2.0 * gap + h}, {gap + w, 2.0 * gap + 2.0 * h}};
   const ScreenRect t{{2.0 * gap + w, 2.0 * gap + h}, {2.0 * gap + 2.0 * w, 2.0 * gap + 2.0 * h}};
+  if (solid)
+    return {layoutLogPlot(predicatesPlot3D(r, c), a, style),
+            layoutLogPlot(timePlot3D(r, c), b, style), summaryDrawing(r, c, m, style, true)};
   return {layoutLogPlot(predicatesPlot(r, c), a, style), layoutLogPlot(timePlot(r, c), b, style),
-          layoutLogPlot(memoryPlot(r), m, style), summaryDrawing(r, c, t, style)};
+          layoutLogPlot(memoryPlot(r), m, style), summaryDrawing(r, c, t, style, false)};
 }
 
-std::string scalingSvg(const ScalingResult& r, const ScalingConfig& c, Theme theme) {
+std::string scalingSvg(const ScalingResult& r, const ScalingConfig& c, Theme theme, bool solid) {
   const glm::dvec2 size{1600.0, 1000.0};
   const PlotStyle style = plotStyle(theme, 16.0);
-  const std::vector<PlotDrawing> d = scalingDrawings(r, c, style, size);
+  const std::vector<PlotDrawing> d = scalingDrawings(r, c, style, size, solid);
   return svgDocument(d, size, style.background, style.fontPx);
 }
 
+std::string solidSvgPath(const std::string& path) {
+  const bool svg = path.size() >= 4 && path.compare(path.size() - 4, 4, ".svg") == 0;
+  return (svg ? path.substr(0, path.size() - 4) : path) + "-3d.svg";
+}
+
 bool writeScalingSvg(const std::string& path, const ScalingResult& r, const ScalingConfig& c,
-                     Theme theme, std::string& error) {
+                     Theme theme, std::string& error, bool solid) {
   std::ofstream out(path, std::ios::binary);
-  out << scalingSvg(r, c, theme);
+  out << scalingSvg(r, c, theme, solid);
   out.close();
   if (out) return true;
   error = "cannot write " + path;

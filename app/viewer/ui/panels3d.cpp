@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "ui/method_panels.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -88,6 +89,7 @@ void methodPanel3D(Model& model, UiState& ui) {
   methodChoice(scene);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
+  whyButton(model);  // Why O(1): the cost against F
 }
 
 void slicePanel3D(Model& model) {

@@ -69,16 +69,16 @@ void controls(Model& model, UiState& ui, const ScalingProgress& p) {
   if (p.running) {
     if (ImGui::Button("Cancel")) model.scaling->cancel();
   } else if (ImGui::Button("Measure")) {
-    ScalingConfig c;
-    c.sizes = scalingSizes(kMostChoices[most]);
-    model.scaling->start(c);
+    model.scaling->start(scalingConfig(kMostChoices[most]));
   }
   ImGui::SameLine();
   if (ImGui::Button("Export SVG")) {
     const std::string path = std::filesystem::absolute("convexloc-why-o1.svg").string();
     std::string error;
-    if (writeScalingSvg(path, p.result, model.scaling->config(), model.settings.theme, error)) {
-      ui.notice = "wrote " + path;
+    const ScalingConfig& c = model.scaling->config();
+    if (writeScalingSvg(path, p.result, c, model.settings.theme, error) &&
+        writeScalingSvg(solidSvgPath(path), p.result, c, model.settings.theme, error, true)) {
+      ui.notice = "wrote " + path + " and " + solidSvgPath(path) + " (3D)";
       ui.noticeUntil = ImGui::GetTime() + 6.0;
     } else {
       model.fail(error);
@@ -88,6 +88,18 @@ void controls(Model& model, UiState& ui, const ScalingProgress& p) {
       "Regular N-gons: each method traces a few hundred random points (core's trace: edge and "
       "ray tests) and locates a fixed random set in batches (ns per query). The O(1) methods "
       "stay flat.");
+}
+
+// one page of plots in the rest of the window
+void plots(const Model& model, const ScalingProgress& p, bool solid) {
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(avail);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const PlotStyle style = plotStyle(model.settings.theme, ImGui::GetFontSize());
+  for (const PlotDrawing& d :
+       scalingDrawings(p.result, model.scaling->config(), style, {avail.x, avail.y}, solid))
+    drawPlot(dl, d, o);
 }
 
 }  // namespace
@@ -113,22 +125,26 @@ void scalingWindow(Model& model, UiState& ui) {
                            : p.finished       ? "done"
                                               : "press Measure";
   ImGui::ProgressBar(share, ImVec2(-1.0f, 0.0f), what.c_str());
-  const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::Dummy(avail);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const PlotStyle style = plotStyle(model.settings.theme, ImGui::GetFontSize());
-  for (const PlotDrawing& d :
-       scalingDrawings(p.result, model.scaling->config(), style, {avail.x, avail.y}))
-    drawPlot(dl, d, o);
+  // the window opens on the tab of the scene shown
+  const bool appearing = ImGui::IsWindowAppearing();
+  if (ImGui::BeginTabBar("##dims")) {
+    for (const bool solid : {false, true})
+      if (ImGui::BeginTabItem(solid ? "3D: geodesic spheres" : "2D: regular N-gons", nullptr,
+                              appearing && solid == (model.dim == Dim::Three)
+                                  ? ImGuiTabItemFlags_SetSelected
+                                  : 0)) {
+        plots(model, p, solid);
+        ImGui::EndTabItem();
+      }
+    ImGui::EndTabBar();
+  }
   ImGui::End();
   if (!model.whyOpen) model.scaling->cancel();
 }
 
 int measureToSvg(const Options& options) {
   ScalingWorker worker;
-  ScalingConfig c;
-  c.sizes = scalingSizes(options.whyMost);
+  const ScalingConfig c = scalingConfig(options.whyMost);
   worker.start(c);
   worker.wait();
   const ScalingProgress p = worker.snapshot();
@@ -137,12 +153,16 @@ int measureToSvg(const Options& options) {
     return 1;
   }
   std::string error;
-  if (!writeScalingSvg(options.whySvg, p.result, c, options.theme, error)) {
+  const std::string solid = solidSvgPath(options.whySvg);
+  if (!writeScalingSvg(options.whySvg, p.result, c, options.theme, error) ||
+      !writeScalingSvg(solid, p.result, c, options.theme, error, true)) {
     std::cerr << "convexloc-viewer: " << error << "\n";
     return 1;
   }
   std::cout << "convexloc-viewer: wrote " << options.whySvg << " (N = 8 .. "
-            << grouped(c.sizes.back()) << ", " << p.done << " measurements)\n";
+            << grouped(c.sizes.back()) << ") and " << solid << " (F = 20 .. "
+            << grouped(c.faces.empty() ? 0 : c.faces.back()) << "), " << p.done
+            << " measurements\n";
   return 0;
 }
 
