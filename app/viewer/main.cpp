@@ -26,6 +26,7 @@
 #include "platform/window.hpp"
 #include "ui/layout.hpp"
 #include "ui/lecture_panel.hpp"
+#include "ui/scaling_panel.hpp"
 #include "ui/screenshot.hpp"
 #include "ui/slide_export.hpp"
 #include "ui/style.hpp"
@@ -50,6 +51,7 @@ int answerWithoutWindow(const cv::ParsedOptions& parsed) {
     std::cerr << "convexloc-viewer: " << parsed.error << "\n";
     return 2;
   }
+  if (!parsed.options.whySvg.empty()) return cv::measureToSvg(parsed.options);
   if (parsed.options.help) std::cout << cv::usageText();
   if (parsed.options.version) std::cout << "convexloc-viewer " CONVEXLOC_VERSION "\n";
   return parsed.options.help || parsed.options.version ? 0 : -1;
@@ -175,13 +177,13 @@ int main(int argc, char** argv) {
     const bool dropped = openDropped(model, ui);
     if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
     if (!headless) {
-      interaction.update(cv::pointerInput(window.hovered()), model);
+      interaction.update(model.split.toLeft(cv::pointerInput(window.hovered())), model);
       for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
     }
     if (options.animate && stats.frames() > 0) nudgeCamera(model);
     model.lines2d.sync(model.scene2d);
     model.collectErrors();
-    idle.note(cv::hadInput(dropped || ui.pendingFontScale > 0.0f));
+    idle.note(cv::hadInput(dropped || ui.pendingFontScale > 0.0f) || model.busy());
 
     cv::drawUi(model, renderer, ui, stats.seconds());
     view.sync(model, renderer);

@@ -394,4 +394,17 @@ void Renderer::drawPoints(const FrameParams& f, PointRange range) {
   if (range == PointRange::Boundary) part(boundaryStart_, pointCount_ - boundaryStart_);
 }
 
+void Renderer::clipTo(ScreenRect rect, const FrameParams& f) {
+  const double r = f.pixelRatio;
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(static_cast<GLint>(std::lround(rect.lo.x * r)),
+            static_cast<GLint>(std::lround(f.framebuffer.y - rect.hi.y * r)),
+            static_cast<GLsizei>(std::lround(rect.size().x * r)),
+            static_cast<GLsizei>(std::lround(rect.size().y * r)));
+}
+
+void Renderer::clearClip() {
+  glDisable(GL_SCISSOR_TEST);
+}
+
 }  // namespace convexloc::viewer

@@ -12,6 +12,7 @@
 #include "convexloc/geometry.hpp"
 #include "gl/gl.hpp"
 #include "gl/shader.hpp"
+#include "logic/camera2d.hpp"
 #include "logic/colour.hpp"
 #include "logic/draw_list.hpp"
 #include "logic/no_copy.hpp"
@@ -19,8 +20,8 @@
 namespace convexloc::viewer {
 
 // the draw lists the renderer keeps
-enum class Layer : int { Structure = 0, Overlay = 1, Mesh = 2, Section = 3 };
-inline constexpr int kLayerCount = 4;
+enum class Layer : int { Structure = 0, Overlay = 1, Mesh = 2, Section = 3, SplitStructure = 4, SplitOverlay = 5 };
+inline constexpr int kLayerCount = 6;
 
 // which triangles a fill draw skips
 enum class Cull { None, Front, Back };
@@ -73,6 +74,9 @@ class Renderer : NoCopy {
   void drawSegments(Layer layer, const FrameParams& f);
   void drawMarkers(Layer layer, const FrameParams& f);
   void drawPoints(const FrameParams& f, PointRange range = PointRange::All);
+  // draws only inside `rect` (window pixels) until clearClip(); the split view's halves
+  void clipTo(ScreenRect rect, const FrameParams& f);
+  void clearClip();
 
   // === The scene cache: the scene is drawn into an offscreen target (multisampled when
   // asked) only when it changes; every frame composites it, then the overlay and ImGui.

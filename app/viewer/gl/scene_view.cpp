@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "logic/build_anim.hpp"
 #include "logic/dual_view2d.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/structure3d.hpp"
@@ -85,11 +86,15 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     origin_ = {c.x, c.y, 0.0};
     rebase = true;
   }
-  if (rebase || restyle || v.structure != seen_.structure || v.shape != seen_.shape) {
-    buildStructure2D(scene, pal, opt, structure_);
+  const std::uint64_t build = model.build.active ? model.build.version : ~0ull;
+  if (rebase || restyle || v.structure != seen_.structure || v.shape != seen_.shape ||
+      build != buildSeen_) {
+    buildStructure(model, opt);
     renderer.upload(Layer::Structure, structure_, origin_);
     ++uploads_;
+    buildSeen_ = build;
   }
+  syncSplit(model, renderer, opt, rebase || restyle);
   const bool linesStale = lines.version() != linesSeen_;
   linesSeen_ = lines.version();
   syncOverlayAndPoints(scene, renderer, rebase, restyle, linesStale, [&](DrawList& out) {
@@ -97,6 +102,60 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     out.clear();
     buildLines2D(lines, pal, opt.showLabels, out);
   });
+}
+
+// === The split view and the build animation
+
+bool SceneView::splitShown(const Model& model) {
+  return model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
+}
+
+glm::mat4 SceneView::splitClip(const Model& model) const {
+  return model.split.rightCamera(model.camera2d).clipFromLocal(glm::dvec2(origin_));
+}
+
+void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  if (!model.build.active) return buildStructure2D(model.scene2d, pal, opt, structure_);
+  View2DOptions untinted = opt;
+  untinted.showTints = false;
+  buildStructure2D(model.scene2d, pal, untinted, structure_);
+  DrawList step;
+  buildAnimation2D(model.scene2d, model.build.step, pal, step);
+  structure_.fills.insert(structure_.fills.end(), step.fills.begin(), step.fills.end());
+  structure_.segments.insert(structure_.segments.end(), step.segments.begin(), step.segments.end());
+  structure_.markers.insert(structure_.markers.end(), step.markers.begin(), step.markers.end());
+  structure_.labels.insert(structure_.labels.end(), step.labels.begin(), step.labels.end());
+}
+
+void SceneView::syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt,
+                          bool force) {
+  if (!splitShown(model)) {
+    if (splitDrawn_) {
+      splitStructure_.clear();
+      splitOverlay_.clear();
+      renderer.upload(Layer::SplitStructure, splitStructure_, origin_);
+      renderer.upload(Layer::SplitOverlay, splitOverlay_, origin_);
+      ++uploads_;
+    }
+    splitDrawn_ = false;
+    return;
+  }
+  const Scene2D& s = model.split.scene();
+  const Versions& v = s.versions();
+  const Palette& pal = paletteFor(model.settings.theme);
+  const bool fresh = !splitDrawn_ || force || v.structure != splitSeen_.structure;
+  if (fresh) {
+    buildStructure2D(s, pal, opt, splitStructure_);
+    renderer.upload(Layer::SplitStructure, splitStructure_, origin_);
+    ++uploads_;
+  }
+  if (fresh || v.overlay != splitSeen_.overlay) {
+    buildOverlay2D(s, pal, opt, splitOverlay_);
+    renderer.upload(Layer::SplitOverlay, splitOverlay_, origin_);
+  }
+  splitSeen_ = v;
+  splitDrawn_ = true;
 }
 
 void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
@@ -191,7 +250,9 @@ void SceneView::drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, flo
                          double frameBudgetMs) {
   FrameParams f = frameParams(model, fbSize, pixelRatio);
   const Rgba bg = paletteFor(model.settings.theme).background;
-  const BaseKey key{f.clipFromLocal, fbSize, uploads_, f.visibleMask, f.pointSize, f.lineScale};
+  const glm::mat4 right = splitShown(model) ? splitClip(model) : glm::mat4(0.0f);
+  const BaseKey key{f.clipFromLocal, right, fbSize, uploads_, f.visibleMask, f.pointSize,
+                    f.lineScale};
   const std::size_t n = renderer.pointCount();
   if (!renderer.hasTarget()) {
     // no cache: the whole base, every frame
@@ -232,11 +293,22 @@ void SceneView::drawBaseLayers(Model& model, Renderer& renderer, const FramePara
   FrameParams f = base;
   if (model.dim == Dim::Two) {
     // points over the cells' tints, under the lines and edges; boundary points over those
-    renderer.drawFills(Layer::Structure, f);
-    renderer.drawPoints(f, PointRange::AllButBoundary);
-    renderer.drawSegments(Layer::Structure, f);
-    renderer.drawPoints(f, PointRange::Boundary);
-    renderer.drawMarkers(Layer::Structure, f);
+    const auto flat = [&](Layer layer, const FrameParams& g) {
+      renderer.drawFills(layer, g);
+      renderer.drawPoints(g, PointRange::AllButBoundary);
+      renderer.drawSegments(layer, g);
+      renderer.drawPoints(g, PointRange::Boundary);
+      renderer.drawMarkers(layer, g);
+    };
+    if (!splitShown(model)) return flat(Layer::Structure, f);
+    // the split view: the current method left, the second right, through its camera
+    renderer.clipTo(model.split.left(), f);
+    flat(Layer::Structure, f);
+    FrameParams g = f;
+    g.clipFromLocal = splitClip(model);
+    renderer.clipTo(model.split.right(), g);
+    flat(Layer::SplitStructure, g);
+    renderer.clearClip();
     return;
   }
   const bool transparent = model.settings.view3d.transparent;
@@ -272,9 +344,19 @@ void SceneView::drawOverlay(Model& model, Renderer& renderer, glm::vec2 fbSize, 
   FrameParams f = frameParams(model, fbSize, pixelRatio);
   f.depth = false;
   f.depthWrite = false;
-  renderer.drawFills(Layer::Overlay, f);
-  renderer.drawSegments(Layer::Overlay, f);
-  renderer.drawMarkers(Layer::Overlay, f);
+  const auto overlay = [&](Layer layer, const FrameParams& g) {
+    renderer.drawFills(layer, g);
+    renderer.drawSegments(layer, g);
+    renderer.drawMarkers(layer, g);
+  };
+  if (!splitShown(model)) return overlay(Layer::Overlay, f);
+  renderer.clipTo(model.split.left(), f);
+  overlay(Layer::Overlay, f);
+  FrameParams g = f;
+  g.clipFromLocal = splitClip(model);
+  renderer.clipTo(model.split.right(), g);
+  overlay(Layer::SplitOverlay, g);
+  renderer.clearClip();
 }
 
 }  // namespace convexloc::viewer

@@ -34,6 +34,9 @@ class SceneView {
   // 3D: the polyhedron's faces and the slicing plane's section
   const DrawList& mesh() const { return mesh_; }
   const DrawList& section() const { return section_; }
+  // the split view's right half: its structure and overlay (for their labels)
+  const DrawList& splitStructure() const { return splitStructure_; }
+  const DrawList& splitOverlay() const { return splitOverlay_; }
   // the point size the last frame used (window pixels)
   float pointSize() const { return pointSize_; }
 
@@ -41,6 +44,7 @@ class SceneView {
   // what the cached base was drawn from
   struct BaseKey {
     glm::mat4 clip{0.0f};
+    glm::mat4 splitClip{0.0f};  // the split view's right half, or zero
     glm::vec2 fb{0.0f};
     std::uint64_t uploads = 0;
     unsigned mask = 0;
@@ -57,6 +61,19 @@ class SceneView {
   template <class Scene, class BuildOverlay>
   void syncOverlayAndPoints(const Scene& scene, Renderer& renderer, bool moved, bool restyle,
                             bool overlayStale, BuildOverlay buildOverlay);
+
+  // === The split view and the build animation
+  // whether the right half shows (2D, split on, no Lines mode)
+  static bool splitShown(const Model& model);
+  glm::mat4 splitClip(const Model& model) const;
+  // the right half's lists, after a change of its scene, a restyle or a move of the origin
+  void syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt, bool force);
+  // the structure with the build animation's step over it (tints left to the animation)
+  void buildStructure(const Model& model, const View2DOptions& opt);
+  DrawList splitStructure_, splitOverlay_;
+  Versions splitSeen_{~0ull, ~0ull, ~0ull, ~0ull, ~0ull};
+  bool splitDrawn_ = false;
+  std::uint64_t buildSeen_ = ~0ull;  // the build animation's version drawn (~0: off)
 
   glm::dvec3 origin_{0.0};
   DrawList structure_, overlay_, mesh_, section_;

@@ -154,6 +154,7 @@ std::string Model::apply(const Options& o) {
   setPaperMode(o.paper);
   setStep(o.step >= 1 ? o.step - 1 : -1);
   applyFigureOptions(o);
+  applyTeachingViews(o);
   collectErrors();
   requestFit();
   return firstProblem_;
@@ -314,6 +315,30 @@ void Model::reset() {
   requestFit();
 }
 
+// === Why O(1), the split view, the build animation
+
+void Model::applyTeachingViews(const Options& o) {
+  if (o.why) {
+    whyOpen = true;
+    scaling->start(scalingConfig(o.whyMost));
+    // a screenshot shows the finished plots
+    if (!o.screenshot.empty()) scaling->wait();
+  }
+  if (o.split) {
+    if (const auto m = parseMethod2D(*o.split)) {
+      split.setEnabled(dim == Dim::Two);
+      split.setMethod(*m);
+      split.sync(scene2d);
+    } else {
+      note("--split needs a 2D method (halfplane, wedge, slab, uniform, polar)");
+    }
+  }
+  if (o.buildStep) {
+    build.active = dim == Dim::Two;
+    build.show(*o.buildStep, scene2d.polygon().size());
+  }
+}
+
 void Model::setLinesMode(bool on) {
   lines2d.setEnabled(on);
   lines2d.sync(scene2d);
@@ -321,6 +346,11 @@ void Model::setLinesMode(bool on) {
 }
 
 void Model::fit(ScreenRect area) {
+  if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
+    // the split view: the camera is fitted to the left half; the right one follows it
+    split.setArea(area);
+    area = split.left();
+  }
   if (dim == Dim::Two) {
     lines2d.sync(scene2d);
     camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : scene2d.polygon().bounds(), area);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "logic/camera2d.hpp"
+#include "logic/build_anim.hpp"
 #include "logic/camera3d.hpp"
 #include "logic/colour.hpp"
 #include "logic/lines2d.hpp"
@@ -18,6 +19,8 @@
 #include "logic/scene2d.hpp"
 #include "logic/scene3d.hpp"
 #include "logic/steps.hpp"
+#include "logic/scaling.hpp"
+#include "logic/second_view.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/structure3d.hpp"
 
@@ -71,6 +74,15 @@ class Model {
   Camera3D camera3d;
   Settings settings;
   std::vector<std::string> recent;  // files opened, newest first
+
+  // === Why O(1), the split view, the build animation
+  bool whyOpen = false;    // the Why O(1) window shows
+  // its measurement, in a worker thread (held apart so that the model stays movable)
+  std::unique_ptr<ScalingWorker> scaling = std::make_unique<ScalingWorker>();
+  SecondView split;        // 2D: a second method beside the current one
+  BuildPlayback build;     // 2D: the cells receiving their edges one at a time
+  // something moves without input (a measurement, the build playing): draw every frame
+  bool busy() const { return (scaling && scaling->running()) || build.playing; }
 
   // Opens a shape file, chosen by extension (.txt polygon; .off/.obj polyhedron). On
   // failure the scene stays and error() says why (file and line where known).
@@ -128,6 +140,8 @@ class Model {
   void apply3d(const Options& o, bool method3d);
   // --y-gap, --slice none, --cell auto or K,L: the paper's figures
   void applyFigureOptions(const Options& o);
+  // --why, --split, --build-step
+  void applyTeachingViews(const Options& o);
   // a problem apply() reports (the first one is returned), and a scene's last error as one
   void note(const std::string& problem);
   void noteSceneError();

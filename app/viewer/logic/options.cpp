@@ -65,7 +65,7 @@ constexpr Flag kFlags[] = {
     {"--version", &Options::version}, {"--near-boundary", &Options::nearBoundary},
     {"--hide-ui", &Options::hideUi},  {"--no-xvfb", &Options::noXvfb},
     {"--animate", &Options::animate}, {"--compare", &Options::compare},
-    {"--3d", &Options::solid},
+    {"--3d", &Options::solid},       {"--why", &Options::why},
     // lectures and the paper's figures
     {"--y-gap", &Options::yGap},
 };
@@ -305,6 +305,28 @@ bool presentOption(std::string_view a, ArgReader& in, Options& o) {
   return true;
 }
 
+// --why-svg, --why-max, --split, --build-step: Why O(1), the split view, the build animation
+bool teachingOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--why-svg") {
+    if (!in.value(v) || v.empty()) return in.fail("--why-svg needs a file name");
+    o.whySvg = std::string(v);
+  } else if (a == "--why-max") {
+    if (!in.value(v) || !parseCount(v, o.whyMost) || o.whyMost < 8 || o.whyMost > 1000000)
+      return in.fail("--why-max needs a whole number from 8 to 10^6");
+  } else if (a == "--split") {
+    if (!in.value(v)) return in.fail("--split needs a 2D method name");
+    o.split = std::string(v);
+  } else if (a == "--build-step") {
+    std::size_t k = 0;
+    if (!in.value(v) || !parseCount(v, k)) return in.fail("--build-step needs a whole number");
+    o.buildStep = k;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // an unknown option, or the shape file (only one)
 std::string shapeArgument(std::string_view a, Options& o) {
   if (!a.empty() && a[0] == '-' && a != "-")
@@ -334,7 +356,7 @@ std::string parseInto(std::span<const std::string_view> args, Options& o) {
     if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
         !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
         !batchOption(a, in, o) && !stepOption(a, in, o) && !presentOption(a, in, o) &&
-        !lectureOption(a, in, o))
+        !lectureOption(a, in, o) && !teachingOption(a, in, o))
       in.error = shapeArgument(a, o);
   }
   return in.error;
@@ -427,6 +449,12 @@ View:
   --shaders DIR         load the GLSL shaders from DIR
   --samples N           multisampling (default 4 on a GPU, 0 on a software renderer,
                         where lines and points are anti-aliased by the shaders alone)
+Why O(1), split view, build:
+  --why                 open the Why O(1) window and measure every method on regular N-gons
+  --why-max N           the largest N measured (8 .. 10^6, default 10^6)
+  --why-svg FILE        measure without a window, write the plots as SVG and exit
+  --split M             2D: the scene twice, method M in the right half, one camera
+  --build-step K        2D: the cells after receiving edges 0 .. K-1 (the build animation)
 Without hands:
   --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
   --svg FILE            the same, writing the scene as SVG (vector; both may be given)

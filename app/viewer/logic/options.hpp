@@ -65,6 +65,12 @@ struct Options {
   bool hideSlice = false;                 // 3D: --slice none
   bool cellAuto = false;                  // 3D: --cell auto (a one-face and a crowded cell)
   std::optional<std::size_t> cellSecond;  // 3D: --cell K,L pins L beside K
+  // Why O(1), the split view, the build animation
+  bool why = false;                          // open the Why O(1) window and start measuring
+  std::string whySvg;                        // measure without a window, write this SVG, exit
+  std::size_t whyMost = 1000000;             // the largest N measured
+  std::optional<std::string> split;          // 2D: this method beside the current one
+  std::optional<std::size_t> buildStep;      // 2D: the build animation at this step
 };
 
 // the result of parsing: options, or the reason they are wrong

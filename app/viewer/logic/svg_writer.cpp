@@ -358,23 +358,6 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
   return out;
 }
 
-std::string xmlEscape(std::string_view text) {
-  std::string s;
-  for (char c : text) {
-    switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      case '\'': s += "&apos;"; break;
-      default:
-        // control characters are not allowed in XML 1.0
-        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') s += c;
-    }
-  }
-  return s;
-}
-
 std::string sceneSvg(const SvgScene& s) {
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(s.size.x) + "\" height=\"" +

@@ -19,6 +19,7 @@
 #include "logic/colour.hpp"
 #include "logic/draw_list.hpp"
 #include "logic/label_layout.hpp"
+#include "logic/xml.hpp"
 
 namespace convexloc::viewer {
 
@@ -72,9 +73,6 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
                                                 const ScreenProjection& project,
                                                 glm::dvec2 viewport, const MeasureText& measure,
                                                 double scale, std::size_t budget = 400);
-
-// text with &, <, >, " and ' escaped for XML
-std::string xmlEscape(std::string_view text);
 
 // the whole SVG document
 std::string sceneSvg(const SvgScene& scene);

@@ -17,6 +17,8 @@
 #include "ui/panels3d.hpp"
 #include "ui/steps_panel.hpp"
 #include "ui/svg_export.hpp"
+#include "ui/scaling_panel.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -281,6 +283,36 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
   ImGui::End();
 }
 
+// the labels of `lists` over the scene, placed as the SVG places them: no two overlap, none
+// sits on a marker
+void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& project,
+                 std::span<const DrawList* const> lists) {
+  const glm::dvec2 vp =
+      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  const Palette& pal = paletteFor(model.settings.theme);
+  const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
+  for (const PlacedSceneLabel& p :
+       layoutSceneLabels(lists, 1, project, vp, measureText, model.settings.drawScale())) {
+    const char* text = p.label->text.c_str();
+    const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
+                    std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));
+    if (p.place.leader)
+      dl->AddLine(
+          ImVec2(static_cast<float>(p.anchor.x), static_cast<float>(p.anchor.y)),
+          ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
+          packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+      dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
+    dl->AddText(at, packAbgr(p.label->colour), text);
+  }
+}
+
+// a rectangle of the window as ImGui's clip rectangle
+void pushClip(ImDrawList* dl, const ScreenRect& r) {
+  dl->PushClipRect(ImVec2(static_cast<float>(r.lo.x), static_cast<float>(r.lo.y)),
+                   ImVec2(static_cast<float>(r.hi.x), static_cast<float>(r.hi.y)));
+}
+
 }  // namespace
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
@@ -415,30 +447,37 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   stepsWindow(model, area, now);  // also with the panels hidden
   slideCard(model, ui, area);
   toast(model, ui, area, now);
+  // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
+  // (no halves in 3D or the Lines mode: the pointer then goes where it is)
+  const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
+  model.split.setArea(halves ? area : ScreenRect{});
+  if (model.split.enabled() && halves) model.split.sync(model.scene2d);
+  advanceBuild(model, io.DeltaTime);
+  scalingWindow(model, ui);
 }
 
 void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const glm::dvec2 vp =
-      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
-  const Palette& pal = paletteFor(model.settings.theme);
-  const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
-  // placed as the SVG places them: no two overlap, none sits on a marker
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
-  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, sceneProjection(model), vp,
-                                                     measureText, model.settings.drawScale())) {
-    const char* text = p.label->text.c_str();
-    const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
-                    std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));
-    if (p.place.leader)
-      dl->AddLine(
-          ImVec2(static_cast<float>(p.anchor.x), static_cast<float>(p.anchor.y)),
-          ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
-          packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
-    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
-      dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
-    dl->AddText(at, packAbgr(p.label->colour), text);
+  const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
+  if (!split) {
+    writeLabels(model, dl, sceneProjection(model), lists);
+    return;
   }
+  // each half's labels, clipped to it, the right half's through its own camera
+  pushClip(dl, model.split.left());
+  writeLabels(model, dl, sceneProjection(model), lists);
+  dl->PopClipRect();
+  pushClip(dl, model.split.right());
+  const Camera2D right = model.split.rightCamera(model.camera2d);
+  const DrawList* rightLists[] = {&view.splitStructure(), &view.splitOverlay()};
+  writeLabels(model, dl,
+              [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
+                return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
+              },
+              rightLists);
+  dl->PopClipRect();
+  splitDecorations(model);
 }
 
 }  // namespace convexloc::viewer

@@ -8,6 +8,7 @@
 
 #include "logic/lines2d.hpp"
 #include "ui/method_panels.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -104,6 +105,10 @@ void methodPanel2D(Model& model, UiState& ui) {
   // the row is kept for every method, so that the buttons below never move
   if (scene.method() != Method2D::Uniform && scene.method() != Method2D::Polar) noResolutionRow();
   methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);
+  // the teaching views: split, build, Why O(1)
+  splitControls(model);
+  buildControls(model);
+  whyButton(model);
 }
 
 void viewOptions2D(Model& model) {
@@ -156,7 +161,7 @@ void legend2D(Model& model) {
   const bool tinted = std::any_of(scene.cells().begin(), scene.cells().end(), [&](const Cell2D& c) {
     return c.edges.size() > base || c.edges.size() > kCrowdedCell;
   });
-  if (tinted && model.settings.view2d.showTints) {
+  if (tinted && model.settings.view2d.showTints && !model.build.active) {
     swatchBox(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f));
     ImGui::Text("cell listing %zu+ edges", base + 1);
     if (s.crowdedCells) {
@@ -176,6 +181,7 @@ void legend2D(Model& model) {
     swatchLine(pal.box, true, 1.2f);
     ImGui::Text("bounding box");
   }
+  buildLegend(model);  // the build animation's rows
 }
 
 // the line's answer and the steps core took
@@ -218,6 +224,7 @@ void inspector2D(Model& model, bool hints) {
         return describeTrace(probe.trace, probe.point, scene.polygon(),
                              scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
       });
+  splitInspector(model);  // the split view's right half
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "ui/method_panels.hpp"
+#include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -92,6 +93,7 @@ void methodPanel3D(Model& model, UiState& ui) {
   // the row is kept for every method, so that the buttons below never move
   if (scene.method() != Method3D::Cubemap) noResolutionRow();
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
+  whyButton(model);  // Why O(1): the cost against F
 }
 
 void slicePanel3D(Model& model) {

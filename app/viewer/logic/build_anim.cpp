@@ -1,0 +1,99 @@
+// convexloc-viewer — the build, animated.
+#include "logic/build_anim.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "logic/camera2d.hpp"
+#include "logic/scene2d.hpp"
+#include "logic/text.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// a convex outline filled as a fan
+void fan(const std::vector<Vec2>& outline, Rgba c, DrawList& out) {
+  for (std::size_t i = 1; i + 1 < outline.size(); ++i)
+    out.triangle(at2(toGlm(outline[0])), at2(toGlm(outline[i])), at2(toGlm(outline[i + 1])), c);
+}
+
+// the mean of an outline's corners (inside it: the outline is convex)
+glm::dvec2 middleOf(const std::vector<Vec2>& outline) {
+  glm::dvec2 s{0.0};
+  for (const Vec2 p : outline) s += toGlm(p);
+  return outline.empty() ? s : s / static_cast<double>(outline.size());
+}
+
+}  // namespace
+
+BuildOrder::BuildOrder(std::span<const Cell2D> cells, std::size_t edgeCount)
+    : cellsOfEdge_(edgeCount), cellCount_(cells.size()) {
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    for (const std::uint32_t e : cells[c].edges)
+      if (e < edgeCount) cellsOfEdge_[e].push_back(c);
+}
+
+std::vector<std::size_t> BuildOrder::countsAt(std::size_t k) const {
+  std::vector<std::size_t> counts(cellCount_, 0);
+  for (std::size_t e = 0; e < std::min(k, steps()); ++e)
+    for (const std::size_t c : cellsOfEdge_[e]) ++counts[c];
+  return counts;
+}
+
+void BuildPlayback::show(std::size_t k, std::size_t steps) {
+  step = std::min(k, steps);
+  playing = false;
+  carry = 0.0;
+  ++version;
+}
+
+void BuildPlayback::advance(double seconds, std::size_t steps) {
+  if (!active || !playing) return;
+  carry += seconds * edgesPerSecond;
+  const auto whole = static_cast<std::size_t>(carry);
+  if (whole == 0) return;
+  carry -= static_cast<double>(whole);
+  step = std::min(step + whole, steps);
+  if (step == steps) playing = false;
+  ++version;
+}
+
+void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal, DrawList& out) {
+  const std::vector<Cell2D>& cells = scene.cells();
+  const ConvexPolygon& poly = scene.polygon();
+  if (cells.empty()) return;
+  const BuildOrder order(cells, poly.size());
+  step = std::min(step, order.steps());
+  const std::vector<std::size_t> counts = order.countsAt(step);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool crowded = counts[c] > kCrowdedCell;
+    if (counts[c] > 0) fan(cells[c].outline, cellTint(pal, counts[c], 0, crowded), out);
+    if (crowded) out.marker(at2(middleOf(cells[c].outline)), pal.crowded, 9.0f, MarkerShape::Cross);
+  }
+  if (step == 0) return;
+  // the edge just added, and the cells that list it, flashing
+  const std::size_t e = step - 1;
+  for (const std::size_t c : order.cellsOf(e)) {
+    const std::vector<Vec2>& o = cells[c].outline;
+    fan(o, withAlpha(pal.hoverEdge, 0.22f), out);
+    for (std::size_t i = 0; i < o.size(); ++i)
+      out.segment(at2(toGlm(o[i])), at2(toGlm(o[(i + 1) % o.size()])), pal.hoverEdge, 2.0f);
+  }
+  const glm::dvec2 a = toGlm(poly.edgeStart(e)), b = toGlm(poly.edgeEnd(e));
+  out.segment(at2(a), at2(b), pal.hoverEdge, 5.0f);
+  std::string text = numbered("e", e);
+  text.append(" added: ").append(std::to_string(step)).append(" of ");
+  text.append(std::to_string(order.steps())).append(" edges");
+  // written outside the edge, along its outward normal (y down on the screen), far enough
+  // that the text's box (about 7 by 16 pixels a character) clears the edge
+  const glm::dvec2 d = b - a;
+  const double len = glm::length(d);
+  const glm::vec2 n = len > 0.0
+                          ? glm::vec2(static_cast<float>(d.y / len), static_cast<float>(d.x / len))
+                          : glm::vec2(0.0f, -1.0f);
+  const float reach =
+      12.0f + std::abs(n.x) * 3.6f * static_cast<float>(text.size()) + std::abs(n.y) * 9.0f;
+  out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, n * reach);
+}
+
+}  // namespace convexloc::viewer

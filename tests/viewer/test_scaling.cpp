@@ -1,0 +1,210 @@
+// Why O(1): the measurement worker, the log-log layout and its SVG.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "logic/log_plot.hpp"
+#include "logic/scaling.hpp"
+
+namespace cv = convexloc::viewer;
+using convexloc::Method2D;
+
+namespace {
+
+// a small measurement, run to its end
+cv::ScalingProgress measureSmall(std::size_t most) {
+  cv::ScalingWorker worker;
+  cv::ScalingConfig c;
+  c.sizes = cv::scalingSizes(most);
+  c.tracedPoints = 200;
+  c.timedPoints = 2048;
+  c.minSeconds = 0.001;
+  worker.start(c);
+  worker.wait();
+  return worker.snapshot();
+}
+
+const cv::ScalingSeries& seriesOf(const cv::ScalingResult& r, Method2D m) {
+  return *std::find_if(r.series.begin(), r.series.end(),
+                       [m](const cv::ScalingSeries& s) { return s.method == m; });
+}
+
+// A well-formedness check small enough to read: every tag closes in order, attribute
+// values are quoted, and text holds no raw '<' and only known entities.
+bool wellFormed(const std::string& xml, std::string& why) {
+  std::vector<std::string> open;
+  std::size_t i = 0;
+  while (i < xml.size()) {
+    if (xml[i] == '&') {
+      const std::size_t semi = xml.find(';', i);
+      const std::string e = semi == std::string::npos ? "" : xml.substr(i, semi - i + 1);
+      if (e != "&amp;" && e != "&lt;" && e != "&gt;" && e != "&quot;" && e != "&apos;")
+        return why = "bad entity at " + std::to_string(i), false;
+      i = semi + 1;
+      continue;
+    }
+    if (xml[i] != '<') {
+      if (xml[i] == '>') return why = "raw > at " + std::to_string(i), false;
+      ++i;
+      continue;
+    }
+    const std::size_t end = xml.find('>', i);
+    if (end == std::string::npos) return why = "unclosed tag", false;
+    std::string tag = xml.substr(i + 1, end - i - 1);
+    i = end + 1;
+    if (tag.front() == '?') continue;
+    if (std::count(tag.begin(), tag.end(), '"') % 2 != 0) return why = "odd quotes: " + tag, false;
+    if (tag.front() == '/') {
+      if (open.empty() || open.back() != tag.substr(1)) return why = "mismatched </" + tag, false;
+      open.pop_back();
+      continue;
+    }
+    const bool selfClosing = tag.back() == '/';
+    const std::string name = tag.substr(0, tag.find_first_of(" /"));
+    if (!selfClosing) open.push_back(name);
+  }
+  if (!open.empty()) return why = "unclosed <" + open.back() + ">", false;
+  return true;
+}
+
+std::size_t countOf(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(Scaling, SizesGrowByEightUpToTheLargest) {
+  EXPECT_EQ(cv::scalingSizes(4096), (std::vector<std::size_t>{8, 64, 512, 4096}));
+  const std::vector<std::size_t> full = cv::scalingSizes(1000000);
+  EXPECT_EQ(full.back(), 1000000u);
+  EXPECT_TRUE(std::is_sorted(full.begin(), full.end()));
+}
+
+TEST(Scaling, WorkerOnTinySizesFinishesWithMonotoneN) {
+  const cv::ScalingProgress p = measureSmall(512);
+  EXPECT_TRUE(p.finished);
+  EXPECT_FALSE(p.running);
+  EXPECT_EQ(p.done, p.total);
+  ASSERT_EQ(p.result.series.size(), std::size(convexloc::kAllMethods2D));
+  for (const cv::ScalingSeries& s : p.result.series) {
+    ASSERT_EQ(s.samples.size(), 3u) << toString(s.method);
+    for (std::size_t i = 1; i < s.samples.size(); ++i)
+      EXPECT_GT(s.samples[i].n, s.samples[i - 1].n);
+    for (const cv::ScalingSample& x : s.samples) EXPECT_GT(x.nsPerQuery, 0.0);
+  }
+  EXPECT_EQ(p.result.memory.size(), 9u);
+}
+
+TEST(Scaling, PolarStaysBoundedWhileHalfplaneGrowsWithN) {
+  const cv::ScalingProgress p = measureSmall(4096);
+  const auto& half = seriesOf(p.result, Method2D::Halfplane).samples;
+  const auto& polar = seriesOf(p.result, Method2D::Polar).samples;
+  ASSERT_EQ(half.size(), 4u);
+  // halfplane tests every edge of an inside point: its mean grows about like N
+  EXPECT_GT(half.back().predicates, 100.0 * half.front().predicates);
+  EXPECT_GT(half.back().predicates, 0.2 * 4096);
+  for (const cv::ScalingSample& x : polar) {
+    EXPECT_LE(x.predicates, 3.0);
+    EXPECT_GE(x.cellEdges, 0.5);  // the paper's query tests what the cell lists
+    EXPECT_LE(x.cellEdges, 3.0);
+  }
+}
+
+TEST(Scaling, SolidsOnGeodesicSpheres) {
+  cv::ScalingWorker worker;
+  cv::ScalingConfig c;
+  c.faces = cv::geodesicSizes(1280);
+  c.tracedPoints = 200;
+  c.timedPoints = 1024;
+  c.minSeconds = 0.001;
+  EXPECT_EQ(c.faces, (std::vector<std::size_t>{20, 80, 320, 1280}));
+  worker.start(c);
+  worker.wait();
+  const cv::ScalingProgress p = worker.snapshot();
+  EXPECT_TRUE(p.finished);
+  ASSERT_EQ(p.result.series3d.size(), std::size(convexloc::kAllMethods3D));
+  const auto& half = p.result.series3d[0].samples;  // halfspace
+  const auto& cube = p.result.series3d[2].samples;  // cubemap
+  ASSERT_EQ(half.size(), 4u);
+  ASSERT_EQ(cube.size(), 4u);
+  EXPECT_EQ(half.back().n, 1280u);
+  EXPECT_GT(half.back().predicates, 20.0 * half.front().predicates);
+  for (const cv::ScalingSample& x : cube) EXPECT_LE(x.predicates, 4.0);
+  const std::string svg = cv::scalingSvg(p.result, c, cv::Theme::Dark, true);
+  std::string why;
+  EXPECT_TRUE(wellFormed(svg, why)) << why;
+  EXPECT_EQ(countOf(svg, "<polyline"), 3u + 3u);
+  EXPECT_EQ(cv::solidSvgPath("/tmp/why.svg"), "/tmp/why-3d.svg");
+}
+
+TEST(Scaling, TheLinearMethodStopsAtItsLimit) {
+  cv::ScalingConfig c;
+  c.linearLimit = 64;
+  EXPECT_TRUE(cv::measured(c, Method2D::Halfplane, 64));
+  EXPECT_FALSE(cv::measured(c, Method2D::Halfplane, 512));
+  EXPECT_TRUE(cv::measured(c, Method2D::Polar, 1000000));
+}
+
+TEST(Scaling, CancelStopsAndJoins) {
+  cv::ScalingWorker worker;
+  cv::ScalingConfig c;
+  c.sizes = cv::scalingSizes(1000000);
+  worker.start(c);
+  worker.cancel();
+  const cv::ScalingProgress p = worker.snapshot();
+  EXPECT_FALSE(p.running);
+  EXPECT_FALSE(worker.running());
+  EXPECT_LT(p.done, p.total);
+}
+
+TEST(Scaling, PaperMemoryGrowsAsTheGapShrinksWhileOursStaysBounded) {
+  const cv::MemorySample wide = cv::measureMemory(1e-1), narrow = cv::measureMemory(1e-9);
+  EXPECT_NEAR(narrow.gap, 1e-9, 1e-12);
+  EXPECT_NEAR(narrow.paperSlabs, 2.0 / narrow.gap, 2.0);
+  EXPECT_GT(narrow.paperBytes, 1e7 * wide.paperBytes);
+  EXPECT_LT(narrow.polarBytes, 100000u);
+  EXPECT_LT(narrow.uniformBytes, 100000u);
+}
+
+TEST(Scaling, SvgIsWellFormedWithOnePolylinePerMethod) {
+  const cv::ScalingProgress p = measureSmall(64);
+  cv::ScalingConfig c;
+  c.sizes = cv::scalingSizes(64);
+  const std::string svg = cv::scalingSvg(p.result, c, cv::Theme::Light);
+  std::string why;
+  EXPECT_TRUE(wellFormed(svg, why)) << why;
+  // five methods in each of the two plots against N, the paper's polar in the first, and
+  // three memory curves
+  EXPECT_EQ(countOf(svg, "<polyline"), 5u + 1u + 5u + 3u);
+  for (const Method2D m : convexloc::kAllMethods2D) {
+    std::string legend(1, '>');
+    legend.append(toString(m)).append(" ");
+    EXPECT_GE(countOf(svg, legend), 2u) << toString(m);
+  }
+}
+
+TEST(LogPlot, TextIsEscaped) {
+  EXPECT_EQ(cv::xmlEscape("a<b & \"c\" > 'd'"), "a&lt;b &amp; &quot;c&quot; &gt; &apos;d&apos;");
+  cv::LogPlot plot;
+  plot.title = "N < 10 & more";
+  plot.series.push_back({"x<y", cv::hex(0x112233), {{1.0, 1.0}, {10.0, 100.0}}, false});
+  const cv::PlotDrawing d = cv::layoutLogPlot(plot, {{0.0, 0.0}, {400.0, 300.0}}, cv::PlotStyle{});
+  const std::string svg = cv::svgDocument(std::span(&d, 1), {400.0, 300.0}, cv::hex(0xffffff), 12);
+  std::string why;
+  EXPECT_TRUE(wellFormed(svg, why)) << why;
+  EXPECT_NE(svg.find("N &lt; 10 &amp; more"), std::string::npos);
+}
+
+TEST(LogPlot, DecadeLabels) {
+  EXPECT_EQ(cv::decadeText(0), "1");
+  EXPECT_EQ(cv::decadeText(2), "100");
+  EXPECT_EQ(cv::decadeText(3), "1k");
+  EXPECT_EQ(cv::decadeText(7), "10M");
+  EXPECT_EQ(cv::decadeText(-1), "0.1");
+  EXPECT_EQ(cv::decadeText(-9), "1e-9");
+}
