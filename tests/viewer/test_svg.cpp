@@ -8,6 +8,8 @@
 
 #include "convexloc/generate2d.hpp"
 #include "logic/camera2d.hpp"
+#include "logic/model.hpp"
+#include "logic/options.hpp"
 #include "logic/scene2d.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/svg_writer.hpp"
@@ -192,4 +194,29 @@ TEST(Svg, ThreeDimensionalFillsAreWrittenBackToFront) {
   std::map<std::string, int> counts;
   EXPECT_EQ(checkXml(svg, counts), "");
   EXPECT_EQ(counts["polygon"], 2);
+}
+
+TEST(Options, PresentationAndVectorFigureFlags) {
+  const std::vector<std::string_view> args{
+      "--present", "--caption",    "Fig. 3 & <4>", "--no-legend",  "--svg",
+      "out.svg",   "--screenshot", "out.png",      "--font-scale", "2"};
+  const cv::ParsedOptions parsed = cv::parseOptions(args);
+  ASSERT_EQ(parsed.error, "");
+  EXPECT_TRUE(parsed.options.present);
+  EXPECT_TRUE(parsed.options.noLegend);
+  EXPECT_EQ(parsed.options.caption, "Fig. 3 & <4>");
+  EXPECT_EQ(parsed.options.svg, "out.svg");
+  EXPECT_EQ(parsed.options.screenshot, "out.png");
+  // the model takes them: panels hidden, the legend off, the caption, lines scaled with text
+  cv::Model model;
+  EXPECT_EQ(model.apply(parsed.options), "");
+  EXPECT_TRUE(model.settings.present);
+  EXPECT_FALSE(model.settings.showUi);
+  EXPECT_FALSE(model.settings.showLegend);
+  EXPECT_EQ(model.settings.caption, "Fig. 3 & <4>");
+  EXPECT_FLOAT_EQ(model.settings.drawScale(), 2.0f);
+  for (const char* bad : {"--svg", "--caption"}) {
+    const std::vector<std::string_view> one{bad};
+    EXPECT_FALSE(cv::parseOptions(one).error.empty()) << bad;
+  }
 }

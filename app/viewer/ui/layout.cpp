@@ -109,8 +109,11 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
     ui.legendMoved = true;
     ui.legendPos[0] = pos.x + ImGui::GetIO().MouseDelta.x;
     ui.legendPos[1] = pos.y + ImGui::GetIO().MouseDelta.y;
+  } else if (ImGui::IsWindowHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    ui.legendMoved = false;  // back to the corner, and the scene fitted beside it
+    model.requestFit();
   } else if (ImGui::IsWindowHovered()) {
-    ImGui::SetTooltip("drag to move; G hides the legend");
+    ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
   }
   if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
       now < ui.refitUntil)
