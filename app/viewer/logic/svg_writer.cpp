@@ -321,6 +321,75 @@ void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::s
          xmlEscape(s.caption) + "</text>\n";
 }
 
+// a legend row's swatch, `h` high, its left edge at x and its middle at y
+std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
+  const double w = 0.7 * h;
+  switch (r.swatch) {
+    case Swatch::Disc:
+      return "<circle cx=\"" + num(x + 0.3 * h) + "\" cy=\"" + num(y) + "\" r=\"" + num(0.27 * h) +
+             "\"" + paint("fill", r.colour) + paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Box:
+      return "<rect x=\"" + num(x) + "\" y=\"" + num(y - 0.35 * h) + "\" width=\"" + num(w) +
+             "\" height=\"" + num(0.7 * h) + "\"" + paint("fill", r.colour) +
+             paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Line:
+    case Swatch::DashedLine: break;
+  }
+  std::string e = "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + w) +
+                  "\" y2=\"" + num(y) + "\"" + paint("stroke", r.colour) + " stroke-width=\"" +
+                  num(r.width) + "\"";
+  if (r.swatch == Swatch::DashedLine) e += " stroke-dasharray=\"" + num(0.3 * w) + "\"";
+  return e + "/>";
+}
+
+// `text` at (x, y), its baseline centred on y, anchored at its start or end
+std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + paint("fill", c) +
+         (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+}
+
+// the legend as the window shows it: title, class rows in columns, a row per mark
+void writeLegend(const SvgScene& s, std::string& out) {
+  const Legend& g = *s.legend;
+  const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
+  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
+  double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
+  for (const LegendRow& r : g.classes) {
+    name = std::max(name, width(r.text));
+    count = std::max(count, width(r.count));
+    share = std::max(share, width(r.share));
+  }
+  for (const LegendRow& r : g.rows) rows = std::max(rows, sw + width(r.text));
+  const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
+  const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
+  const double w = std::max({heading, classes, rows}) + 2.0 * pad;
+  const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
+  out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
+         "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
+         "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
+         paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
+         " stroke-width=\"1\"/>\n";
+  double y = lo.y + pad + 0.5 * line;
+  const double x = lo.x + pad;
+  out += "  " + legendText(x, y, g.title, s.text) + "\n";
+  if (!g.subtitle.empty())
+    out += "  " + legendText(x + width(g.title) + 0.4 * f, y, g.subtitle, s.textMuted) + "\n";
+  for (const LegendRow& r : g.classes) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text);
+    if (!r.count.empty())
+      out += legendText(x + sw + name + 0.8 * f + count, y, r.count, s.text, true) +
+             legendText(x + sw + name + 1.4 * f + count, y, r.share, s.textMuted);
+    out += "\n";
+  }
+  for (const LegendRow& r : g.rows) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text) + "\n";
+  }
+  out += "</g>\n";
+}
+
 }  // namespace
 
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
@@ -387,6 +456,7 @@ std::string sceneSvg(const SvgScene& s) {
   writeScene(s, out, visible, stride);
   writeLabels(s, out);
   writeNotes(s, out, visible, stride);
+  if (s.legend) writeLegend(s, out);
   out += "</svg>\n";
   return out;
 }
