@@ -41,6 +41,29 @@ Legend linesLegend(const Palette& pal) {
   return g;
 }
 
+// the lines of the method's structure, as structure2d draws them (dense ones left out)
+void structureRows(const Scene2D& scene, const Palette& pal, const View2DOptions& opt, Legend& g) {
+  const bool dense = scene.cells().size() > kMaxCellLines;
+  switch (scene.method()) {
+    case Method2D::Halfplane:
+      g.rows.push_back(line(pal.structure, false, 1.0f, "the edges' lines"));
+      break;
+    case Method2D::Wedge:
+      if (!dense) g.rows.push_back(line(pal.structure, false, 1.0f, "diagonals from vertex 0"));
+      break;
+    case Method2D::Slab:
+    case Method2D::Uniform:
+      if (!dense) g.rows.push_back(line(pal.structure, false, 1.0f, "slab boundaries"));
+      break;
+    case Method2D::Polar:
+      if (!scene.centre()) break;
+      if (opt.showOctants && scene.effectiveResolution() > 0)
+        g.rows.push_back(line(pal.octant, true, 1.6f, "octant lines through x_T"));
+      if (!dense) g.rows.push_back(line(pal.structure, false, 1.0f, "polar slab boundaries"));
+      break;
+  }
+}
+
 Legend legend2D(const Model& model) {
   const Palette& pal = paletteFor(model.settings.theme);
   if (model.lines2d.enabled()) return linesLegend(pal);
@@ -56,16 +79,13 @@ Legend legend2D(const Model& model) {
   });
   const bool crowded = std::any_of(cells.begin(), cells.end(),
                                    [](const Cell2D& c) { return c.edges.size() > kCrowdedCell; });
-  if (opt.showTints && extra)
+  if (opt.showStructure && opt.showTints && extra)
     g.rows.push_back(box(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f),
                          "cell listing " + std::to_string(base + 1) + "+ edges"));
-  if (opt.showTints && crowded)
+  if (opt.showStructure && opt.showTints && crowded)
     g.rows.push_back(box(cellTint(pal, 0, base, true), withAlpha(pal.crowded, 0.8f),
                          "crowded cell (bisection)"));
-  if (m == Method2D::Polar && scene.centre()) {
-    if (opt.showOctants) g.rows.push_back(line(pal.octant, true, 1.6f, "octant lines through x_T"));
-    g.rows.push_back(line(pal.structure, false, 1.0f, "polar slab boundaries"));
-  }
+  if (opt.showStructure) structureRows(scene, pal, opt, g);
   if (opt.showBox) g.rows.push_back(line(pal.box, true, 1.2f, "bounding box"));
   return g;
 }
