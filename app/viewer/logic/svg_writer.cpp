@@ -288,8 +288,9 @@ std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char
 void writeLabels(const SvgScene& s, std::string& out) {
   std::vector<const DrawList*> lists = s.base;
   lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
-  const auto placed =
-      layoutSceneLabels(lists, s.base.size(), s.project, s.size, s.measure, s.scale);
+  const auto placed = layoutSceneLabels(
+      lists, s.base.size(), s.project,
+      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale);
   out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
          num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
          paint("stroke", withAlpha(s.background, 0.85f)) +
@@ -395,7 +396,7 @@ void writeLegend(const SvgScene& s, std::string& out) {
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
-                                                glm::dvec2 viewport, const MeasureText& measure,
+                                                const PixelBox& area, const MeasureText& measure,
                                                 double scale, std::size_t budget) {
   std::vector<PlacedSceneLabel> shown;
   std::vector<LabelRequest> requests;
@@ -409,7 +410,8 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
         const std::optional<glm::dvec3> s = project(l.p);
         if (!s) continue;
         const glm::dvec2 at(*s);
-        if (at.x < -200.0 || at.y < -50.0 || at.x > viewport.x + 200.0 || at.y > viewport.y + 50.0)
+        if (!area.empty() && (at.x < area.lo.x - 200.0 || at.y < area.lo.y - 50.0 ||
+                              at.x > area.hi.x + 200.0 || at.y > area.hi.y + 50.0))
           continue;
         shown.push_back({&l, at, {}});
         requests.push_back({at, glm::dvec2(l.offset), l.text, pass == 0});
@@ -419,8 +421,7 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
     for (const Marker& m : list->markers)
       if (const std::optional<glm::dvec3> s = project(m.p))
         markers.push_back({glm::dvec2(*s), 0.5 * m.size * scale});
-  const std::vector<LabelPlacement> placed =
-      placeLabels(requests, markers, measure, scale, viewport);
+  const std::vector<LabelPlacement> placed = placeLabels(requests, markers, measure, scale, area);
   std::vector<PlacedSceneLabel> out;
   for (std::size_t i = 0; i < shown.size(); ++i)
     if (placed[i].shown) out.push_back({shown[i].label, shown[i].anchor, placed[i]});

@@ -60,7 +60,8 @@ struct SvgScene {
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  Rgba textMuted;  // the legend's counts and subtitle
+  PixelBox labelArea;  // where labels may go (the window's scene area); empty: everywhere
+  Rgba textMuted;      // the legend's counts and subtitle
 };
 
 // the labels of `lists` placed as both the window and the SVG draw them
@@ -69,13 +70,13 @@ struct PlacedSceneLabel {
   glm::dvec2 anchor{0.0};
   LabelPlacement place;
 };
-// Projects the labels of `lists` (at most `budget`, those off the viewport skipped) and
-// places them around the markers of the same lists; overlay labels (`essentialFrom` and
-// later lists) are essential.
+// Projects the labels of `lists` (at most `budget`, those far off `area` skipped) and
+// places them in `area` around the markers of the same lists; overlay labels
+// (`essentialFrom` and later lists) are essential.
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
-                                                glm::dvec2 viewport, const MeasureText& measure,
+                                                const PixelBox& area, const MeasureText& measure,
                                                 double scale, std::size_t budget = 400);
 
 // text with &, <, >, " and ' escaped for XML

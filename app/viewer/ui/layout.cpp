@@ -293,7 +293,7 @@ float leftPanelWidth(const Model& model, glm::dvec2 window) {
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
   // narrower windows keep the scene wide: legend and inspector float over it instead
   const float fs = model.settings.fontScale;
-  if (!model.settings.showUi || window.x < 1280.0 * std::max(1.0f, 0.8f * fs)) return 0.0f;
+  if (!model.settings.showUi || window.x < 1280.0 * std::max(1.0f, 0.75f * fs)) return 0.0f;
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
@@ -406,12 +406,14 @@ void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   // placed as the SVG places them: no two overlap, none sits on a marker
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
-  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, sceneProjection(model), vp,
-                                                     measureText, model.settings.drawScale())) {
+  for (const PlacedSceneLabel& p :
+       layoutSceneLabels(lists, 1, sceneProjection(model), {area.lo, area.hi}, measureText,
+                         model.settings.drawScale())) {
     const char* text = p.label->text.c_str();
     const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
                     std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));

@@ -90,12 +90,13 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const std::string&
   s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
   s.project = sceneProjection(model);
+  const ScreenRect area = sceneArea(model, s.size);
+  s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
   s.caption = model.settings.caption;
   // the legend in the scene's lower right corner, above the caption
   s.textMuted = pal.textMuted;
   if (model.settings.showLegend) {
     s.legend = legendOf(model);
-    const ScreenRect area = sceneArea(model, s.size);
     const double caption = s.caption.empty() ? 0.0 : 3.4 * s.fontPixels;
     s.legendCorner = area.hi - glm::dvec2(10.0, 10.0 + caption);
   }
