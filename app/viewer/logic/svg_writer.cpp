@@ -315,11 +315,14 @@ void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::s
            "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
   }
   if (s.caption.empty()) return;
+  // under the middle of the scene area, as the window's caption box
   const double px = 1.6 * s.fontPixels;
-  out += "<text class=\"caption\" x=\"" + num(0.5 * s.size.x) + "\" y=\"" +
-         num(s.size.y - 1.2 * px) + "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" +
-         num(px) + "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" +
-         xmlEscape(s.caption) + "</text>\n";
+  const double x =
+      s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
+  out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(s.size.y - 1.2 * px) +
+         "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
+         "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(s.caption) +
+         "</text>\n";
 }
 
 // a legend row's swatch, `h` high, its left edge at x and its middle at y

@@ -60,7 +60,7 @@ struct SvgScene {
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  PixelBox labelArea;  // where labels may go (the window's scene area); empty: everywhere
+  PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
   Rgba textMuted;      // the legend's counts and subtitle
 };
 
