@@ -105,10 +105,15 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   panelsOf(model).legend(model);
   // dragged by hand (ImGui's own moving would fight the corner placement)
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  if (ImGui::IsWindowHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+  // a drag that began on the legend moves it until the button is let go
+  if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    ui.legendDragging = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui.legendDragging = false;
+  const ImVec2 delta = ImGui::GetIO().MouseDelta;
+  if (ui.legendDragging && (delta.x != 0.0f || delta.y != 0.0f) && ImGui::IsMousePosValid()) {
     ui.legendMoved = true;
-    ui.legendPos[0] = pos.x + ImGui::GetIO().MouseDelta.x;
-    ui.legendPos[1] = pos.y + ImGui::GetIO().MouseDelta.y;
+    ui.legendPos[0] = pos.x + delta.x;
+    ui.legendPos[1] = pos.y + delta.y;
   } else if (ImGui::IsWindowHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     ui.legendMoved = false;  // back to the corner, and the scene fitted beside it
     model.requestFit();
