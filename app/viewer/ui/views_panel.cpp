@@ -108,20 +108,6 @@ void splitInspector(const Model& model) {
              pal, colour);
 }
 
-void buildLegend(const Model& model) {
-  if (!model.build.active || model.dim != Dim::Two || model.scene2d.cells().empty()) return;
-  const Palette& pal = paletteFor(model.settings.theme);
-  ImGui::TextDisabled("Build: %zu of %zu edges in", model.build.step,
-                      model.scene2d.polygon().size());
-  swatchBox(withAlpha(pal.hoverEdge, 0.22f), pal.hoverEdge);
-  ImGui::Text("cells listing the edge just added");
-  swatchBox(cellTint(pal, 2, 0, false), withAlpha(pal.extraEdges, 0.8f));
-  ImGui::Text("tint: edges held so far");
-  if (model.scene2d.stats().maxPerCell <= kCrowdedCell) return;
-  swatchBox(cellTint(pal, 0, 0, true), withAlpha(pal.crowded, 0.8f));
-  ImGui::Text("crowded (> %zu edges), crossed", kCrowdedCell);
-}
-
 void advanceBuild(Model& model, double seconds) {
   if (model.dim != Dim::Two || model.scene2d.cells().empty()) return;
   model.build.advance(seconds, model.scene2d.polygon().size());

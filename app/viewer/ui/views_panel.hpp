@@ -17,8 +17,6 @@ void whyButton(Model& model);
 void splitDecorations(const Model& model);
 // the right half's placed point and its trace, under the inspector (split view only)
 void splitInspector(const Model& model);
-// the build animation's legend rows (while it shows)
-void buildLegend(const Model& model);
 // moves a playing build animation on by this frame's time
 void advanceBuild(Model& model, double seconds);
 
