@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "convexloc/intersect3d.hpp"
+
 namespace convexloc::viewer {
 namespace {
 
@@ -198,6 +200,17 @@ bool solidOption(std::string_view a, ArgReader& in, Options& o) {
     if (!in.value(v) || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
       return in.fail("--cell needs a cell index");
     o.cell = k;
+  } else if (a == "--plane") {
+    // the Planes mode: three points, not on one line (core's exact test)
+    double c[9] = {};
+    for (double& x : c)
+      if (!in.value(v) || !parseDouble(v, x))
+        return in.fail("--plane needs X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3");
+    const std::array<Vec3, 3> q = {Vec3{c[0], c[1], c[2]}, Vec3{c[3], c[4], c[5]},
+                                   Vec3{c[6], c[7], c[8]}};
+    if (collinear(q[0], q[1], q[2]))
+      return in.fail("--plane needs three points not on one line (these define no plane)");
+    o.plane = q;
   } else {
     return false;
   }
@@ -310,6 +323,9 @@ Scene:
   --3d                  the 3D scene (a polyhedron with the cube map) without a file
   --slice AXIS=V        3D: the slicing plane, e.g. z=0.25
   --cell K              3D: pin cube-map cell K (its pyramid and the faces it lists)
+  --plane X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3
+                        3D: the Planes mode (the dual problem) with the plane through the
+                        three points (not on one line); implies --3d
 View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
@@ -327,8 +343,9 @@ Without hands:
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
-Keys: F fit, H hide panels, 1..5 method, L lines mode, Space new spray, Esc clear the
-point, F12 screenshot.
+In the 3D Planes mode (L) the panel's sliders move the plane.
+Keys: F fit, H hide panels, 1..5 method, L lines mode (3D: planes mode), Space new spray,
+Esc clear the point, F12 screenshot.
 )";
 }
 

@@ -2,10 +2,12 @@
 #include "ui/panels3d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <imgui.h>
 
+#include "logic/dual_view3d.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -83,14 +85,77 @@ void shapePanel3D(Model& model, UiState& ui) {
                                                 kGenerator3D, true);
 }
 
+// === The Planes mode (the dual problem in 3D)
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// a slider in degrees over an angle kept in radians; true when moved
+bool angleSlider(const char* id, const char* format, double& radians, double lo, double hi) {
+  double degrees = radians / kDegree;
+  ImGui::SetNextItemWidth(-1.0f);
+  if (!ImGui::SliderScalar(id, ImGuiDataType_Double, &degrees, &lo, &hi, format)) return false;
+  radians = degrees * kDegree;
+  return true;
+}
+
+// the plane's sliders, the method and the dual's size
+void planesControls(Model& model) {
+  Planes3D& planes = model.planes3d;
+  PlaneSliders s = planes.sliders();
+  bool moved = false;
+  const double reach = planes.offsetReach(), lo = -reach, hi = reach;
+  ImGui::SetNextItemWidth(-1.0f);
+  moved |= ImGui::SliderScalar("##planeOffset", ImGuiDataType_Double, &s.offset, &lo, &hi,
+                               "offset %.4g");
+  moved |= angleSlider("##planeAzimuth", "azimuth %.1f deg", s.azimuth, -180.0, 180.0);
+  moved |= angleSlider("##planeElevation", "elevation %.1f deg", s.elevation, -90.0, 90.0);
+  if (ImGui::SmallButton("Through the centre")) {
+    s.offset = 0.0;
+    moved = true;
+  }
+  if (moved) planes.setSliders(s);
+  ImGui::TextDisabled("method:");
+  for (const PlaneMethod m : kAllPlaneMethods) {
+    ImGui::SameLine();
+    const std::string name = std::string(toString(m)) + " " + std::string(costOf(m));
+    if (ImGui::RadioButton(name.c_str(), planes.method() == m)) planes.setMethod(m);
+  }
+  if (const PlaneIntersector* pi = planes.dualIntersector()) {
+    const PlaneStats st = pi->stats();
+    const std::string text = "the dual P*: " + grouped(st.dualVertices) + " vertices, " +
+                             grouped(st.dualFaces) + " faces, " + grouped(st.cells) +
+                             " cube-map cells";
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+// the Planes mode's switch, and its controls when on; true when on
+bool planesPanel(Model& model) {
+  if (const auto on = modeSwitch(
+          "Planes: the dual problem (L)", model.planes3d.enabled(),
+          "Place a plane with the sliders; core's dual method (the cube map of the dual\n"
+          "polyhedron) and the O(V) baseline answer it, the dual view shows beside"))
+    model.setPlanesMode(*on);
+  if (!model.planes3d.enabled()) return false;
+  planesControls(model);
+  return true;
+}
+
 void methodPanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
+  if (planesPanel(model)) return;
   methodChoice(scene);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
 }
 
 void slicePanel3D(Model& model) {
+  if (model.planes3d.enabled()) {
+    ImGui::TextDisabled("hidden: the Planes mode shows its own plane (Method panel)");
+    return;
+  }
   Scene3D& scene = model.scene3d();
   SlicePlane s = scene.slice();
   bool changed = false;
@@ -125,15 +190,32 @@ void viewOptions3D(Model& model) {
 }
 
 bool inspectable3D(Model& model) {
+  if (model.planes3d.enabled()) return model.planes3d.plane().has_value();
   const Scene3D& s = model.scene3d();
   return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.probe().has_value();
 }
 
 constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
                                     "click the plane: place a point; Shift-click: pin a cell",
-                                    "F fit, H hide panels, 1-3 method, Space spray", nullptr};
+                                    "F fit, H hide panels, 1-3 method, Space spray",
+                                    "L planes mode (sliders: Method)", nullptr};
+
+// the Planes mode's legend: what the marks in both views are
+void legendPlanes(Model& model) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  ImGui::Text("Planes: the dual problem");
+  swatchBox(pal.slicePlane, pal.box);
+  ImGui::Text("the plane through q1, q2, q3");
+  swatchBox(withAlpha(pal.inside, 0.6f), pal.inside);
+  ImGui::Text("its section, per core");
+  swatchBox(pal.positive, pal.negative);
+  ImGui::Text("extreme vertices (sign of G)");
+  swatchBox(withAlpha(pal.hoverEdge, 0.35f), pal.hoverEdge);
+  ImGui::Text("cells of y, -y; their proposals");
+}
 
 void legend3D(Model& model) {
+  if (model.planes3d.enabled()) return legendPlanes(model);
   Scene3D& scene = model.scene3d();
   const Palette& pal = paletteFor(model.settings.theme);
   const Stats3D& s = scene.stats();
@@ -156,7 +238,23 @@ void legend3D(Model& model) {
   }
 }
 
+// the plane's answer by both methods and the steps core took
+void planeInspector(Model& model) {
+  const Planes3D& planes = model.planes3d;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const auto& plane = planes.plane();
+  if (!plane) return;
+  const Crossing c = plane->chosen(planes.method()).crossing;
+  const Rgba colour = crossingColour(pal, c);
+  ImGui::TextColored(im(colour), "Plane: %s", std::string(toString(c)).c_str());
+  const CubemapLocator* cube = planes.dualIntersector()->dualLocator();
+  traceLines(
+      describePlane(*plane, planes.method(), cube ? cube->vertices() : std::span<const Vec3>{}),
+      pal, colour);
+}
+
 void inspector3D(Model& model, bool hints) {
+  if (model.planes3d.enabled()) return planeInspector(model);
   Scene3D& scene = model.scene3d();
   const Palette& pal = paletteFor(model.settings.theme);
   const auto& cells = scene.cells();
