@@ -55,8 +55,14 @@ void dualCell(const CubemapLocator& cube, const DualPlace3D& at, const Cell3D& c
     out.segment(k[i], k[(i + 1) % 4], colour, 2.0f);
     out.segment(at.toWorld(cell.apex), k[i], colour, 1.25f, 5.0f);
   }
-  for (const std::uint32_t f : listed)
-    if (f < cube.faces().size()) dualFace(cube, at, f, withAlpha(colour, 0.7f), out);
+  const auto v = cube.vertices();
+  for (const std::uint32_t f : listed) {
+    if (f >= cube.faces().size()) continue;
+    dualFace(cube, at, f, withAlpha(colour, 0.7f), out);
+    const auto& t = cube.faces()[f];
+    for (int i = 0; i < 3; ++i)
+      out.segment(at.toWorld(v[t[i]]), at.toWorld(v[t[(i + 1) % 3]]), colour, 3.0f);
+  }
 }
 
 // the plane's patch and, where it meets the polyhedron, the section core classifies on it
@@ -84,8 +90,8 @@ void dualPoints(const Planes3D& planes, const Palette& pal, bool labels, DrawLis
   out.marker(at.toWorld(y), pal.text, 10.0f);
   out.marker(at.toWorld(down), pal.text, 10.0f, MarkerShape::Ring);
   if (!labels) return;
-  out.label(at.toWorld(y), "b = y", pal.text, {16.0f, -14.0f});
-  out.label(at.toWorld(down), "-y", pal.text, {14.0f, -12.0f});
+  out.label(at.toWorld(y), "b = y", pal.text, {-30.0f, 12.0f});
+  out.label(at.toWorld(down), "-y", pal.text, {16.0f, 10.0f});
 }
 
 // the three points, the extremes (by sign), the vertices the dual cells proposed
@@ -110,9 +116,9 @@ void primalMarks(const Planes3D& planes, const ConvexPolyhedron& poly, const Pal
     out.marker(toGlm(v[x.smallest]), signOf(pal, x.smallestSign), 13.0f);
     if (labels) {
       out.label(toGlm(v[x.largest]), "max G" + signText(x.largestSign), signOf(pal, x.largestSign),
-                {0.0f, -22.0f});
+                {0.0f, -26.0f});
       out.label(toGlm(v[x.smallest]), "min G" + signText(x.smallestSign),
-                signOf(pal, x.smallestSign), {0.0f, 22.0f});
+                signOf(pal, x.smallestSign), {0.0f, 26.0f});
     }
   }
   const char* names[3] = {"q1", "q2", "q3"};
@@ -125,15 +131,14 @@ void primalMarks(const Planes3D& planes, const ConvexPolyhedron& poly, const Pal
 
 // the two views' names, and the answer as a caption above the polyhedron
 void captions(const Planes3D& planes, const Palette& pal, DrawList& out) {
-  const Bounds3 b = planes.both();
-  glm::dvec3 dualTop = planes.place().middle, primalTop = planes.centre();
-  dualTop.z = primalTop.z = b.hi.z;
-  out.label(dualTop, "dual P*", pal.text, {0.0f, -16.0f});
+  glm::dvec3 primalTop = planes.centre();
+  primalTop.z = planes.box().hi.z;
+  out.label(planes.dualCorner(), "dual P*", pal.text, {36.0f, -12.0f});
   const auto& p = planes.plane();
-  if (!p) return out.label(primalTop, "primal P", pal.text, {0.0f, -16.0f});
+  if (!p) return out.label(primalTop, "primal P", pal.text, {0.0f, -40.0f});
   const Crossing c = p->chosen(planes.method()).crossing;
   out.label(primalTop, "primal P: the plane " + std::string(toString(c)), crossingColour(pal, c),
-            {0.0f, -16.0f});
+            {0.0f, -40.0f});
 }
 
 }  // namespace

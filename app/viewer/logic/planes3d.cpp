@@ -12,10 +12,13 @@ namespace {
 
 // the offset slider's reach and the plane's patch: the box's radius grown by this factor
 constexpr double kGrow = 1.15;
-// the dual view's middle lies this many primal radii beside the primal's
-constexpr double kDualGap = 2.25;
-// the dual's drawing cube, half-side, in primal radii
-constexpr double kDualHalf = 0.72;
+// a plane's patch reaches at least this many offset reaches around its foot
+constexpr double kFarPatch = 0.35;
+// the dual's unit sphere drawn this many of the box's largest half-sides wide
+constexpr double kDualSize = 0.75;
+// the gap between the box's middle and the dual's cube, in the box's largest half-sides
+// (beyond the plane's patch, which reaches 1.3)
+constexpr double kDualGap = 1.9;
 
 // unit vectors u, v with u x v = n (n unit)
 void planeAxes(glm::dvec3 n, glm::dvec3& u, glm::dvec3& v) {
@@ -132,19 +135,33 @@ void Planes3D::placeDual(glm::dvec3 side) {
 }
 
 void Planes3D::placeAgain() {
-  const double r = std::max(box_.radius(), 1e-300);
+  // the dual's unit sphere as large as the box's largest half-side, its cube beside the box
+  const glm::dvec3 size = box_.hi - box_.lo;
+  const double e = std::max(0.5 * std::max({size.x, size.y, size.z}), 1e-300);
   const CubemapLocator* cube = dual_ ? dual_->dualLocator() : nullptr;
-  const double h = cube ? cube->cubeHalfSize() : 1.0;
-  place_.middle = box_.middle() + kDualGap * r * side_;
-  place_.scale = kDualHalf * r / (h > 0.0 ? h : 1.0);
+  const double h = cube && cube->cubeHalfSize() > 0.0 ? cube->cubeHalfSize() : 1.0;
+  place_.scale = kDualSize * e;
+  place_.middle = box_.middle() + (kDualGap * e + place_.scale * h) * side_;
+  dualHalf_ = place_.scale * h;
 }
 
 Bounds3 Planes3D::both() const {
-  Bounds3 b = box_;
-  const double h = kDualHalf * std::max(box_.radius(), 1e-300);
-  b.lo = glm::min(b.lo, place_.middle - h);
-  b.hi = glm::max(b.hi, place_.middle + h);
+  Bounds3 b = grownBox();
+  // the plane's patch and its three points too, so that a plane given shows whole
+  if (plane_) {
+    for (const glm::dvec3& k : plane_->patch) b.lo = glm::min(b.lo, k), b.hi = glm::max(b.hi, k);
+    for (const Vec3 q : plane_->q) b.lo = glm::min(b.lo, toGlm(q)), b.hi = glm::max(b.hi, toGlm(q));
+  }
+  b.lo = glm::min(b.lo, place_.middle - dualHalf_);
+  b.hi = glm::max(b.hi, place_.middle + dualHalf_);
   return b;
+}
+
+Bounds3 Planes3D::grownBox() const {
+  Bounds3 grown = box_;
+  grown.lo -= (kGrow - 1.0) * (box_.hi - box_.lo);
+  grown.hi += (kGrow - 1.0) * (box_.hi - box_.lo);
+  return grown;
 }
 
 bool Planes3D::setPlane(Vec3 q1, Vec3 q2, Vec3 q3) {
@@ -201,10 +218,11 @@ void Planes3D::answer() {
   planeAxes(n, u, v);
   const glm::dvec3 foot = box_.middle() - glm::dot(box_.middle() - toGlm(q[0]), n) * n;
   const double half = reach_;
-  Bounds3 grown = box_;
-  grown.lo -= (kGrow - 1.0) * (box_.hi - box_.lo);
-  grown.hi += (kGrow - 1.0) * (box_.hi - box_.lo);
-  p.patch = patchIn(grown, foot, u, v, half);
+  // a plane far from the box still shows a patch: the clip box holds a cube around its foot
+  Bounds3 clip = grownBox();
+  clip.lo = glm::min(clip.lo, foot - kFarPatch * half);
+  clip.hi = glm::max(clip.hi, foot + kFarPatch * half);
+  p.patch = patchIn(clip, foot, u, v, half);
   const double step = 2.0 * half / kSectionSamples;
   p.section = sampleSection(scene_->locator(), foot - half * u - half * v, step * u, step * v,
                             kSectionSamples);

@@ -85,6 +85,12 @@ class Planes3D {
   const ConvexPolyhedron* polyhedron() const { return scene_ ? &scene_->polyhedron() : nullptr; }
   // the polyhedron and the dual view together, for fitting the camera
   Bounds3 both() const;
+  // the dual cube's top corner nearest the polyhedron (where its caption goes)
+  glm::dvec3 dualCorner() const {
+    return place_.middle + dualHalf_ * (glm::dvec3(0.0, 0.0, 1.0) - side_);
+  }
+  // the polyhedron's box
+  const Bounds3& box() const { return box_; }
   // the polyhedron's centre the sliders measure from: the mean of its vertices
   glm::dvec3 centre() const { return centre_; }
   // grows with every change that the drawing shows
@@ -93,6 +99,8 @@ class Planes3D {
  private:
   void rebuild(const Scene3D& scene);
   void placeAgain();
+  // the box the plane's patch is clipped to: the polyhedron's, grown by 15% of its size
+  Bounds3 grownBox() const;
   void answer();
   bool enabled_ = false;
   PlaneMethod method_ = PlaneMethod::Dual;
@@ -106,6 +114,7 @@ class Planes3D {
   glm::dvec3 centre_{0.0}, side_{1.0, 0.0, 0.0};
   double reach_ = 1.0;
   DualPlace3D place_;
+  double dualHalf_ = 1.0;  // half the side of the dual's cube, drawn
   std::optional<PlaneProbe3D> plane_;
   std::uint64_t version_ = 0;
 };

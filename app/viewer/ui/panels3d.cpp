@@ -153,7 +153,7 @@ void methodPanel3D(Model& model, UiState& ui) {
 
 void slicePanel3D(Model& model) {
   if (model.planes3d.enabled()) {
-    ImGui::TextDisabled("hidden: the Planes mode shows its own plane (Method panel)");
+    ImGui::TextDisabled("hidden in the Planes mode");
     return;
   }
   Scene3D& scene = model.scene3d();
