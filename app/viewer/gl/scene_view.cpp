@@ -161,7 +161,9 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     ++uploads_;
   }
   syncOverlayAndPoints(scene, renderer, reshape, restyle, planesStale, [&](DrawList& out) {
-    buildOverlay3D(scene, pal, opt, out);
+    // the Planes mode draws its own marks instead of the method's cells and placed point
+    if (!planes.enabled()) return buildOverlay3D(scene, pal, opt, out);
+    out.clear();
     append(out, planesOverlay_);
   });
 }

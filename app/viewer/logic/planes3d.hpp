@@ -25,8 +25,8 @@ namespace convexloc::viewer {
 // point `offset` world units along it from the polyhedron's centre.
 struct PlaneSliders {
   double offset = 0.0;
-  double azimuth = 0.6;
-  double elevation = 0.5;
+  double azimuth = -1.15;  // a plane tilted to the default camera: seen aslant, not face-on
+  double elevation = 1.2;
 };
 
 // a plane and what core reports about it
