@@ -10,6 +10,9 @@
 namespace convexloc::viewer {
 namespace {
 
+// above this many dual faces their edges would whiten the small dual view: faces only
+constexpr std::size_t kMaxDualEdgeFaces = 4000;
+
 // the colour of an exact sign
 Rgba signOf(const Palette& p, int sign) {
   return sign > 0 ? p.positive : (sign < 0 ? p.negative : p.zero);
@@ -35,10 +38,11 @@ void dualSolid(const CubemapLocator& cube, const DualPlace3D& at, const Palette&
   const auto v = cube.vertices();
   const auto faces = cube.faces();
   for (std::uint32_t f = 0; f < faces.size(); ++f) dualFace(cube, at, f, pal.meshFill, out);
-  for (const auto& t : faces)
-    for (int k = 0; k < 3; ++k)
-      if (t[k] < t[(k + 1) % 3])  // each edge once: it runs up in one of its two faces
-        out.segment(at.toWorld(v[t[k]]), at.toWorld(v[t[(k + 1) % 3]]), pal.meshEdge, 1.0f);
+  if (faces.size() <= kMaxDualEdgeFaces)
+    for (const auto& t : faces)
+      for (int k = 0; k < 3; ++k)
+        if (t[k] < t[(k + 1) % 3])  // each edge once: it runs up in one of its two faces
+          out.segment(at.toWorld(v[t[k]]), at.toWorld(v[t[(k + 1) % 3]]), pal.meshEdge, 1.0f);
   const auto c = cube.centre();
   if (!c) return;
   cubeEdges(at.toWorld(*c), at.scale * cube.cubeHalfSize(), withAlpha(pal.cube, 0.5f), 1.0f, out);

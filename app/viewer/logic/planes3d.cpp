@@ -176,7 +176,6 @@ bool Planes3D::setPlane(Vec3 q1, Vec3 q2, Vec3 q3) {
 }
 
 void Planes3D::setSliders(PlaneSliders s) {
-  sliders_ = s;
   const double ce = std::cos(s.elevation);
   const glm::dvec3 n{ce * std::cos(s.azimuth), ce * std::sin(s.azimuth), std::sin(s.elevation)};
   glm::dvec3 u, v;
@@ -185,6 +184,7 @@ void Planes3D::setSliders(PlaneSliders s) {
   const double r = std::max(box_.radius(), 1e-300);
   const std::array<Vec3, 3> q = {toVec3(o), toVec3(o + r * u), toVec3(o + r * v)};
   if (collinear(q[0], q[1], q[2])) return;  // rounding flattened them: keep the last plane
+  sliders_ = s;
   asked_ = q;
   answer();
 }
