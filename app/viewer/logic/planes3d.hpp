@@ -49,6 +49,7 @@ struct PlaneProbe3D {
 struct DualPlace3D {
   glm::dvec3 middle{0.0};
   double scale = 1.0;
+  // where dual point d is drawn
   glm::dvec3 toWorld(Vec3 d) const { return middle + scale * glm::dvec3(d.x, d.y, d.z); }
 };
 
@@ -56,6 +57,7 @@ struct DualPlace3D {
 // PlaneIntersector of each method and answers the plane placed.
 class Planes3D {
  public:
+  // whether the mode is on; turning it on builds the intersectors at the next sync
   bool enabled() const { return enabled_; }
   void setEnabled(bool on);
   // follows the scene's shape and locator (rebuilds what changed); call every frame
@@ -74,12 +76,14 @@ class Planes3D {
   // puts the dual view beside the polyhedron along `side` (a unit vector: the camera's
   // right, so that it shows beside whatever way the camera looks)
   void placeDual(glm::dvec3 side);
+  // the plane asked (or the sliders' plane) and core's answers; none until synced while on
   const std::optional<PlaneProbe3D>& plane() const { return plane_; }
 
   // what core built: the dual method's intersector (null until synced while on) and its
   // cube map's cells
   const PlaneIntersector* dualIntersector() const { return dual_.get(); }
   const std::vector<Cell3D>& dualCells() const { return dualCells_; }
+  // where the dual view is drawn
   const DualPlace3D& place() const { return place_; }
   // the polyhedron last synced with (null before)
   const ConvexPolyhedron* polyhedron() const { return scene_ ? &scene_->polyhedron() : nullptr; }
@@ -97,10 +101,13 @@ class Planes3D {
   std::uint64_t version() const { return version_; }
 
  private:
+  // the intersectors, the dual's cells and the dual view's place for the scene's shape
   void rebuild(const Scene3D& scene);
+  // the dual view beside the box along side_
   void placeAgain();
   // the box the plane's patch is clipped to: the polyhedron's, grown by 15% of its size
   Bounds3 grownBox() const;
+  // asks core about the plane asked: both traces, the cells, the patch and the section
   void answer();
   bool enabled_ = false;
   PlaneMethod method_ = PlaneMethod::Dual;
