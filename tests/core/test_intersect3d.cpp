@@ -182,6 +182,29 @@ TEST(Intersect3DDual, GeodesicClimbsLittle) {
   EXPECT_GT(s.cells, 0u);
 }
 
+// the trace's direction is the unit -N, its cell's labels propose startMax, and the labels
+// cover every face of the dual the cube map locates in
+TEST(Intersect3DDual, TraceReportsTheDirectionAndItsCell) {
+  const ConvexPolyhedron p(convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 500, 1));
+  const PlaneIntersector dual(p, PlaneMethod::Dual);
+  const convexloc::CubemapLocator* cube = dual.dualLocator();
+  ASSERT_NE(cube, nullptr);
+  ASSERT_EQ(dual.dualLabels().size(), cube->faces().size());
+  EXPECT_EQ(cube->vertices().size(), dual.stats().dualVertices);
+  // N = (q2 - q1) x (q3 - q1) = (0, 0, 1): G grows along -z
+  const convexloc::PlaneTrace t = dual.trace({0, 0, 0.25}, {1, 0, 0.25}, {0, 1, 0.25});
+  EXPECT_EQ(t.direction.x, 0.0);
+  EXPECT_EQ(t.direction.y, 0.0);
+  EXPECT_EQ(t.direction.z, -1.0);
+  const auto listed = cube->cellFaces(t.direction);
+  ASSERT_FALSE(listed.empty());
+  EXPECT_EQ(dual.dualLabels()[listed[listed.size() / 2]], t.startMax);
+  const PlaneIntersector baseline(p, PlaneMethod::Vertices);
+  EXPECT_TRUE(baseline.dualLabels().empty());
+  const convexloc::PlaneTrace b = baseline.trace({0, 0, 0.25}, {1, 0, 0.25}, {0, 1, 0.25});
+  EXPECT_EQ(b.direction.z, 0.0);
+}
+
 TEST(Intersect3DNames, RoundTripAndCollinear) {
   for (PlaneMethod m : convexloc::kAllPlaneMethods)
     EXPECT_EQ(convexloc::parsePlaneMethod(convexloc::toString(m)), m);

@@ -7,6 +7,7 @@
 
 #include "logic/build_anim.hpp"
 #include "logic/dual_view2d.hpp"
+#include "logic/dual_view3d.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/structure3d.hpp"
 
@@ -28,6 +29,14 @@ bool same(const View3DOptions& a, const View3DOptions& b) {
 // the camera has wandered so far from the origin, in pixels, that floats would blur
 constexpr double kRebasePixels = 1e5;
 
+// `from`'s fills, segments, markers and labels after `to`'s
+void append(DrawList& to, const DrawList& from) {
+  to.fills.insert(to.fills.end(), from.fills.begin(), from.fills.end());
+  to.segments.insert(to.segments.end(), from.segments.begin(), from.segments.end());
+  to.markers.insert(to.markers.end(), from.markers.begin(), from.markers.end());
+  to.labels.insert(to.labels.end(), from.labels.begin(), from.labels.end());
+}
+
 void classColours(const Palette& pal, FrameParams& f) {
   f.classColours[0] = pal.inside;
   f.classColours[1] = pal.boundary;
@@ -41,7 +50,8 @@ void SceneView::sync(Model& model, Renderer& renderer) {
   const bool dimChanged = first_ || model.dim != dim_;
   const bool restyle =
       dimChanged || theme_ != model.settings.theme || !same(options2_, model.settings.view2d) ||
-      !same(options3_, model.settings.view3d) || linesShown_ != model.lines2d.enabled();
+      !same(options3_, model.settings.view3d) || linesShown_ != model.lines2d.enabled() ||
+      planesShown_ != model.planes3d.enabled();
   if (dimChanged) {
     seen_ = {~0ull, ~0ull, ~0ull, ~0ull, ~0ull};
     mesh_.clear();
@@ -60,6 +70,7 @@ void SceneView::sync(Model& model, Renderer& renderer) {
   options2_ = model.settings.view2d;
   options3_ = model.settings.view3d;
   linesShown_ = model.lines2d.enabled();
+  planesShown_ = model.planes3d.enabled();
   first_ = false;
 }
 
@@ -162,7 +173,16 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
   Scene3D& scene = model.scene3d();
   const Versions& v = scene.versions();
   const Palette& pal = paletteFor(model.settings.theme);
-  const View3DOptions& opt = model.settings.view3d;
+  View3DOptions opt = model.settings.view3d;
+  Planes3D& planes = model.planes3d;
+  planes.sync(scene);
+  if (planes.enabled()) {
+    // the Planes mode shows the dual's cube map instead of the method's, its plane instead
+    // of the slicing plane
+    opt.showCube = opt.showTints = opt.showSlice = false;
+  }
+  const bool planesStale = planes.version() != planesSeen_;
+  planesSeen_ = planes.version();
 
   const bool reshape = v.shape != seen_.shape || scene_ != &scene;
   if (reshape) origin_ = scene.bounds().middle();
@@ -181,9 +201,13 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     ++uploads_;
     renderer.upload(Layer::Structure, structure_, origin_);
   }
-  if (reshape || restyle || v.section != seen_.section || v.structure != seen_.structure) {
+  if (reshape || restyle || v.section != seen_.section || v.structure != seen_.structure ||
+      planesStale) {
     section_.clear();
-    if (opt.showSlice) {
+    planesOverlay_.clear();
+    if (planes.enabled()) {
+      buildPlanes3D(planes, pal, opt.showLabels, section_, planesOverlay_);
+    } else if (opt.showSlice) {
       // the section alone, so that moving the plane rebuilds only it
       DrawList all;
       View3DOptions only;
@@ -195,8 +219,12 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     renderer.upload(Layer::Section, section_, origin_);
     ++uploads_;
   }
-  syncOverlayAndPoints(scene, renderer, reshape, restyle, false,
-                       [&](DrawList& out) { buildOverlay3D(scene, pal, opt, out); });
+  syncOverlayAndPoints(scene, renderer, reshape, restyle, planesStale, [&](DrawList& out) {
+    // the Planes mode draws its own marks instead of the method's cells and placed point
+    if (!planes.enabled()) return buildOverlay3D(scene, pal, opt, out);
+    out.clear();
+    append(out, planesOverlay_);
+  });
 }
 
 template <class Scene, class BuildOverlay>
@@ -225,6 +253,8 @@ FrameParams SceneView::frameParams(Model& model, glm::vec2 fbSize, float pixelRa
   // the Lines mode hides the spray: the line and the dual are the subject
   f.visibleMask =
       model.dim == Dim::Two && model.lines2d.enabled() ? 0u : model.settings.visibleMask;
+  // so does the Planes mode: the plane and the dual are the subject
+  if (model.dim == Dim::Three && model.planes3d.enabled()) f.visibleMask = 0u;
   classColours(pal, f);
   if (model.dim == Dim::Two) {
     const Camera2D& cam = model.camera2d;

@@ -87,6 +87,9 @@ class SceneView {
   unsigned farFaces_ = 0;
   bool linesShown_ = false;          // the 2D Lines mode was on
   std::uint64_t linesSeen_ = ~0ull;  // the Lines mode's version drawn
+  bool planesShown_ = false;          // the 3D Planes mode was on
+  std::uint64_t planesSeen_ = ~0ull;  // the Planes mode's version drawn
+  DrawList planesOverlay_;            // its marks over everything
   std::uint64_t uploads_ = 0;        // grows with every upload the base depends on
   BaseKey lastKey_;
   bool cached_ = false;          // the cache holds lastKey_'s picture

@@ -107,8 +107,20 @@ Legend legend2D(const Model& model) {
   return g;
 }
 
+// the Planes mode's legend: the marks in both views
+Legend planesLegend(const Palette& pal) {
+  Legend g;
+  g.title = "Planes: the dual problem";
+  g.rows = {box(pal.slicePlane, pal.box, "the plane through q1, q2, q3"),
+            box(withAlpha(pal.inside, 0.6f), pal.inside, "its section, per core"),
+            box(pal.positive, pal.negative, "extreme vertices (sign of G)"),
+            box(withAlpha(pal.hoverEdge, 0.35f), pal.hoverEdge, "cells of y, -y; their proposals")};
+  return g;
+}
+
 Legend legend3D(const Model& model) {
   const Palette& pal = paletteFor(model.settings.theme);
+  if (model.planes3d.enabled()) return planesLegend(pal);
   const Scene3D& scene = model.scene3d();
   const View3DOptions& opt = model.settings.view3d;
   Legend g = heading(model, scene, scene.stats().faces, "faces");

@@ -193,6 +193,18 @@ std::optional<Vec2> Lines2D::dualPoint() const {
 
 // === The inspector's text
 
+void describeExtremes(const ExtremeVertices& x, const char* side, std::uint32_t comparisons,
+                      std::vector<TraceLine>& out) {
+  out.push_back({TraceLine::Heading, "extreme vertices"});
+  out.push_back({signKind(x.largestSign), "largest " + std::string(side) + " at vertex " +
+                                              std::to_string(x.largest) + ": sign" +
+                                              signText(x.largestSign)});
+  out.push_back({signKind(x.smallestSign), "smallest " + std::string(side) + " at vertex " +
+                                               std::to_string(x.smallest) + ": sign" +
+                                               signText(x.smallestSign)});
+  out.push_back({TraceLine::Step, std::to_string(comparisons) + " exact comparisons"});
+}
+
 std::vector<TraceLine> describeLine(const LineProbe2D& line, std::span<const Vec2> dualVertices,
                                     const PolarLocator* dual) {
   std::vector<TraceLine> out;
@@ -203,14 +215,7 @@ std::vector<TraceLine> describeLine(const LineProbe2D& line, std::span<const Vec
     out.push_back({TraceLine::Step, "dual P*: " + std::to_string(dualVertices.size()) +
                                         " vertices (unit edge normals and their antipodes)"});
   describeCell(line, dual, out);
-  out.push_back({TraceLine::Heading, "extreme vertices"});
-  out.push_back({signKind(t.extremes.largestSign),
-                 "largest f at vertex " + std::to_string(t.extremes.largest) + ": sign" +
-                     signText(t.extremes.largestSign)});
-  out.push_back({signKind(t.extremes.smallestSign),
-                 "smallest f at vertex " + std::to_string(t.extremes.smallest) + ": sign" +
-                     signText(t.extremes.smallestSign)});
-  out.push_back({TraceLine::Step, std::to_string(t.comparisons) + " exact comparisons"});
+  describeExtremes(t.extremes, "f", t.comparisons, out);
   out.push_back({TraceLine::Result, "the line " + std::string(toString(line.hit.crossing))});
   if (line.hit.crossing != Crossing::Misses && line.entry && line.exit) {
     out.push_back({TraceLine::Step, "entry at " + hitText(line.hit.entry, line.vertices) + ": " +

@@ -92,6 +92,12 @@ class Lines2D {
   std::uint64_t version_ = 0;
 };
 
+// The extreme vertices' lines of a trace (shared with the Planes mode): where the side
+// function `side` ("f", "G") is largest and smallest, its exact signs there, the count of
+// exact comparisons.
+void describeExtremes(const ExtremeVertices& extremes, const char* side, std::uint32_t comparisons,
+                      std::vector<TraceLine>& out);
+
 // The line's answer told for a student: the classification, the dual cell and what it
 // proposed, the climb, the extremes with their signs, entry and exit, the clipped segment.
 std::vector<TraceLine> describeLine(const LineProbe2D& line, std::span<const Vec2> dualVertices,

@@ -167,7 +167,7 @@ void Model::applyShape(const Options& o, bool method3d) {
     if (!applyPreset(*o.preset)) note(error_);
   } else if (o.generate) {
     applyGenerator(o, method3d);
-  } else if (o.solid || method3d) {
+  } else if (o.solid || method3d || o.plane) {
     scene3d();
     dim = Dim::Three;
   }
@@ -215,6 +215,7 @@ void Model::apply2d(const Options& o, bool method3d) {
     lines2d.sync(scene2d);
   }
   if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
+  if (o.plane) note("--plane is for a 3D scene; the scene is a polygon");
 }
 
 void Model::apply3d(const Options& o, bool method3d) {
@@ -231,6 +232,12 @@ void Model::apply3d(const Options& o, bool method3d) {
            std::to_string(s3.cells().size()) + " cells");
   }
   if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
+  // the Planes mode with the plane asked
+  if (o.plane) {
+    setPlanesMode(true);
+    const auto& q = *o.plane;
+    planes3d.setPlane(q[0], q[1], q[2]);
+  }
 }
 
 // === Step by step
@@ -345,6 +352,12 @@ void Model::setLinesMode(bool on) {
   requestFit();
 }
 
+void Model::setPlanesMode(bool on) {
+  planes3d.setEnabled(on);
+  if (on) planes3d.sync(scene3d());
+  requestFit();
+}
+
 void Model::fit(ScreenRect area) {
   if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
     // the split view: the camera is fitted to the left half; the right one follows it
@@ -370,6 +383,12 @@ void Model::fit(ScreenRect area) {
     const glm::dvec3 c = toGlm(*s.centre());
     b.lo = glm::min(b.lo, c - h);
     b.hi = glm::max(b.hi, c + h);
+  }
+  // the Planes mode: the dual view beside, along the camera's right
+  if (planes3d.enabled()) {
+    planes3d.sync(s);
+    planes3d.placeDual(camera3d.right());
+    b = planes3d.both();
   }
   camera3d.fit(b, area);
 }

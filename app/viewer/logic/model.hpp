@@ -15,6 +15,7 @@
 #include "logic/colour.hpp"
 #include "logic/lines2d.hpp"
 #include "logic/options.hpp"
+#include "logic/planes3d.hpp"
 #include "logic/picking.hpp"
 #include "logic/scene2d.hpp"
 #include "logic/scene3d.hpp"
@@ -70,6 +71,10 @@ class Model {
   Lines2D lines2d;
   // turns the Lines mode on or off (the camera is fitted again: the dual view sits beside)
   void setLinesMode(bool on);
+  // the 3D scene's Planes mode (the dual problem in 3D)
+  Planes3D planes3d;
+  // turns the Planes mode on or off (the camera is fitted again: the dual view sits beside)
+  void setPlanesMode(bool on);
   Camera2D camera2d;
   Camera3D camera3d;
   Settings settings;

@@ -7,6 +7,8 @@
 
 #include "logic/figures.hpp"
 
+#include "convexloc/intersect3d.hpp"
+
 namespace convexloc::viewer {
 namespace {
 
@@ -221,6 +223,17 @@ bool solidOption(std::string_view a, ArgReader& in, Options& o) {
     if (!given || !parseInt<std::size_t>(v, 0, std::size_t{1} << 40, k))
       return in.fail("--cell needs a cell index, two (K,L) or auto");
     o.cell = k;
+  } else if (a == "--plane") {
+    // the Planes mode: three points, not on one line (core's exact test)
+    double c[9] = {};
+    for (double& x : c)
+      if (!in.value(v) || !parseDouble(v, x))
+        return in.fail("--plane needs X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3");
+    const std::array<Vec3, 3> q = {Vec3{c[0], c[1], c[2]}, Vec3{c[3], c[4], c[5]},
+                                   Vec3{c[6], c[7], c[8]}};
+    if (collinear(q[0], q[1], q[2]))
+      return in.fail("--plane needs three points not on one line (these define no plane)");
+    o.plane = q;
   } else {
     return false;
   }
@@ -425,6 +438,9 @@ Scene:
                         beside it; auto: a cell listing one face and one listing the most
   --y-gap               2D: mark the smallest y-gap between vertices and the uniform slab
                         count the paper's rule (ymax - ymin) / gap needs
+  --plane X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3
+                        3D: the Planes mode (the dual problem) with the plane through the
+                        three points (not on one line); implies --3d
 Step by step:
   --step K              show step K (1 = the first) of the placed point's query, highlighted
                         in the drawing and the Steps window (beyond the last: the last;
@@ -465,7 +481,9 @@ Without hands:
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
-Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode, Space new
+In the 3D Planes mode (L) the panel's sliders move the plane.
+Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode (3D: planes
+mode), Space new
 spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode, G
 legend; Left/Right previous/next step of the placed point's query, R the radius filter
 on/off (paper-faithful mode); in a lecture PageDown / PageUp next and previous slide,

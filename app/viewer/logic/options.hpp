@@ -2,6 +2,7 @@
 // up and rendered to a PNG without hands (figures for slides, smoke tests).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -36,6 +37,8 @@ struct Options {
   std::optional<Vec3> view;             // 2D: look at (x, y) showing a width w of the world
   // 2D: the Lines mode (the dual problem), with the line through these two points
   std::optional<std::pair<Vec2, Vec2>> line;
+  // 3D: the Planes mode (the dual problem in 3D), with the plane through these three points
+  std::optional<std::array<Vec3, 3>> plane;
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
   bool hideUi = false;

@@ -14,7 +14,6 @@ namespace {
 
 constexpr std::uint32_t kDefaultGrid = 8;
 constexpr std::size_t kDefaultSpray = 1500;
-constexpr std::uint32_t kSectionSamples = 160;
 
 }  // namespace
 
@@ -141,37 +140,46 @@ std::optional<glm::dvec3> Scene3D::hitSlice(const Ray3& ray) const {
 void Scene3D::resection() {
   const auto r = sliceRectangle();
   const int a = slice_.axis, u = (a + 1) % 3, v = (a + 2) % 3;
-  section_.n = kSectionSamples;
-  section_.corner = r[0];
-  section_.du = glm::dvec3(0.0);
-  section_.dv = glm::dvec3(0.0);
-  section_.du[u] = (r[2][u] - r[0][u]) / kSectionSamples;
-  section_.dv[v] = (r[2][v] - r[0][v]) / kSectionSamples;
-  // each sample at the middle of its square, classified by the locator in one batch
-  std::vector<Vec3> samples;
-  samples.reserve(static_cast<std::size_t>(kSectionSamples) * kSectionSamples);
-  for (std::uint32_t j = 0; j < kSectionSamples; ++j)
-    for (std::uint32_t i = 0; i < kSectionSamples; ++i) {
-      glm::dvec3 p = section_.corner + (i + 0.5) * section_.du + (j + 0.5) * section_.dv;
-      p[a] = slice_.offset;
-      samples.push_back(toVec3(p));
-    }
-  section_.classes.resize(samples.size());
-  locator_->locate(samples, section_.classes);
+  // du and dv are zero along the axis: every sample lies exactly on the plane
+  glm::dvec3 du(0.0), dv(0.0);
+  du[u] = (r[2][u] - r[0][u]) / kSectionSamples;
+  dv[v] = (r[2][v] - r[0][v]) / kSectionSamples;
+  section_ = sampleSection(*locator_, r[0], du, dv, kSectionSamples);
   ++versions_.section;
+}
+
+Section sampleSection(const Locator3D& locator, glm::dvec3 corner, glm::dvec3 du, glm::dvec3 dv,
+                      std::uint32_t n) {
+  Section s;
+  s.n = n;
+  s.corner = corner;
+  s.du = du;
+  s.dv = dv;
+  std::vector<Vec3> samples;
+  samples.reserve(static_cast<std::size_t>(n) * n);
+  for (std::uint32_t j = 0; j < n; ++j)
+    for (std::uint32_t i = 0; i < n; ++i)
+      samples.push_back(toVec3(corner + (i + 0.5) * du + (j + 0.5) * dv));
+  s.classes.resize(samples.size());
+  locator.locate(samples, s.classes);
+  return s;
+}
+
+std::ptrdiff_t cellOf(const std::vector<Cell3D>& cells, const Trace3D& t) {
+  if (t.cubeFace < 0) return -1;
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const Cell3D& c = cells[k];
+    if (c.cubeFace == t.cubeFace && c.level == t.level && c.i == t.cellI && c.j == t.cellJ)
+      return static_cast<std::ptrdiff_t>(k);
+  }
+  return -1;
 }
 
 // === Probe
 
 std::ptrdiff_t Scene3D::probeCell() const {
-  if (!probe_ || probe_->trace.cubeFace < 0) return -1;
-  const Trace3D& t = probe_->trace;
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    const Cell3D& c = cells_[k];
-    if (c.cubeFace == t.cubeFace && c.level == t.level && c.i == t.cellI && c.j == t.cellJ)
-      return static_cast<std::ptrdiff_t>(k);
-  }
-  return -1;
+  if (!probe_) return -1;
+  return cellOf(cells_, probe_->trace);
 }
 
 // === Cells under the cursor

@@ -32,6 +32,16 @@ struct Section {
   std::vector<Location> classes;  // row-major, v outer
 };
 
+// === Shared with the Planes mode
+// samples per side of a section's grid
+inline constexpr std::uint32_t kSectionSamples = 160;
+// The section over the parallelogram corner + [0, n] du + [0, n] dv: n x n samples, each at
+// the middle of its square, classified by the locator in one batch.
+Section sampleSection(const Locator3D& locator, glm::dvec3 corner, glm::dvec3 du, glm::dvec3 dv,
+                      std::uint32_t n);
+// the position in `cells` of the cube-map cell a trace used, or -1
+std::ptrdiff_t cellOf(const std::vector<Cell3D>& cells, const Trace3D& trace);
+
 // the point placed on the slicing plane, and what the locator did with it
 using Probe3D = PlacedPoint<Vec3, Trace3D>;
 // one 3D method timed by `compare`

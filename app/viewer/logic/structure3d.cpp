@@ -203,16 +203,7 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
       }
     const glm::dvec3 ctr = toGlm(*scene.centre());
     const double h = scene.cubeHalfSize();
-    for (int e = 0; e < 12; ++e) {
-      // the 12 edges: along axis e / 4, at the other two axes' signs from e % 4
-      const int a = e / 4, u = (a + 1) % 3, v = (a + 2) % 3;
-      glm::dvec3 from = ctr, to = ctr;
-      from[a] -= h;
-      to[a] += h;
-      from[u] = to[u] = ctr[u] + (e & 1 ? h : -h);
-      from[v] = to[v] = ctr[v] + (e & 2 ? h : -h);
-      out.segment(from, to, pal.cube, 1.25f);
-    }
+    cubeEdges(ctr, h, pal.cube, 1.25f, out);
     // the cube faces' names
     if (opt.showLabels) {
       for (int f = 0; f < 6; ++f) {
@@ -235,18 +226,33 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
     for (int k = 0; k < 4; ++k) out.segment(r[k], r[(k + 1) % 4], pal.box, 1.25f, 6.0f);
     out.triangle(r[0], r[1], r[2], pal.slicePlane);
     out.triangle(r[0], r[2], r[3], pal.slicePlane);
-    const Section& s = scene.section();
-    for (std::uint32_t j = 0; j < s.n; ++j)
-      for (std::uint32_t i = 0; i < s.n; ++i) {
-        const Location l = s.classes[static_cast<std::size_t>(j) * s.n + i];
-        if (l == Location::Outside) continue;
-        const Rgba c = withAlpha(colourOf(pal, l), l == Location::Inside ? 0.6f : 0.95f);
-        const glm::dvec3 a =
-            s.corner + static_cast<double>(i) * s.du + static_cast<double>(j) * s.dv;
-        out.triangle(a, a + s.du, a + s.du + s.dv, c);
-        out.triangle(a, a + s.du + s.dv, a + s.dv, c);
-      }
+    buildSection(scene.section(), pal, out);
   }
+}
+
+void cubeEdges(glm::dvec3 ctr, double h, Rgba colour, float width, DrawList& out) {
+  for (int e = 0; e < 12; ++e) {
+    // the 12 edges: along axis e / 4, at the other two axes' signs from e % 4
+    const int a = e / 4, u = (a + 1) % 3, v = (a + 2) % 3;
+    glm::dvec3 from = ctr, to = ctr;
+    from[a] -= h;
+    to[a] += h;
+    from[u] = to[u] = ctr[u] + (e & 1 ? h : -h);
+    from[v] = to[v] = ctr[v] + (e & 2 ? h : -h);
+    out.segment(from, to, colour, width);
+  }
+}
+
+void buildSection(const Section& s, const Palette& pal, DrawList& out) {
+  for (std::uint32_t j = 0; j < s.n; ++j)
+    for (std::uint32_t i = 0; i < s.n; ++i) {
+      const Location l = s.classes[static_cast<std::size_t>(j) * s.n + i];
+      if (l == Location::Outside) continue;
+      const Rgba c = withAlpha(colourOf(pal, l), l == Location::Inside ? 0.6f : 0.95f);
+      const glm::dvec3 a = s.corner + static_cast<double>(i) * s.du + static_cast<double>(j) * s.dv;
+      out.triangle(a, a + s.du, a + s.du + s.dv, c);
+      out.triangle(a, a + s.du + s.dv, a + s.dv, c);
+    }
 }
 
 void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOptions& opt,

@@ -387,6 +387,8 @@ void perform(const Action& action, Model& model, UiState& ui) {
     case ActionKind::Fit: model.requestFit(); break;
     case ActionKind::ToggleLines:
       if (model.dim == Dim::Two) model.setLinesMode(!model.lines2d.enabled());
+      // 3D: the Planes mode
+      if (model.dim == Dim::Three) model.setPlanesMode(!model.planes3d.enabled());
       break;
     case ActionKind::ToggleUi:
       model.settings.showUi = !model.settings.showUi;

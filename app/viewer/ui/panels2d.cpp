@@ -75,12 +75,11 @@ void shapePanel2D(Model& model, UiState& ui) {
 
 // the Lines mode's switch: the dual problem, line against polygon
 void linesSwitch(Model& model) {
-  bool on = model.lines2d.enabled();
-  if (ImGui::Checkbox("Lines: the dual problem (L)", &on)) model.setLinesMode(on);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Drag in the scene to place a line; core's dual method answers it, and the\n"
-        "dual polygon P* with its polar slabs shows beside the polygon");
+  if (const auto on =
+          modeSwitch("Lines: the dual problem (L)", model.lines2d.enabled(),
+                     "Drag in the scene to place a line; core's dual method answers it, and the\n"
+                     "dual polygon P* with its polar slabs shows beside the polygon"))
+    model.setLinesMode(*on);
 }
 
 void methodPanel2D(Model& model, UiState& ui) {

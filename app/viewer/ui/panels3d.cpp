@@ -2,11 +2,13 @@
 #include "ui/panels3d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <utility>
 
 #include <imgui.h>
 
+#include "logic/dual_view3d.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
@@ -85,8 +87,67 @@ void shapePanel3D(Model& model, UiState& ui) {
                                                 kGenerator3D, true);
 }
 
+// === The Planes mode (the dual problem in 3D)
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// a slider in degrees over an angle kept in radians; true when moved
+bool angleSlider(const char* id, const char* format, double& radians, double lo, double hi) {
+  double degrees = radians / kDegree;
+  ImGui::SetNextItemWidth(-1.0f);
+  if (!ImGui::SliderScalar(id, ImGuiDataType_Double, &degrees, &lo, &hi, format)) return false;
+  radians = degrees * kDegree;
+  return true;
+}
+
+// the plane's sliders, the method and the dual's size
+void planesControls(Model& model) {
+  Planes3D& planes = model.planes3d;
+  PlaneSliders s = planes.sliders();
+  bool moved = false;
+  const double reach = planes.offsetReach(), lo = -reach, hi = reach;
+  ImGui::SetNextItemWidth(-1.0f);
+  moved |= ImGui::SliderScalar("##planeOffset", ImGuiDataType_Double, &s.offset, &lo, &hi,
+                               "offset %.4g");
+  moved |= angleSlider("##planeAzimuth", "azimuth %.1f deg", s.azimuth, -180.0, 180.0);
+  moved |= angleSlider("##planeElevation", "elevation %.1f deg", s.elevation, -90.0, 90.0);
+  if (ImGui::SmallButton("Through the centre")) {
+    s.offset = 0.0;
+    moved = true;
+  }
+  if (moved) planes.setSliders(s);
+  ImGui::TextDisabled("method:");
+  for (const PlaneMethod m : kAllPlaneMethods) {
+    ImGui::SameLine();
+    const std::string name = std::string(toString(m)) + " " + std::string(costOf(m));
+    if (ImGui::RadioButton(name.c_str(), planes.method() == m)) planes.setMethod(m);
+  }
+  if (const PlaneIntersector* pi = planes.dualIntersector()) {
+    const PlaneStats st = pi->stats();
+    const std::string text = "the dual P*: " + grouped(st.dualVertices) + " vertices, " +
+                             grouped(st.dualFaces) + " faces, " + grouped(st.cells) +
+                             " cube-map cells";
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+// the Planes mode's switch, and its controls when on; true when on
+bool planesPanel(Model& model) {
+  if (const auto on = modeSwitch(
+          "Planes: the dual problem (L)", model.planes3d.enabled(),
+          "Place a plane with the sliders; core's dual method (the cube map of the dual\n"
+          "polyhedron) and the O(V) baseline answer it, the dual view shows beside"))
+    model.setPlanesMode(*on);
+  if (!model.planes3d.enabled()) return false;
+  planesControls(model);
+  return true;
+}
+
 void methodPanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
+  if (planesPanel(model)) return;
   methodChoice(scene);
   paperModeCheckbox(model, scene.method() == Method3D::Cubemap);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
@@ -97,6 +158,10 @@ void methodPanel3D(Model& model, UiState& ui) {
 }
 
 void slicePanel3D(Model& model) {
+  if (model.planes3d.enabled()) {
+    ImGui::TextDisabled("hidden in the Planes mode");
+    return;
+  }
   Scene3D& scene = model.scene3d();
   SlicePlane s = scene.slice();
   bool changed = false;
@@ -131,6 +196,7 @@ void viewOptions3D(Model& model) {
 }
 
 bool inspectable3D(Model& model) {
+  if (model.planes3d.enabled()) return model.planes3d.plane().has_value();
   const Scene3D& s = model.scene3d();
   return s.hoveredCell() >= 0 || s.pinnedCell() >= 0 || s.secondPinnedCell() >= 0 ||
          s.probe().has_value();
@@ -138,13 +204,30 @@ bool inspectable3D(Model& model) {
 
 constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
                                     "click the plane: place a point; Shift-click: pin a cell",
-                                    "F fit, H hide panels, 1-3 method, Space spray", nullptr};
+                                    "F fit, H hide panels, 1-3 method, Space spray",
+                                    "L planes mode (sliders: Method)", nullptr};
 
 void legend3D(Model& model) {
   drawLegend(legendOf(model));
 }
 
+// the plane's answer by both methods and the steps core took
+void planeInspector(Model& model) {
+  const Planes3D& planes = model.planes3d;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const auto& plane = planes.plane();
+  if (!plane) return;
+  const Crossing c = plane->chosen(planes.method()).crossing;
+  const Rgba colour = crossingColour(pal, c);
+  ImGui::TextColored(im(colour), "Plane: %s", std::string(toString(c)).c_str());
+  const CubemapLocator* cube = planes.dualIntersector()->dualLocator();
+  traceLines(
+      describePlane(*plane, planes.method(), cube ? cube->vertices() : std::span<const Vec3>{}),
+      pal, colour);
+}
+
 void inspector3D(Model& model, bool hints) {
+  if (model.planes3d.enabled()) return planeInspector(model);
   Scene3D& scene = model.scene3d();
   const Palette& pal = paletteFor(model.settings.theme);
   const auto& cells = scene.cells();

@@ -50,6 +50,14 @@ void swatchLine(Rgba c, bool dashed, float width) {
   ImGui::SameLine();
 }
 
+// the checkbox, then its tooltip while hovered
+std::optional<bool> modeSwitch(const char* label, bool on, const char* tooltip) {
+  const bool clicked = ImGui::Checkbox(label, &on);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+  if (!clicked) return std::nullopt;
+  return on;
+}
+
 // a "(?)" with a tooltip
 void help(const char* text) {
   ImGui::SameLine();

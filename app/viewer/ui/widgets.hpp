@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,8 @@ void help(const char* text);
 std::string percent(std::size_t part, std::size_t whole);
 // a two-column row of a statistics table
 void statRow(const char* key, const std::string& value);
+// a mode's checkbox showing `on`, with its tooltip; the new state when clicked
+std::optional<bool> modeSwitch(const char* label, bool on, const char* tooltip);
 // check boxes in two columns: `labels` separated by '|', each setting its bool in `values`
 void toggleGrid(std::string_view labels, std::initializer_list<bool*> values);
 // the path box, Open, recent files and assets

@@ -59,6 +59,8 @@ struct PlaneTrace {
   std::uint32_t listedMin = 0;
   std::uint32_t climbSteps = 0;   // dual: moves from the proposals to the extremes
   std::uint32_t comparisons = 0;  // exact comparisons of two vertices along the normal
+  Vec3 direction{};  // dual: the unit direction along which G grows, whose cube-map cell
+                     // proposed startMax (its opposite's proposed startMin); zero otherwise
 };
 
 // Size of what a method built.
@@ -92,6 +94,9 @@ class PlaneIntersector {
   PlaneStats stats() const;
   // dual: the cube map of the dual polyhedron, whose cells trace() reads; null otherwise
   const CubemapLocator* dualLocator() const noexcept;
+  // dual: per face of the dual polyhedron (dualLocator()'s faces), the vertex it proposes;
+  // empty otherwise
+  std::span<const std::uint32_t> dualLabels() const noexcept;
 
  private:
   PlaneTrace run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const noexcept;

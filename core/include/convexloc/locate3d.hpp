@@ -215,6 +215,9 @@ class CubemapLocator {
   // the faces listed in the leaf cell p maps to (the ones a query of p would test); empty
   // for the centre and where there is no cell
   std::span<const std::uint32_t> cellFaces(Vec3 p) const noexcept;
+  // the surface it locates in: its vertices, and its faces (ConvexPolyhedron::triangles())
+  std::span<const Vec3> vertices() const noexcept { return surface_.vertices; }
+  std::span<const ConvexPolyhedron::Triangle> faces() const noexcept { return surface_.faces; }
 
  private:
   friend class CubemapBuilder;

@@ -154,12 +154,16 @@ DualCubemap3D::DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGra
   }
 }
 
+Vec3 DualCubemap3D::aim(Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
+  // w = -N, N = (q2 - q1) x (q3 - q1): G is largest along w
+  return unitCross(scaledDifference(q1, q3), scaledDifference(q1, q2));
+}
+
 bool DualCubemap3D::propose(Vec3 q1, Vec3 q2, Vec3 q3, std::uint32_t& largest,
                             std::uint32_t& smallest, std::uint32_t& listedLargest,
                             std::uint32_t& listedSmallest) const noexcept {
   if (!cube_) return false;
-  // w = -N, N = (q2 - q1) x (q3 - q1): G is largest along w
-  const Vec3 w = unitCross(scaledDifference(q1, q3), scaledDifference(q1, q2));
+  const Vec3 w = aim(q1, q2, q3);
   const auto up = cube_->cellFaces(w), down = cube_->cellFaces({-w.x, -w.y, -w.z});
   if (up.empty() || down.empty()) return false;
   largest = labels_[up[up.size() / 2]];

@@ -22,10 +22,14 @@ class DualCubemap3D {
   // and how many dual faces each cell listed; false when the dual has no cell for them.
   bool propose(Vec3 q1, Vec3 q2, Vec3 q3, std::uint32_t& largest, std::uint32_t& smallest,
                std::uint32_t& listedLargest, std::uint32_t& listedSmallest) const noexcept;
+  // the unit direction along which the plane's G grows (zero for collinear points)
+  static Vec3 aim(Vec3 q1, Vec3 q2, Vec3 q3) noexcept;
   // the cube map of the dual polyhedron; none when the dual could not be built
   const CubemapLocator* locator() const noexcept { return cube_ ? &*cube_ : nullptr; }
   std::size_t dualVertices() const noexcept { return dualVertices_; }
   std::size_t dualFaces() const noexcept { return labels_.size(); }
+  // per dual face, the vertex it proposes
+  const std::vector<std::uint32_t>& labels() const noexcept { return labels_; }
   std::size_t bytes() const noexcept;
 
  private:

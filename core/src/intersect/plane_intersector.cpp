@@ -95,6 +95,7 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
   e.smallestSign = orient3d(q1, q2, q3, vertices_[e.smallest]);
   t.crossing = crossingOf(e.largestSign, e.smallestSign);
   if (tracing) t.comparisons = up.comparisons + down.comparisons;
+  if (tracing && method_ == PlaneMethod::Dual) t.direction = detail::DualCubemap3D::aim(q1, q2, q3);
   return t;
 }
 
@@ -131,6 +132,11 @@ PlaneStats PlaneIntersector::stats() const {
 
 const CubemapLocator* PlaneIntersector::dualLocator() const noexcept {
   return dual_ ? dual_->locator() : nullptr;
+}
+
+std::span<const std::uint32_t> PlaneIntersector::dualLabels() const noexcept {
+  if (!dual_) return {};
+  return dual_->labels();
 }
 
 }  // namespace convexloc
