@@ -2,6 +2,7 @@
 #include "ui/steps_panel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <imgui.h>
@@ -44,8 +45,12 @@ void stepControls(Model& model, const StepModel& m, int step, double now) {
     player.playing = false;
     model.setStep(-1);
   }
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+  // the speed and the count follow on the same row where they fit, else on the next
+  const float speedWidth = ImGui::GetFontSize() * 6.5f;
+  const float room =
+      ImGui::GetWindowContentRegionMax().x - (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x);
+  if (room > speedWidth + ImGui::GetFontSize() * 8.0f) ImGui::SameLine();
+  ImGui::SetNextItemWidth(speedWidth);
   ImGui::SliderFloat("##speed", &player.speed, 0.25f, 4.0f, "%.2g steps/s",
                      ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
@@ -81,11 +86,12 @@ void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, flo
   ImGui::EndChild();
 }
 
-// the pseudo-code, the current step's line marked
-void codeList(const StepModel& m, int step, const Palette& pal) {
+// the pseudo-code, the current step's line marked (`onlyCurrent`: that line alone)
+void codeList(const StepModel& m, int step, const Palette& pal, bool onlyCurrent) {
   const int line = step >= 0 ? m.steps[static_cast<std::size_t>(step)].line : -1;
   for (std::size_t i = 0; i < m.code.size(); ++i) {
     const bool on = static_cast<int>(i) == line;
+    if (onlyCurrent && !on) continue;
     ImGui::PushStyleColor(ImGuiCol_Text, im(on ? pal.hoverEdge : pal.textMuted));
     textWrappedAtSpaces((on ? "> " : "  ") + m.code[i]);
     ImGui::PopStyleColor();
@@ -147,20 +153,24 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
   }
   stepControls(model, *m, step, now);
   ImGui::Separator();
-  const float rows = static_cast<float>(std::min<std::size_t>(m->steps.size(), 9));
-  const float listHeight = rows * ImGui::GetTextLineHeightWithSpacing() * 1.15f + 4.0f;
+  // at most about a third of the scene's height for the list
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float most = std::max(3.0f, std::floor(static_cast<float>(area.size().y) * 0.3f / line));
+  const float rows = std::min(static_cast<float>(m->steps.size()), std::min(most, 9.0f));
+  const float listHeight = rows * line + ImGui::GetStyle().WindowPadding.y;
   if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableNextColumn();
     stepList(*m, step, pal, result, listHeight);
     ImGui::TableNextColumn();
-    codeList(*m, step, pal);
+    codeList(*m, step, pal, false);
     ImGui::EndTable();
   } else {
+    // narrow: the current step's pseudo-code line alone
     stepList(*m, step, pal, result, listHeight);
     ImGui::Separator();
-    codeList(*m, step, pal);
+    codeList(*m, step, pal, true);
   }
   ImGui::End();
 }
