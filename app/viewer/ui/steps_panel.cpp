@@ -69,19 +69,25 @@ void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, flo
     const bool later = step >= 0 && static_cast<int>(i) > step;
     Rgba c = stepColour(s, pal, result);
     if (later) c = withAlpha(c, 0.35f);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    if (current) dl->ChannelsSplit(2);  // the text over its highlight, drawn after it
+    if (current) dl->ChannelsSetCurrent(1);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::BeginGroup();
+    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
+    ImGui::PopStyleColor();
+    ImGui::EndGroup();
     if (current) {
-      const ImVec2 at = ImGui::GetCursorScreenPos();
-      const float w = ImGui::GetContentRegionAvail().x;
-      ImGui::GetWindowDrawList()->AddRectFilled(
-          at, ImVec2(at.x + w, at.y + ImGui::GetTextLineHeightWithSpacing()),
-          u32(withAlpha(pal.hoverEdge, 0.22f)));
+      dl->ChannelsSetCurrent(0);
+      dl->AddRectFilled(at,
+                        ImVec2(at.x + ImGui::GetContentRegionAvail().x, ImGui::GetItemRectMax().y),
+                        u32(withAlpha(pal.hoverEdge, 0.22f)));
+      dl->ChannelsMerge();
       static int scrolledTo = -2;  // scrolls once per new step, then the list scrolls freely
       if (scrolledTo != step) ImGui::SetScrollHereY(0.5f);
       scrolledTo = step;
     }
-    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-    textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
-    ImGui::PopStyleColor();
   }
   ImGui::EndChild();
 }
