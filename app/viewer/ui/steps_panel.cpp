@@ -61,8 +61,13 @@ void stepControls(Model& model, const StepModel& m, int step, double now) {
 }
 
 // the steps, the current one on a highlighted row and those after it dimmed
+// (`height` 0: all of them, with no scrolling)
 void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, float height) {
-  ImGui::BeginChild("##steplist", ImVec2(0.0f, height), false);
+  const bool scrolled = height > 0.0f;
+  if (scrolled)
+    ImGui::BeginChild("##steplist", ImVec2(0.0f, height), false);
+  else
+    ImGui::BeginGroup();
   for (std::size_t i = 0; i < m.steps.size(); ++i) {
     const Step& s = m.steps[i];
     const bool current = static_cast<int>(i) == step;
@@ -85,11 +90,14 @@ void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, flo
                         u32(withAlpha(pal.hoverEdge, 0.22f)));
       dl->ChannelsMerge();
       static int scrolledTo = -2;  // scrolls once per new step, then the list scrolls freely
-      if (scrolledTo != step) ImGui::SetScrollHereY(0.5f);
+      if (scrolled && scrolledTo != step) ImGui::SetScrollHereY(0.5f);
       scrolledTo = step;
     }
   }
-  ImGui::EndChild();
+  if (scrolled)
+    ImGui::EndChild();
+  else
+    ImGui::EndGroup();
 }
 
 // the pseudo-code, the current step's line marked (`onlyCurrent`: that line alone)
@@ -141,7 +149,8 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
                                                     : model.scene3d().probe()->trace.result)
           : pal.text;
   const float font = ImGui::GetFontSize();
-  const float w = std::min(static_cast<float>(area.size().x) - 20.0f, font * 50.0f);
+  // at most 62% of the scene's width: the legend keeps the lower right corner
+  const float w = std::min(static_cast<float>(area.size().x) * 0.62f, font * 50.0f);
   const bool sideBySide = w > font * 40.0f;
   ImGui::SetNextWindowPos(
       ImVec2(static_cast<float>(area.lo.x) + 10.0f, static_cast<float>(area.hi.y) - 10.0f),
@@ -163,7 +172,10 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float most = std::max(3.0f, std::floor(static_cast<float>(area.size().y) * 0.3f / line));
   const float rows = std::min(static_cast<float>(m->steps.size()), std::min(most, 9.0f));
-  const float listHeight = rows * line + ImGui::GetStyle().WindowPadding.y;
+  // a few steps show whole, more scroll in a list `rows` high
+  const float listHeight = static_cast<float>(m->steps.size()) <= rows
+                               ? 0.0f
+                               : rows * line + ImGui::GetStyle().WindowPadding.y;
   if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
