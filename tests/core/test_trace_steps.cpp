@@ -33,7 +33,8 @@ ConvexPolygon octagon() {
   return ConvexPolygon(v);
 }
 
-// random points over the box, near the boundary, on the edges, the vertices and the centre
+// random points over the box, near the boundary, the polar hard cases, on the edges, the
+// vertices and the centre
 std::vector<Vec2> hardPoints2D(const ConvexPolygon& polygon, std::uint64_t seed) {
   Rng rng(seed);
   const PolarLocator polar(polygon);
@@ -43,6 +44,9 @@ std::vector<Vec2> hardPoints2D(const ConvexPolygon& polygon, std::uint64_t seed)
   pts.insert(pts.end(), near.begin(), near.end());
   std::vector<Vec2> hard = adversarial::polarPoints(polar, polygon);
   for (std::size_t i : adversarial::spread(hard.size(), 1500)) pts.push_back(hard[i]);
+  const std::vector<Vec2> ring(polygon.vertices().begin(), polygon.vertices().end());
+  std::vector<Vec2> onEdges = adversarial::boundaryPoints(polygon, ring, rng);
+  for (std::size_t i : adversarial::spread(onEdges.size(), 1500)) pts.push_back(onEdges[i]);
   for (Vec2 v : polygon.vertices()) pts.push_back(v);
   pts.push_back(centre);
   return pts;

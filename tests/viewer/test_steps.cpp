@@ -15,6 +15,8 @@
 #include "logic/model.hpp"
 #include "logic/options.hpp"
 #include "logic/steps.hpp"
+#include "logic/structure2d.hpp"
+#include "logic/structure3d.hpp"
 #include "logic/text.hpp"
 
 namespace cv = convexloc::viewer;
@@ -296,4 +298,50 @@ TEST(Steps, ModelAppliesStepAndPaperMode) {
   all.setPaperMode(false);
   EXPECT_TRUE(all.scene2d.probe()->trace.radiusFilter);
   EXPECT_TRUE(all.scene2d.probe()->trace.byRadius);
+}
+
+// the horizontal segments of a draw list at height y
+static std::size_t linesAtY(const cv::DrawList& d, double y) {
+  std::size_t n = 0;
+  for (const cv::Segment& s : d.segments) n += s.a.y == y && s.b.y == y && s.a.x != s.b.x;
+  return n;
+}
+
+TEST(Steps, OverlayDrawsTheCurrentProbeLine) {
+  cv::Scene2D s;
+  const ConvexPolygon poly = octagon();
+  ASSERT_TRUE(s.setShape(poly.vertices(), "octagon"));
+  s.setMethod(Method2D::Slab);
+  s.place({0.1, 0.0});
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Dark);
+  cv::DrawList all, first, second;
+  cv::buildOverlay2D(s, pal, {}, all);
+  EXPECT_EQ(linesAtY(all, 1.0), 0u);  // the whole trace shows no probe lines
+  const std::uint64_t before = s.versions().overlay;
+  s.setStep(1);  // probe 2: y4 = 1
+  EXPECT_GT(s.versions().overlay, before);
+  cv::buildOverlay2D(s, pal, {}, second);
+  EXPECT_GE(linesAtY(second, 1.0), 1u);
+  s.setStep(0);  // probe 1: y2 = 0, not yet y4
+  cv::buildOverlay2D(s, pal, {}, first);
+  EXPECT_EQ(linesAtY(first, 1.0), 0u);
+  EXPECT_GE(linesAtY(first, 0.0), 1u);
+}
+
+TEST(Steps, OverlayFillsTheFaceTestedAtThatStep) {
+  cv::Scene3D s;
+  ASSERT_TRUE(s.generate(PolyhedronKind::Cube, 12, 1));
+  s.setMethod(Method3D::Halfspace);
+  s.place({0.2, 0.1, -0.3});
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Dark);
+  cv::DrawList none, one;
+  s.setStep(0);
+  cv::buildOverlay3D(s, pal, {}, one);
+  s.setStep(-1);
+  cv::buildOverlay3D(s, pal, {}, none);
+  ASSERT_TRUE(s.probe().has_value());
+  ASSERT_FALSE(s.probe()->trace.faces.empty());
+  // step 0 fills the first face tested (3 corners), the full trace every face tested
+  EXPECT_EQ(one.fills.size(), 3u);
+  EXPECT_EQ(none.fills.size(), 3 * s.probe()->trace.faces.size());
 }

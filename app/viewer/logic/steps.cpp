@@ -105,7 +105,7 @@ void radiusStep(const Trace& t, StepList& l, const char* noun) {
                                         : std::string(": between, the ") + noun + "s decide");
   l.add("|d| = " + compact(t.distance) + "; radii " + compact(t.innerRadius) + ".." +
             compact(t.outerRadius) + verdict,
-        2, StepFocus::Radii, -1);
+        2, t.byRadius ? StepFocus::Radii : StepFocus::None, -1);  // drawn where they decide
 }
 
 // polar, cube map: the pseudo-code, its radius line struck in paper-faithful mode

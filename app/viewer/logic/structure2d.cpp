@@ -210,6 +210,32 @@ void hoveredCell(const Scene2D& scene, const Palette& pal, const View2DOptions& 
   }
 }
 
+// a circle around c of radius r (for the radii)
+void circle(glm::dvec2 c, double r, Rgba colour, float width, DrawList& out) {
+  constexpr int kSides = 96;
+  for (int k = 0; k < kSides; ++k) {
+    const double a0 = 2.0 * std::numbers::pi * k / kSides,
+                 a1 = 2.0 * std::numbers::pi * (k + 1) / kSides;
+    out.segment(at2(c + r * glm::dvec2(std::cos(a0), std::sin(a0))),
+                at2(c + r * glm::dvec2(std::cos(a1), std::sin(a1))), colour, width, 6.0f);
+  }
+}
+
+// polar: the cell's two radii around the centre x_T (inside within r_in, outside beyond
+// r_out), labelled when `current`
+void radiiCircles(const Trace2D& t, const Palette& pal, bool current, bool labels, DrawList& out) {
+  const glm::dvec2 c = toGlm(t.apex);
+  const float w = current ? 2.0f : 1.0f;
+  const float a = current ? 1.0f : 0.5f;
+  circle(c, t.innerRadius, withAlpha(pal.positive, a), w, out);
+  circle(c, t.outerRadius, withAlpha(pal.negative, a), w, out);
+  if (current && labels) {
+    // r_in below the centre, r_out above it: the two circles may lie close
+    out.label(at2(c - glm::dvec2(0.0, t.innerRadius)), "r_in", pal.positive, {0.0f, -12.0f});
+    out.label(at2(c + glm::dvec2(0.0, t.outerRadius)), "r_out", pal.negative, {0.0f, -12.0f});
+  }
+}
+
 // the placed point and its trace: the cell chosen, the rays and edges tested by sign
 void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
                 const View2DOptions& opt, DrawList& out) {
@@ -219,6 +245,8 @@ void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
   const Trace2D& t = probe.trace;
   const glm::dvec2 x = toGlm(probe.point);
   if (t.outsideBox) drawBox(poly.bounds(), pal.negative, 2.0f, out);
+  // the radii, where they decided
+  if (t.byRadius) radiiCircles(t, pal, true, opt.showLabels, out);
   // the cell the query chose
   const std::ptrdiff_t pos = cellPosition(scene, t.cell);
   if (pos >= 0) {
@@ -266,17 +294,6 @@ struct StepDraw {
   DrawList& out;
 };
 
-// a circle around c of radius r (for the radii)
-void circle(glm::dvec2 c, double r, Rgba colour, float width, DrawList& out) {
-  constexpr int kSides = 96;
-  for (int k = 0; k < kSides; ++k) {
-    const double a0 = 2.0 * std::numbers::pi * k / kSides,
-                 a1 = 2.0 * std::numbers::pi * (k + 1) / kSides;
-    out.segment(at2(c + r * glm::dvec2(std::cos(a0), std::sin(a0))),
-                at2(c + r * glm::dvec2(std::cos(a1), std::sin(a1))), colour, width, 6.0f);
-  }
-}
-
 // the horizontal line y = value across the (grown) box, with a label at its left end
 void probeLine(const StepDraw& d, double y, Rgba c, float width, const std::string& label) {
   const Box2 b = grow(d.scene.polygon().bounds(), 0.06);
@@ -311,17 +328,9 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
         numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
 }
 
-// polar: the cell's two radii around the centre, and the point's distance
+// polar: the cell's two radii around the centre
 void stepRadii(const StepDraw& d, bool current) {
-  const glm::dvec2 c = toGlm(d.t.apex);
-  const float w = current ? 2.0f : 1.0f;
-  const float a = current ? 1.0f : 0.5f;
-  circle(c, d.t.innerRadius, withAlpha(d.pal.positive, a), w, d.out);
-  circle(c, d.t.outerRadius, withAlpha(d.pal.negative, a), w, d.out);
-  if (current && d.opt.showLabels) {
-    d.out.label(at2(c + glm::dvec2(0.0, d.t.innerRadius)), "r_in", d.pal.positive, {0.0f, -12.0f});
-    d.out.label(at2(c + glm::dvec2(0.0, d.t.outerRadius)), "r_out", d.pal.negative, {0.0f, -12.0f});
-  }
+  radiiCircles(d.t, d.pal, current, d.opt.showLabels, d.out);
 }
 
 // a ray from the apex through a vertex, by its sign

@@ -289,6 +289,7 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
     // the cube map's cell: its pyramid, and the ray from the centre through the point
     const std::ptrdiff_t k = scene.probeCell();
     if (k >= 0) pyramid(cells[static_cast<std::size_t>(k)], rc, 1.75f, out);
+    if (t.byRadius) radiiOnRay(t, pal, true, out);  // the radii, where they decided
     if (t.centre) out.segment(toGlm(*t.centre), x, pal.text, 1.25f, 5.0f);
     // the walk's path, face after face
     for (std::size_t i = 0; i < t.path.size(); ++i) {

@@ -148,6 +148,13 @@ std::string radiusLine(double distance, double inner, double outer, const char* 
 }
 }  // namespace
 
+namespace {
+// the size of a box, below which 1e-12 of it is noise (the centre's display)
+double scaleOf(const Box2& b) {
+  return std::hypot(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+}
+}  // namespace
+
 std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolygon& polygon,
                                      std::uint32_t q) {
   std::vector<TraceLine> out;
@@ -173,7 +180,7 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
       if (t.atCentre)
         add(TraceLine::Step, "the point is the centre x_T itself");
       else if (t.octant >= 0) {
-        add(TraceLine::Step, "centre x_T = " + exact(t.apex));
+        add(TraceLine::Step, "centre x_T = " + compact(t.apex, scaleOf(polygon.bounds())));
         add(TraceLine::Step,
             "octant " + std::to_string(t.octant) + " (signs of dx, dy and |dx| vs |dy|)");
         if (q > 0)

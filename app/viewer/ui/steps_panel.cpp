@@ -2,6 +2,7 @@
 #include "ui/steps_panel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <imgui.h>
@@ -44,8 +45,12 @@ void stepControls(Model& model, const StepModel& m, int step, double now) {
     player.playing = false;
     model.setStep(-1);
   }
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+  // the speed and the count follow on the same row where they fit, else on the next
+  const float speedWidth = ImGui::GetFontSize() * 6.5f;
+  const float room =
+      ImGui::GetWindowContentRegionMax().x - (ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x);
+  if (room > speedWidth + ImGui::GetFontSize() * 8.0f) ImGui::SameLine();
+  ImGui::SetNextItemWidth(speedWidth);
   ImGui::SliderFloat("##speed", &player.speed, 0.25f, 4.0f, "%.2g steps/s",
                      ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
@@ -56,36 +61,51 @@ void stepControls(Model& model, const StepModel& m, int step, double now) {
 }
 
 // the steps, the current one on a highlighted row and those after it dimmed
+// (`height` 0: all of them, with no scrolling)
 void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, float height) {
-  ImGui::BeginChild("##steplist", ImVec2(0.0f, height), false);
+  const bool scrolled = height > 0.0f;
+  if (scrolled)
+    ImGui::BeginChild("##steplist", ImVec2(0.0f, height), false);
+  else
+    ImGui::BeginGroup();
   for (std::size_t i = 0; i < m.steps.size(); ++i) {
     const Step& s = m.steps[i];
     const bool current = static_cast<int>(i) == step;
     const bool later = step >= 0 && static_cast<int>(i) > step;
     Rgba c = stepColour(s, pal, result);
     if (later) c = withAlpha(c, 0.35f);
-    if (current) {
-      const ImVec2 at = ImGui::GetCursorScreenPos();
-      const float w = ImGui::GetContentRegionAvail().x;
-      ImGui::GetWindowDrawList()->AddRectFilled(
-          at, ImVec2(at.x + w, at.y + ImGui::GetTextLineHeightWithSpacing()),
-          u32(withAlpha(pal.hoverEdge, 0.22f)));
-      static int scrolledTo = -2;  // scrolls once per new step, then the list scrolls freely
-      if (scrolledTo != step) ImGui::SetScrollHereY(0.5f);
-      scrolledTo = step;
-    }
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    if (current) dl->ChannelsSplit(2);  // the text over its highlight, drawn after it
+    if (current) dl->ChannelsSetCurrent(1);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::BeginGroup();
     ImGui::PushStyleColor(ImGuiCol_Text, im(c));
     textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
     ImGui::PopStyleColor();
+    ImGui::EndGroup();
+    if (current) {
+      dl->ChannelsSetCurrent(0);
+      dl->AddRectFilled(at,
+                        ImVec2(at.x + ImGui::GetContentRegionAvail().x, ImGui::GetItemRectMax().y),
+                        u32(withAlpha(pal.hoverEdge, 0.22f)));
+      dl->ChannelsMerge();
+      static int scrolledTo = -2;  // scrolls once per new step, then the list scrolls freely
+      if (scrolled && scrolledTo != step) ImGui::SetScrollHereY(0.5f);
+      scrolledTo = step;
+    }
   }
-  ImGui::EndChild();
+  if (scrolled)
+    ImGui::EndChild();
+  else
+    ImGui::EndGroup();
 }
 
-// the pseudo-code, the current step's line marked
-void codeList(const StepModel& m, int step, const Palette& pal) {
+// the pseudo-code, the current step's line marked (`onlyCurrent`: that line alone)
+void codeList(const StepModel& m, int step, const Palette& pal, bool onlyCurrent) {
   const int line = step >= 0 ? m.steps[static_cast<std::size_t>(step)].line : -1;
   for (std::size_t i = 0; i < m.code.size(); ++i) {
     const bool on = static_cast<int>(i) == line;
+    if (onlyCurrent && !on) continue;
     ImGui::PushStyleColor(ImGuiCol_Text, im(on ? pal.hoverEdge : pal.textMuted));
     textWrappedAtSpaces((on ? "> " : "  ") + m.code[i]);
     ImGui::PopStyleColor();
@@ -129,7 +149,8 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
                                                     : model.scene3d().probe()->trace.result)
           : pal.text;
   const float font = ImGui::GetFontSize();
-  const float w = std::min(static_cast<float>(area.size().x) - 20.0f, font * 50.0f);
+  // at most 62% of the scene's width: the legend keeps the lower right corner
+  const float w = std::min(static_cast<float>(area.size().x) * 0.62f, font * 50.0f);
   const bool sideBySide = w > font * 40.0f;
   ImGui::SetNextWindowPos(
       ImVec2(static_cast<float>(area.lo.x) + 10.0f, static_cast<float>(area.hi.y) - 10.0f),
@@ -147,20 +168,27 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
   }
   stepControls(model, *m, step, now);
   ImGui::Separator();
-  const float rows = static_cast<float>(std::min<std::size_t>(m->steps.size(), 9));
-  const float listHeight = rows * ImGui::GetTextLineHeightWithSpacing() * 1.15f + 4.0f;
+  // at most about a third of the scene's height for the list
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float most = std::max(3.0f, std::floor(static_cast<float>(area.size().y) * 0.3f / line));
+  const float rows = std::min(static_cast<float>(m->steps.size()), std::min(most, 9.0f));
+  // a few steps show whole, more scroll in a list `rows` high
+  const float listHeight = static_cast<float>(m->steps.size()) <= rows
+                               ? 0.0f
+                               : rows * line + ImGui::GetStyle().WindowPadding.y;
   if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableNextColumn();
     stepList(*m, step, pal, result, listHeight);
     ImGui::TableNextColumn();
-    codeList(*m, step, pal);
+    codeList(*m, step, pal, false);
     ImGui::EndTable();
   } else {
+    // narrow: the current step's pseudo-code line alone
     stepList(*m, step, pal, result, listHeight);
     ImGui::Separator();
-    codeList(*m, step, pal);
+    codeList(*m, step, pal, true);
   }
   ImGui::End();
 }
