@@ -130,8 +130,8 @@ int main(int argc, char** argv) {
     std::cerr << "convexloc-viewer: no display (DISPLAY is not set)\n";
     return 1;
   }
-  const bool headless =
-      !options.screenshot.empty() || options.framesGiven || !options.exportDir.empty();
+  const bool headless = !options.screenshot.empty() || options.framesGiven ||
+                        !options.svg.empty() || !options.exportDir.empty();
 
   cv::Window window;
   if (!window.open(options, headless)) return 1;
@@ -165,14 +165,15 @@ int main(int argc, char** argv) {
   while (!window.shouldClose()) {
     stats.begin();
     window.takeEvents(!headless && idle.idle());
-    style.update(model.settings, ui.pendingFontScale);  // outside the ImGui frame
+    // outside the ImGui frame; a new text size refits the scene (the panels changed width)
+    if (style.update(model.settings, ui.pendingFontScale)) model.requestFit();
     window.newFrame();
 
     const cv::FrameSize size = window.frameSize();
     model.camera2d.setViewport(size.window);
     model.camera3d.setViewport(size.window);
     const bool dropped = openDropped(model, ui);
-    if (model.takeFitRequest()) model.fit(cv::sceneArea(model, size.window));
+    if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
     if (!headless) {
       interaction.update(cv::pointerInput(window.hovered()), model);
       for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
@@ -193,13 +194,15 @@ int main(int argc, char** argv) {
     stats.count();
     bool lastFrame = headless && stats.frames() >= options.frames;
     if (exporter.active()) {  // --export: every slide written, then the run ends
-      if (!exporter.afterFrame(model, ui, size.framebufferWidth, size.framebufferHeight))
+      if (!exporter.afterFrame(model, view, ui, size.framebufferWidth, size.framebufferHeight))
         exitCode = 1;
       lastFrame = exporter.finished() || exitCode != 0;
     }
     const std::string finalShot = lastFrame ? options.screenshot : "";
     if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
                                stats.seconds()))
+      exitCode = 1;
+    if (!cv::svgIfAsked(model, view, ui, lastFrame ? options.svg : "", stats.seconds()))
       exitCode = 1;
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();

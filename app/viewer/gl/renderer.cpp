@@ -348,6 +348,7 @@ void Renderer::drawSegments(Layer layer, const FrameParams& f) {
   if (!l.segments || !segments_.ready()) return;
   blending(f);
   commonUniforms(segments_, f);
+  segments_.set("uPixelRatio", f.pixelRatio * f.lineScale);
   segments_.set("uViewport", f.framebuffer);
   glBindVertexArray(l.segVao);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, l.segments);
@@ -362,6 +363,7 @@ void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
   blending(flat);
   glEnable(GL_PROGRAM_POINT_SIZE);
   commonUniforms(markers_, f);
+  markers_.set("uPixelRatio", f.pixelRatio * f.lineScale);
   glBindVertexArray(l.markVao);
   glDrawArrays(GL_POINTS, 0, l.markers);
 }

@@ -36,6 +36,7 @@ struct FrameParams {
   glm::vec2 framebuffer{1.0f};  // pixels
   float pixelRatio = 1.0f;      // framebuffer pixels per window pixel
   float pointSize = 4.0f;       // window pixels
+  float lineScale = 1.0f;       // segment widths and marker sizes are multiplied by it
   unsigned visibleMask = 7u;    // classes of points drawn
   Rgba classColours[3];
   Rgba rim;

@@ -162,6 +162,7 @@ FrameParams SceneView::frameParams(Model& model, glm::vec2 fbSize, float pixelRa
   FrameParams f;
   f.framebuffer = fbSize;
   f.pixelRatio = pixelRatio;
+  f.lineScale = model.settings.drawScale();
   // the Lines mode hides the spray: the line and the dual are the subject
   f.visibleMask =
       model.dim == Dim::Two && model.lines2d.enabled() ? 0u : model.settings.visibleMask;
@@ -190,7 +191,7 @@ void SceneView::drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, flo
                          double frameBudgetMs) {
   FrameParams f = frameParams(model, fbSize, pixelRatio);
   const Rgba bg = paletteFor(model.settings.theme).background;
-  const BaseKey key{f.clipFromLocal, fbSize, uploads_, f.visibleMask, f.pointSize};
+  const BaseKey key{f.clipFromLocal, fbSize, uploads_, f.visibleMask, f.pointSize, f.lineScale};
   const std::size_t n = renderer.pointCount();
   if (!renderer.hasTarget()) {
     // no cache: the whole base, every frame

@@ -31,6 +31,9 @@ class SceneView {
   // the draw lists with labels, for the text ImGui writes over the scene
   const DrawList& structure() const { return structure_; }
   const DrawList& overlay() const { return overlay_; }
+  // 3D: the polyhedron's faces and the slicing plane's section
+  const DrawList& mesh() const { return mesh_; }
+  const DrawList& section() const { return section_; }
   // the point size the last frame used (window pixels)
   float pointSize() const { return pointSize_; }
 
@@ -42,6 +45,7 @@ class SceneView {
     std::uint64_t uploads = 0;
     unsigned mask = 0;
     float pointSize = 0.0f;
+    float lineScale = 0.0f;
     bool operator==(const BaseKey&) const = default;
   };
   FrameParams frameParams(Model& model, glm::vec2 fbSize, float pixelRatio);

@@ -7,14 +7,18 @@
 namespace convexloc::viewer {
 
 enum class ActionKind : std::uint8_t {
-  Screenshot,   // a PNG of the window in the working directory
-  Fit,          // the camera fitted to the shape
-  ToggleUi,     // the panels hidden or shown
-  ToggleTheme,  // dark and light swapped
-  ClearPoint,   // the placed point (and in 3D the pinned cell) cleared
-  NewSpray,     // a spray with the next seed
-  ToggleLines,  // the 2D Lines mode (the dual problem) on or off
+  Screenshot,    // a PNG of the window in the working directory
+  Fit,           // the camera fitted to the shape
+  ToggleUi,      // the panels hidden or shown
+  ToggleTheme,   // dark and light swapped
+  ClearPoint,    // the placed point (and in 3D the pinned cell) cleared
+  NewSpray,      // a spray with the next seed
+  ToggleLines,   // the 2D Lines mode (the dual problem) on or off
   ChooseMethod,  // the method numbered `method` (0 = the first) in the scene's list
+  // presentation and vector figures
+  SaveSvg,        // the scene as an SVG file in the export directory
+  TogglePresent,  // presentation mode on or off
+  ToggleLegend,   // the legend shown or hidden
   // a lecture's slides
   NextSlide,
   PreviousSlide,

@@ -133,6 +133,11 @@ std::string Model::apply(const Options& o) {
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
   settings.showUi = !o.hideUi;
+  // presentation
+  settings.present = o.present;
+  settings.showUi = settings.showUi && !o.present;
+  settings.showLegend = !o.noLegend;
+  settings.caption = o.caption;
   // a 3D method, --3d or a polyhedron kind ask for the 3D scene
   const bool method3d = o.method && parseMethod3D(*o.method).has_value();
   if (o.method && !method3d && !parseMethod2D(*o.method))

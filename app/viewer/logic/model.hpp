@@ -33,6 +33,12 @@ struct Settings {
   unsigned visibleMask = kAllClasses;  // which classes of sprayed points are drawn
   View2DOptions view2d;
   View3DOptions view3d;
+  // presentation: panels hidden (P, --present), a caption over the scene, the legend shown
+  bool present = false;
+  bool showLegend = true;
+  std::string caption;
+  // how much line widths, marker sizes and label offsets grow: with the text
+  float drawScale() const { return fontScale; }
   // a lecture's slide card over the scene's top, in window pixels: the scene fits below it
   float slideCardHeight = 0.0f;
 };
@@ -48,6 +54,8 @@ class Model {
   Scene2D scene2d;
   // the 3D scene, made on first use (building it takes a moment)
   Scene3D& scene3d();
+  // the 3D scene, which must have been made (hasScene3d())
+  const Scene3D& scene3d() const { return *scene3d_; }
   bool hasScene3d() const { return scene3d_ != nullptr; }
   // shows the 2D or the 3D scene
   void show(Dim d);

@@ -272,6 +272,25 @@ bool batchOption(std::string_view a, ArgReader& in, Options& o) {
   return true;
 }
 
+// --svg, --present, --caption, --no-legend: slides and vector figures
+bool presentOption(std::string_view a, ArgReader& in, Options& o) {
+  std::string_view v;
+  if (a == "--svg") {
+    if (!in.value(v) || v.empty()) return in.fail("--svg needs a file name");
+    o.svg = std::string(v);
+  } else if (a == "--caption") {
+    if (!in.value(v)) return in.fail("--caption needs a text");
+    o.caption = std::string(v);
+  } else if (a == "--present") {
+    o.present = true;
+  } else if (a == "--no-legend") {
+    o.noLegend = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // an unknown option, or the shape file (only one)
 std::string shapeArgument(std::string_view a, Options& o) {
   if (!a.empty() && a[0] == '-' && a != "-")
@@ -300,7 +319,7 @@ std::string parseInto(std::span<const std::string_view> args, Options& o) {
     const std::string_view a = in.take();
     if (!flagOption(a, o) && !sceneOption(a, in, o) && !sprayOption(a, in, o) &&
         !placeOption(a, in, o) && !solidOption(a, in, o) && !viewOption(a, in, o) &&
-        !batchOption(a, in, o) && !lectureOption(a, in, o))
+        !batchOption(a, in, o) && !presentOption(a, in, o) && !lectureOption(a, in, o))
       in.error = shapeArgument(a, o);
   }
   return in.error;
@@ -317,6 +336,7 @@ bool lectureOption(std::string_view a, ArgReader& in, Options& o) {
     const std::vector<std::string_view> args(words.begin(), words.end());
     if (std::string e = parseInto(args, o); !e.empty()) return in.fail("--figure: " + e);
     o.figure = n;
+    o.caption = std::string(figure(n).caption);  // a later --caption replaces it
   } else if (a == "--lecture") {
     if (!in.value(v) || v.empty()) return in.fail("--lecture needs a .lecture file");
     o.lecture = std::string(v);
@@ -379,12 +399,17 @@ View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
   --hide-ui             only the scene and its legend
+  --present             presentation mode (P): panels hidden, lines and labels sized
+                        with the text, the legend movable (drag it)
+  --caption TEXT        a caption written large under the scene
+  --no-legend           hide the legend (G)
   --size WxH            window size in pixels (default 1440x900)
   --shaders DIR         load the GLSL shaders from DIR
   --samples N           multisampling (default 4 on a GPU, 0 on a software renderer,
                         where lines and points are anti-aliased by the shaders alone)
 Without hands:
   --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
+  --svg FILE            the same, writing the scene as SVG (vector; both may be given)
   --frames N            render N frames, print the mean frame time and exit
   --animate             move the camera every frame (to time frames under a hand)
   --no-xvfb             without a display, fail instead of re-running under xvfb-run
@@ -393,8 +418,9 @@ Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, cl
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
 Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode, Space new
-spray, Esc clear the point, F12 screenshot; in a lecture PageDown / PageUp next and
-previous slide, Home / End first and last.
+spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode,
+G legend; in a lecture PageDown / PageUp next and previous slide, Home / End first and
+last.
 )";
 }
 

@@ -49,6 +49,11 @@ struct Options {
   bool animate = false;            // move the camera every frame (timing)
   bool compare = false;            // time every method at start (the Method panel)
   bool help = false, version = false;
+  // presentation and vector figures
+  std::string svg;       // render, write the scene as this SVG and exit (with --screenshot too)
+  bool present = false;  // presentation mode: panels hidden, caption, legend movable
+  bool noLegend = false;
+  std::string caption;  // a caption written large over the scene
   // lectures and the paper's figures
   std::optional<int> figure;              // --figure N: start from the paper's figure N
   std::string lecture;                    // --lecture FILE: a slide show

@@ -29,6 +29,8 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
     {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
     {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
+    {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
+    {GLFW_KEY_G, ActionKind::ToggleLegend},
     // a lecture: what a presentation clicker sends
     {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide}, {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
     {GLFW_KEY_HOME, ActionKind::FirstSlide},     {GLFW_KEY_END, ActionKind::LastSlide},
@@ -68,7 +70,8 @@ PointerInput pointerInput(bool hovering) {
 
 std::vector<Action> keyActions() {
   std::vector<Action> actions;
-  if (pressed(GLFW_KEY_F12)) actions.push_back({ActionKind::Screenshot, 0});
+  if (pressed(GLFW_KEY_F12))
+    actions.push_back({ImGui::GetIO().KeyShift ? ActionKind::SaveSvg : ActionKind::Screenshot, 0});
   if (ImGui::GetIO().WantCaptureKeyboard) return actions;
   for (const KeyBinding& b : kKeys)
     if (pressed(b.key)) actions.push_back({b.kind, 0});

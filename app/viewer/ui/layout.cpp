@@ -10,10 +10,12 @@
 
 #include <imgui.h>
 
+#include "logic/label_layout.hpp"
 #include "logic/text.hpp"
 #include "ui/lecture_panel.hpp"
 #include "ui/panels2d.hpp"
 #include "ui/panels3d.hpp"
+#include "ui/svg_export.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -25,6 +27,31 @@ const ScenePanels& panelsOf(const Model& model) {
 }
 
 // === View
+
+// the presentation mode and legend check boxes
+void presentControls(Model& model, UiState& ui) {
+  Settings& s = model.settings;
+  bool present = s.present;
+  if (ImGui::Checkbox("presentation (P)", &present))
+    perform({ActionKind::TogglePresent, 0}, model, ui);
+  ImGui::SameLine();
+  bool legend = s.showLegend;
+  if (ImGui::Checkbox("legend (G)", &legend)) perform({ActionKind::ToggleLegend, 0}, model, ui);
+}
+
+// Screenshot and SVG, and the directory they write to
+void exportButtons(UiState& ui, float half) {
+  if (ImGui::Button("Screenshot", ImVec2(half, 0.0f))) ui.screenshotRequested = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: a PNG of the window, in the folder below");
+  ImGui::SameLine();
+  if (ImGui::Button("SVG", ImVec2(half, 0.0f))) ui.svgRequested = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("V or Shift+F12: the scene as a vector figure, in the folder below");
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::InputTextWithHint("##exportdir", "save to: the working directory", ui.exportDirEdit,
+                               sizeof ui.exportDirEdit))
+    ui.exportDir = ui.exportDirEdit;
+}
 
 void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   int theme = static_cast<int>(model.settings.theme);
@@ -38,15 +65,12 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
 
   panelsOf(model).viewOptions(model);
 
-  const float third =
-      (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
-  if (ImGui::Button("Fit (F)", ImVec2(third, 0.0f))) model.requestFit();
+  presentControls(model, ui);
+  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+  exportButtons(ui, half);
+  if (ImGui::Button("Fit (F)", ImVec2(half, 0.0f))) model.requestFit();
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot", ImVec2(third, 0.0f))) ui.screenshotRequested = true;
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("F12: a PNG of the window in the working directory");
-  ImGui::SameLine();
-  if (ImGui::Button("Shaders", ImVec2(third, 0.0f))) ui.reloadShaders = true;
+  if (ImGui::Button("Shaders", ImVec2(half, 0.0f))) ui.reloadShaders = true;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Reload the shaders from %s", renderer.shaderDir().c_str());
   if (!renderer.shaderLog().empty()) {
@@ -57,20 +81,66 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   ImGui::TextDisabled("%.2f ms/frame (%.0f fps), %s points", ui.frameMs,
                       ui.frameMs > 0 ? 1000.0 / ui.frameMs : 0.0,
                       grouped(renderer.pointCount()).c_str());
-  if (!ui.glInfo.empty()) ImGui::TextDisabled("%s", ui.glInfo.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  textAtSpaces(ui.glInfo);
+  ImGui::PopStyleColor();
 }
 
-// the legend alone, over the scene's lower right corner (panels hidden)
-void legendOverlay(Model& model, ScreenRect area) {
-  ImGui::SetNextWindowPos(
-      ImVec2(static_cast<float>(area.hi.x) - 10.0f, static_cast<float>(area.hi.y) - 10.0f),
-      ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+// The legend alone, over the scene's lower right corner (above the caption), or where the
+// user dragged it; its size is kept for the next fit, which leaves room for it.
+void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window, double now) {
+  if (ui.legendMoved) {
+    const float x = std::clamp(ui.legendPos[0], 0.0f, static_cast<float>(window.x) - 40.0f);
+    const float y = std::clamp(ui.legendPos[1], 0.0f, static_cast<float>(window.y) - 30.0f);
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+  } else {
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f,
+                                   static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  }
   ImGui::SetNextWindowBgAlpha(0.82f);
   ImGui::Begin("Legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
   panelsOf(model).legend(model);
+  // dragged by hand (ImGui's own moving would fight the corner placement)
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (ImGui::IsWindowHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+    ui.legendMoved = true;
+    ui.legendPos[0] = pos.x + ImGui::GetIO().MouseDelta.x;
+    ui.legendPos[1] = pos.y + ImGui::GetIO().MouseDelta.y;
+  } else if (ImGui::IsWindowHovered()) {
+    ImGui::SetTooltip("drag to move; G hides the legend");
+  }
+  if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
+      now < ui.refitUntil)
+    model.requestFit();  // fitted a moment ago for another size: fit again
+  ui.legendSize[0] = size.x;
+  ui.legendSize[1] = size.y;
+  ImGui::End();
+}
+
+// the caption, large, in a box along the bottom of the scene area
+void captionBox(const Model& model, UiState& ui, ScreenRect area) {
+  ui.captionHeight = 0.0f;
+  if (model.settings.caption.empty()) return;
+  const float w = static_cast<float>(area.size().x) * 0.9f;
+  ImGui::SetNextWindowPos(
+      ImVec2(static_cast<float>(area.middle().x), static_cast<float>(area.hi.y) - 8.0f),
+      ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.9f);
+  ImGui::Begin("##caption", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                   ImGuiWindowFlags_NoInputs);
+  ImGui::SetWindowFontScale(1.5f);
+  const auto measure = [](std::string_view t) { return measureText(t); };
+  for (const std::string& line :
+       breakAtSpaces(model.settings.caption, w - 2.0f * ImGui::GetStyle().WindowPadding.x, measure))
+    ImGui::TextUnformatted(line.c_str());
+  ui.captionHeight = ImGui::GetWindowHeight() + 8.0f;
   ImGui::End();
 }
 
@@ -101,7 +171,10 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::PushStyleColor(ImGuiCol_Text, im(colour));
-    ImGui::TextWrapped("%s", text.c_str());
+    // broken at spaces only: a number never splits across lines
+    for (const std::string& line :
+         breakAtSpaces(text, w - 2.0f * ImGui::GetStyle().WindowPadding.x, measureText))
+      ImGui::TextUnformatted(line.c_str());
     ImGui::PopStyleColor();
     if (closable && ImGui::SmallButton("dismiss")) until = 0.0;
     y += ImGui::GetWindowHeight() + 6.0f;
@@ -115,6 +188,7 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
 
 // a window pinned to the side of the main window, the whole height
 void sideWindow(const char* name, float x, float width, double height) {
+  ImGui::SetNextWindowBgAlpha(1.0f);  // opaque: the scene never shows through a panel
   ImGui::SetNextWindowPos(ImVec2(x, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(height)));
   ImGui::Begin(name, nullptr,
@@ -143,6 +217,10 @@ void dimensionButtons(Model& model) {
 // the scene's own panels, in the left window
 void scenePanels(Model& model, UiState& ui) {
   const ScenePanels& p = panelsOf(model);
+  // a new comparison table folds the Shape panel, so that the table shows without scrolling
+  const std::size_t compared = ui.compare2d.size() + ui.compare3d.size();
+  if (compared != ui.compareSeen && compared > 0) ImGui::SetNextItemOpen(false);
+  ui.compareSeen = compared;
   if (ImGui::CollapsingHeader("Shape", ImGuiTreeNodeFlags_DefaultOpen)) p.shape(model, ui);
   if (ImGui::CollapsingHeader("Method", ImGuiTreeNodeFlags_DefaultOpen)) p.method(model, ui);
   if (p.ownTitle && ImGui::CollapsingHeader(p.ownTitle, ImGuiTreeNodeFlags_DefaultOpen))
@@ -154,8 +232,10 @@ void scenePanels(Model& model, UiState& ui) {
 // the mouse and key hints under the panels
 void hints(const Model& model) {
   ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   for (const char* const* line = panelsOf(model).hints; *line; ++line)
-    ImGui::TextDisabled("%s", *line);
+    ImGui::TextWrapped("%s", *line);
+  ImGui::PopStyleColor();
 }
 
 // the left window: title, dimension, the scene's panels, View, hints
@@ -172,19 +252,25 @@ void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window)
 // the right window: the legend over the inspector
 void rightPanel(Model& model, glm::dvec2 window, float width) {
   sideWindow("What you see", static_cast<float>(window.x) - width, width, window.y);
-  panelsOf(model).legend(model);
-  ImGui::Separator();
+  if (model.settings.showLegend) {
+    panelsOf(model).legend(model);
+    ImGui::Separator();
+  }
   panelsOf(model).inspector(model, true);
   ImGui::End();
 }
 
-// the inspector floating over the scene's upper right corner (no right panel)
-void floatingInspector(Model& model, ScreenRect area, glm::dvec2 window) {
+// the inspector floating over the scene's upper right corner (no right panel), above the
+// legend when that sits in the corner below
+void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dvec2 window) {
   const float iw =
       std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
+  float ih = static_cast<float>(window.y) * 0.6f;
+  if (model.settings.showLegend && !ui.legendMoved)
+    ih = std::min(ih,
+                  static_cast<float>(area.size().y) - ui.legendSize[1] - ui.captionHeight - 36.0f);
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f),
-                                      ImVec2(iw, static_cast<float>(window.y) * 0.6f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, std::max(ih, 120.0f)));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("Inspector", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -198,14 +284,35 @@ void floatingInspector(Model& model, ScreenRect area, glm::dvec2 window) {
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
   if (!model.settings.showUi) return 0.0f;
-  return std::min(345.0f * model.settings.fontScale,
-                  std::max(300.0f, static_cast<float>(0.32 * window.x)));
+  // as wide as the text needs at its scale, up to 45% of the window (longer lines wrap)
+  const float cap = std::max(300.0f, static_cast<float>(0.45 * window.x));
+  return std::min(345.0f * model.settings.fontScale, cap);
 }
 
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
   // narrower windows keep the scene wide: legend and inspector float over it instead
-  if (!model.settings.showUi || window.x < 1280.0) return 0.0f;
-  return std::min(330.0f * model.settings.fontScale, static_cast<float>(0.26 * window.x));
+  const float fs = model.settings.fontScale;
+  if (!model.settings.showUi || window.x < 1280.0 * std::max(1.0f, 0.8f * fs)) return 0.0f;
+  return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
+}
+
+void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
+  ScreenRect a = sceneArea(model, window);
+  a.hi.y -= ui.captionHeight;
+  const bool floatingLegend = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
+  if (floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f) {
+    // give up the strip, right or bottom, that costs the scene less
+    const glm::dvec2 s = a.size();
+    const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
+    if (s.x > lw && s.y > lh) {
+      if ((s.x - lw) / s.x >= (s.y - lh) / s.y)
+        a.hi.x -= lw;
+      else
+        a.hi.y -= lh;
+    }
+  }
+  model.fit(a);
+  ui.refitUntil = now + 1.5;
 }
 
 ScreenRect sceneArea(const Model& model, glm::dvec2 window) {
@@ -262,6 +369,16 @@ void perform(const Action& action, Model& model, UiState& ui) {
       else
         model.scene3d().spray(spray);
       break;
+    case ActionKind::SaveSvg: ui.svgRequested = true; break;
+    case ActionKind::TogglePresent:
+      model.settings.present = !model.settings.present;
+      model.settings.showUi = !model.settings.present;
+      model.requestFit();
+      break;
+    case ActionKind::ToggleLegend:
+      model.settings.showLegend = !model.settings.showLegend;
+      model.requestFit();
+      break;
     case ActionKind::ChooseMethod:
       if (model.dim == Dim::Two)
         model.scene2d.setMethod(kAllMethods2D[action.method]);
@@ -282,12 +399,13 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   const ScreenRect area = sceneArea(model, window);
   if (model.settings.showUi) leftPanel(model, renderer, ui, window);
   const float rw = rightPanelWidth(model, window);
+  captionBox(model, ui, area);
   if (rw > 0.0f) {
     rightPanel(model, window, rw);
   } else {
-    legendOverlay(model, area);
+    if (model.settings.showLegend) legendOverlay(model, ui, area, window, now);
     if (model.settings.showUi && panelsOf(model).inspectable(model))
-      floatingInspector(model, area, window);
+      floatingInspector(model, ui, area, window);
   }
   slideCard(model, ui, area);
   toast(model, ui, area, now);
@@ -295,31 +413,26 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
 
 void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const Camera2D& cam = model.camera2d;
-  const Camera3D& cam3 = model.camera3d;
-  const glm::dvec2 vp = cam.viewport();
+  const glm::dvec2 vp =
+      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
-  int budget = 400;
-  for (const DrawList* list : {&view.structure(), &view.overlay()})
-    for (const Label& l : list->labels) {
-      if (--budget < 0) return;
-      glm::dvec2 s;
-      if (model.dim == Dim::Two) {
-        s = cam.toScreen({l.p.x, l.p.y}) + glm::dvec2(l.offset);
-      } else {
-        const Projected pr = cam3.toScreen(l.p);
-        if (!pr.visible()) continue;
-        s = pr.screen + glm::dvec2(l.offset);
-      }
-      if (s.x < -200.0 || s.y < -50.0 || s.x > vp.x + 200.0 || s.y > vp.y + 50.0) continue;
-      const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-      const ImVec2 at(std::round(static_cast<float>(s.x) - 0.5f * size.x),
-                      std::round(static_cast<float>(s.y) - 0.5f * size.y));
-      for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
-        dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, l.text.c_str());
-      dl->AddText(at, packAbgr(l.colour), l.text.c_str());
-    }
+  // placed as the SVG places them: no two overlap, none sits on a marker
+  const DrawList* lists[] = {&view.structure(), &view.overlay()};
+  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, sceneProjection(model), vp,
+                                                     measureText, model.settings.drawScale())) {
+    const char* text = p.label->text.c_str();
+    const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
+                    std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));
+    if (p.place.leader)
+      dl->AddLine(
+          ImVec2(static_cast<float>(p.anchor.x), static_cast<float>(p.anchor.y)),
+          ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
+          packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+      dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
+    dl->AddText(at, packAbgr(p.label->colour), text);
+  }
 }
 
 }  // namespace convexloc::viewer

@@ -20,6 +20,10 @@ float rightPanelWidth(const Model& model, glm::dvec2 window);
 // the part of the window the scene has to itself (right of the panel when it shows)
 ScreenRect sceneArea(const Model& model, glm::dvec2 window);
 
+// fits the camera to the shape in the scene area, leaving room for the caption and the
+// floating legend; for `now` + 1.5 s a change of the legend's size fits again
+void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now);
+
 // finds the shape files in ui.assetDir
 void scanAssets(UiState& ui);
 

@@ -145,7 +145,9 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
   else
     ImGui::TextUnformatted(s.title.c_str());
   ImGui::SetWindowFontScale(1.0f);
-  if (!s.caption.empty()) ImGui::TextWrapped("%s", s.caption.c_str());
+  // a caption the scene shows in its own box (--caption) is not written twice
+  if (!s.caption.empty() && model.settings.caption.empty())
+    ImGui::TextWrapped("%s", s.caption.c_str());
   ImGui::PopTextWrapPos();
   const float band = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + 8.0f;
   ImGui::End();

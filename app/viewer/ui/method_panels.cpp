@@ -1,6 +1,8 @@
 // convexloc-viewer — the shared panel pieces that need no template.
 #include "ui/method_panels.hpp"
 
+#include <algorithm>
+
 namespace convexloc::viewer {
 
 std::string costText(const MethodInfo& info) {
@@ -19,11 +21,38 @@ void statsTable(const char* id, const std::vector<StatLine>& rows) {
   ImGui::EndTable();
 }
 
+void noResolutionRow() {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextDisabled("no resolution to set for this method");
+}
+
+namespace {
+
+// the bars of a histogram, drawn here (ImGui's own plot adds a tooltip line of its own)
+void histogramBars(const char* id, const std::vector<std::size_t>& histogram) {
+  const ImVec2 size(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton(id, size);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(p, ImVec2(p.x + size.x, p.y + size.y), ImGui::GetColorU32(ImGuiCol_FrameBg),
+                    ImGui::GetStyle().FrameRounding);
+  const std::size_t most = *std::max_element(histogram.begin(), histogram.end());
+  const float w = size.x / static_cast<float>(histogram.size()), pad = 0.12f * w;
+  for (std::size_t k = 0; k < histogram.size() && most > 0; ++k) {
+    const float h = (size.y - 4.0f) * static_cast<float>(histogram[k]) / static_cast<float>(most);
+    const float x = p.x + w * static_cast<float>(k);
+    dl->AddRectFilled(ImVec2(x + pad, p.y + size.y - 2.0f - h),
+                      ImVec2(x + w - pad, p.y + size.y - 2.0f),
+                      ImGui::GetColorU32(ImGuiCol_PlotHistogram));
+  }
+}
+
+}  // namespace
+
 void cellHistogram(const char* id, const std::vector<std::size_t>& histogram, const char* noun) {
-  std::vector<float> h(histogram.begin(), histogram.end());
-  ImGui::TextDisabled("cells by %s listed: 0, 1, ..., %zu+", noun, h.size() - 1);
-  ImGui::PlotHistogram(id, h.data(), static_cast<int>(h.size()), 0, nullptr, 0.0f, FLT_MAX,
-                       ImVec2(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f));
+  if (histogram.empty()) return;
+  ImGui::TextDisabled("cells by %s listed: 0, 1, ..., %zu+", noun, histogram.size() - 1);
+  histogramBars(id, histogram);
   if (!ImGui::IsItemHovered()) return;
   ImGui::BeginTooltip();
   for (std::size_t k = 0; k < histogram.size(); ++k)

@@ -71,6 +71,9 @@ void resolutionSlider(Scene& scene, const SliderText& text) {
     scene.setResolution(static_cast<std::uint32_t>(std::max(r, 1)));
 }
 
+// the resolution slider's row for a method without one, as high as the slider's
+void noResolutionRow();
+
 // === Compare all methods
 
 // the table of a comparison: ns per point (the fastest in the positive colour), build

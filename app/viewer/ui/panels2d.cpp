@@ -1,6 +1,7 @@
 // convexloc-viewer — the 2D panels.
 #include "ui/panels2d.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <imgui.h>
@@ -99,6 +100,8 @@ void methodPanel2D(Model& model, UiState& ui) {
   methodChoice(scene);
   if (scene.method() == Method2D::Uniform) resolutionSlider(scene, kUniformSlider);
   if (scene.method() == Method2D::Polar) resolutionSlider(scene, kPolarSlider);
+  // the row is kept for every method, so that the buttons below never move
+  if (scene.method() != Method2D::Uniform && scene.method() != Method2D::Polar) noResolutionRow();
   methodDetails(model, scene, statLines(scene), ui.compare2d, kMethodText2D);
 }
 
@@ -148,7 +151,11 @@ void legend2D(Model& model) {
   legendHeading(model, scene, s.edges, "edges");
   const Method2D m = scene.method();
   const std::size_t base = baseEdgesPerCell(m);
-  if (s.cells && model.settings.view2d.showTints) {
+  // only what is drawn: the tint's row when some cell is tinted
+  const bool tinted = std::any_of(scene.cells().begin(), scene.cells().end(), [&](const Cell2D& c) {
+    return c.edges.size() > base || c.edges.size() > kCrowdedCell;
+  });
+  if (tinted && model.settings.view2d.showTints) {
     swatchBox(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f));
     ImGui::Text("cell listing %zu+ edges", base + 1);
     if (s.crowdedCells) {

@@ -88,6 +88,8 @@ void methodPanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   methodChoice(scene);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
+  // the row is kept for every method, so that the buttons below never move
+  if (scene.method() != Method3D::Cubemap) noResolutionRow();
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
 }
 
@@ -140,7 +142,14 @@ void legend3D(Model& model) {
   const Palette& pal = paletteFor(model.settings.theme);
   const Stats3D& s = scene.stats();
   legendHeading(model, scene, s.faces, "faces");
-  if (s.cells && model.settings.view3d.showCube && model.settings.view3d.showTints) {
+  // only what is drawn: the tint's row when some cell is tinted, the section's when it is there
+  const bool tinted = std::any_of(scene.cells().begin(), scene.cells().end(), [](const Cell3D& c) {
+    return c.faces.size() > kBaseFacesPerCell || c.faces.size() > kCrowdedCell3D;
+  });
+  const auto& cut = scene.section().classes;
+  const bool section =
+      std::any_of(cut.begin(), cut.end(), [](Location l) { return l != Location::Outside; });
+  if (tinted && model.settings.view3d.showCube && model.settings.view3d.showTints) {
     swatchBox(cellTint(pal, 2, kBaseFacesPerCell, false), withAlpha(pal.extraEdges, 0.8f));
     ImGui::Text("cell listing 2+ faces");
     if (s.crowdedCells) {
@@ -160,7 +169,7 @@ void legend3D(Model& model) {
     swatchBox(withAlpha(colour, 0.25f), colour);
     ImGui::Text("cell %td: its pyramid lists %zu face%s", k, faces, faces == 1 ? "" : "s");
   }
-  if (model.settings.view3d.showSlice) {
+  if (model.settings.view3d.showSlice && section) {
     swatchBox(withAlpha(pal.inside, 0.45f), withAlpha(pal.inside, 0.8f));
     ImGui::Text("section: inside, per core");
   }

@@ -123,16 +123,18 @@ StyleKeeper::StyleKeeper(const Settings& settings, float dpi)
   applyStyle(theme_, scale_);
 }
 
-void StyleKeeper::update(Settings& settings, float& pendingFontScale) {
+bool StyleKeeper::update(Settings& settings, float& pendingFontScale) {
+  const bool resized = pendingFontScale > 0.0f && pendingFontScale != settings.fontScale;
   if (pendingFontScale > 0.0f) {
     settings.fontScale = pendingFontScale;
     pendingFontScale = 0.0f;
     loadFont(kBaseFontPixels * settings.fontScale * dpi_, true);
   }
-  if (theme_ == settings.theme && scale_ == settings.fontScale) return;
+  if (theme_ == settings.theme && scale_ == settings.fontScale) return resized;
   theme_ = settings.theme;
   scale_ = settings.fontScale;
   applyStyle(theme_, scale_);
+  return resized;
 }
 
 }  // namespace convexloc::viewer

@@ -20,8 +20,9 @@ class StyleKeeper {
  public:
   // loads the font and applies the style of `settings`
   StyleKeeper(const Settings& settings, float dpi);
-  // takes a font scale the View panel asked for (> 0), and restyles after any change
-  void update(Settings& settings, float& pendingFontScale);
+  // Takes a font scale the View panel asked for (> 0), and restyles after any change.
+  // Returns true when the text size changed.
+  bool update(Settings& settings, float& pendingFontScale);
 
  private:
   float dpi_;

@@ -29,6 +29,16 @@ struct UiState {
   bool reloadShaders = false;
   float pendingFontScale = 0.0f;  // > 0: rebuild the font at this scale
   bool quit = false;
+  // presentation and vector figures
+  bool svgRequested = false;
+  std::string exportDir;          // where F12 and V write; empty: the working directory
+  char exportDirEdit[1024] = "";  // the View panel's box for it
+  bool legendMoved = false;       // the user dragged the legend: it stays where put
+  float legendPos[2] = {0.0f, 0.0f};
+  float legendSize[2] = {0.0f, 0.0f};  // the floating legend's size in the last frame
+  float captionHeight = 0.0f;          // the caption box's height in the last frame
+  std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
+  double refitUntil = 0.0;             // until then a change of the legend's size refits the scene
 
   // widget state
   char path[1024] = "";

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "logic/label_layout.hpp"
 #include "logic/presets.hpp"
 
 namespace convexloc::viewer {
@@ -118,11 +119,16 @@ void fileOpen(Model& model, UiState& ui, const char* hint) {
 
 void gallery(Model& model, bool solid) {
   const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
-  int column = 0;
+  // two to a row; a title too long for half the width gets a row of its own
+  bool rowOpen = false;
   for (const Preset& p : presets()) {
     if (p.solid != solid) continue;
-    if (column++ % 2) ImGui::SameLine();
-    if (ImGui::Button(std::string(p.title).c_str(), ImVec2(half, 0.0f))) model.applyPreset(p.name);
+    const std::string title(p.title);
+    const bool fits =
+        ImGui::CalcTextSize(title.c_str()).x + 2.0f * ImGui::GetStyle().FramePadding.x <= half;
+    if (rowOpen && fits) ImGui::SameLine();
+    rowOpen = fits && !rowOpen;
+    if (ImGui::Button(title.c_str(), ImVec2(fits ? half : -1.0f, 0.0f))) model.applyPreset(p.name);
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
@@ -131,6 +137,16 @@ void gallery(Model& model, bool solid) {
       ImGui::EndTooltip();
     }
   }
+}
+
+void textAtSpaces(std::string_view text) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  const auto measure = [](std::string_view t) {
+    const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
+    return glm::dvec2(v.x, v.y);
+  };
+  for (const std::string& line : breakAtSpaces(text, width, measure))
+    ImGui::TextUnformatted(line.c_str());
 }
 
 void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour) {
@@ -149,7 +165,7 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
     else if (l.kind == TraceLine::Heading)
       c = pal.textMuted;
     ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-    ImGui::TextWrapped("%s", l.text.c_str());
+    textAtSpaces(l.text);
     ImGui::PopStyleColor();
   }
   if (lines.size() > kMaxLines) {

@@ -40,6 +40,8 @@ void toggleGrid(std::string_view labels, std::initializer_list<bool*> values);
 void fileOpen(Model& model, UiState& ui, const char* hint);
 // the degenerate gallery's buttons for polygons or for polyhedra
 void gallery(Model& model, bool solid);
+// text wrapped to the panel at spaces only, so that a number never splits across lines
+void textAtSpaces(std::string_view text);
 // a trace, one coloured line per step
 void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour);
 // the class legend rows (disc, name, count) and the counts' visibility check boxes
@@ -65,7 +67,12 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
     }
   }
   if (ImGui::RadioButton("uniform in the box", !ui.sprayNear)) ui.sprayNear = false;
-  ImGui::SameLine();
+  // side by side when both fit (with the help mark), else one under the other
+  const ImGuiStyle& st = ImGui::GetStyle();
+  if (ImGui::CalcTextSize("uniform in the box near the boundary (?)").x +
+          2.0f * ImGui::GetFrameHeight() + 4.0f * st.ItemSpacing.x <=
+      ImGui::GetContentRegionAvail().x)
+    ImGui::SameLine();
   if (ImGui::RadioButton("near the boundary", ui.sprayNear)) ui.sprayNear = true;
   help(
       "Uniform: in the bounding box grown by 10% on each side. Near the boundary: core's hard "

@@ -1,0 +1,132 @@
+// convexloc-viewer — label placement.
+#include "logic/label_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace convexloc::viewer {
+namespace {
+
+// the 8 directions tried around an anchor: right first, then counter-clockwise on screen
+constexpr glm::dvec2 kDirections[8] = {{1, 0},  {1, -1}, {0, -1}, {-1, -1},
+                                       {-1, 0}, {-1, 1}, {0, 1},  {1, 1}};
+// rings of candidates, and the extra rings an essential label may use
+constexpr int kRings = 3;
+constexpr int kEssentialRings = 3;
+// the gap between an anchor and its label's box on the first ring (pixels, at scale 1)
+constexpr double kGap = 5.0;
+constexpr double kRingStep = 9.0;
+// labels keep this many pixels apart
+constexpr double kPad = 3.0;
+
+// the box of `size` put in direction `d` from the anchor, `gap` pixels clear of it
+LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double gap) {
+  LabelPlacement p;
+  p.size = size;
+  p.centre = anchor + glm::dvec2(d.x * (0.5 * size.x + gap), d.y * (0.5 * size.y + gap));
+  return p;
+}
+
+// true when the box reaches past the edges of a window of `size` (none when size is 0)
+bool outside(const LabelPlacement& c, glm::dvec2 size) {
+  if (size.x <= 0.0 || size.y <= 0.0) return false;
+  const glm::dvec2 lo = c.centre - 0.5 * c.size, hi = c.centre + 0.5 * c.size;
+  return lo.x < 0.0 || lo.y < 0.0 || hi.x > size.x || hi.y > size.y;
+}
+
+// how many placed labels and markers the candidate runs into (reaching out of the window
+// counts as one)
+int conflicts(const LabelPlacement& c, const std::vector<LabelPlacement>& placed,
+              std::span<const PixelDisc> markers, glm::dvec2 window, bool stopAtFirst) {
+  int n = outside(c, window) ? 1 : 0;
+  if (n && stopAtFirst) return n;
+  for (const LabelPlacement& p : placed)
+    if (p.shown && boxesOverlap(c, p, kPad) && (++n, stopAtFirst)) return n;
+  for (const PixelDisc& m : markers)
+    if (boxCoversDisc(c, m) && (++n, stopAtFirst)) return n;
+  return n;
+}
+
+}  // namespace
+
+bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad) {
+  const glm::dvec2 reach = 0.5 * (a.size + b.size) + pad;
+  return std::abs(a.centre.x - b.centre.x) < reach.x && std::abs(a.centre.y - b.centre.y) < reach.y;
+}
+
+bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc) {
+  const glm::dvec2 lo = box.centre - 0.5 * box.size, hi = box.centre + 0.5 * box.size;
+  const glm::dvec2 nearest = glm::clamp(disc.centre, lo, hi);
+  const glm::dvec2 d = disc.centre - nearest;
+  return glm::dot(d, d) < disc.radius * disc.radius;
+}
+
+std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
+                                        std::span<const PixelDisc> markers,
+                                        const MeasureText& measure, double scale,
+                                        glm::dvec2 window) {
+  std::vector<LabelPlacement> placed(labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const LabelRequest& l = labels[i];
+    const glm::dvec2 size = measure(l.text);
+    LabelPlacement asked;
+    asked.size = size;
+    asked.centre = l.anchor + l.offset * scale;
+    std::vector<LabelPlacement> candidates{asked};
+    for (int ring = 0; ring < kRings; ++ring)
+      for (glm::dvec2 d : kDirections)
+        candidates.push_back(around(l.anchor, size, d, (kGap + kRingStep * ring) * scale));
+    for (const LabelPlacement& c : candidates)
+      if (conflicts(c, placed, markers, window, true) == 0) {
+        placed[i] = c;
+        placed[i].shown = true;
+        break;
+      }
+    if (placed[i].shown || !l.essential) continue;
+    // essential: the farther candidate with the fewest conflicts, joined by a leader line
+    int best = std::numeric_limits<int>::max();
+    for (int ring = kRings; ring < kRings + kEssentialRings; ++ring)
+      for (glm::dvec2 d : kDirections) {
+        const LabelPlacement c = around(l.anchor, size, d, (kGap + kRingStep * 2 * ring) * scale);
+        const int n = conflicts(c, placed, markers, window, false);
+        if (n < best) {
+          best = n;
+          placed[i] = c;
+        }
+      }
+    placed[i].shown = true;
+    placed[i].leader = true;
+  }
+  return placed;
+}
+
+std::vector<std::string> breakAtSpaces(std::string_view text, double width,
+                                       const MeasureText& measure) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t nl = std::min(text.find('\n', start), text.size());
+    const std::string_view para = text.substr(start, nl - start);
+    std::string line;
+    std::size_t at = 0;
+    while (at < para.size()) {
+      std::size_t end = para.find(' ', at);
+      if (end == std::string_view::npos) end = para.size();
+      const std::string_view word = para.substr(at, end - at);
+      const std::string joined = line.empty() ? std::string(word) : line + " " + std::string(word);
+      if (!line.empty() && measure(joined).x > width) {
+        lines.push_back(line);
+        line = std::string(word);
+      } else {
+        line = joined;
+      }
+      at = end + 1;
+    }
+    lines.push_back(line);
+    start = nl + 1;
+  }
+  return lines;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,66 @@
+// convexloc-viewer — where the scene's labels go: each label takes the first of a few
+// candidate positions around its anchor that overlaps no label placed before it and no
+// marker, so that numbers never run into each other ("9 10") or sit on the mark they name.
+// GL-free: the window's text measure comes in as a callback, so the renderer's labels and
+// the SVG's are placed by the same rule.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace convexloc::viewer {
+
+// a label to place: its anchor (window pixels), the offset its builder asked for (pixels,
+// before scaling) and whether it must be shown even where every candidate is taken
+struct LabelRequest {
+  glm::dvec2 anchor{0.0};
+  glm::dvec2 offset{0.0};
+  std::string_view text;
+  bool essential = false;
+};
+
+// a disc of window pixels no label may cover (a marker)
+struct PixelDisc {
+  glm::dvec2 centre{0.0};
+  double radius = 0.0;
+};
+
+// where a label went: the middle of its text box; `shown` false when it was dropped;
+// `leader` when an essential label was pushed away and needs a line to its anchor
+struct LabelPlacement {
+  bool shown = false;
+  glm::dvec2 centre{0.0};
+  glm::dvec2 size{0.0};
+  bool leader = false;
+};
+
+// the size of a text in window pixels
+using MeasureText = std::function<glm::dvec2(std::string_view)>;
+
+// Places the labels in order (earlier ones win a contested spot): the asked offset times
+// `scale` first, then 8 directions around the anchor at growing distances. A label whose
+// every candidate overlaps a placed label or a marker is dropped, unless essential: then
+// it goes to the least crowded candidate farther out with a leader line. With a `window`
+// size (> 0), a candidate reaching past the window's edges is not taken. Returns one
+// placement per request, in order.
+std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
+                                        std::span<const PixelDisc> markers,
+                                        const MeasureText& measure, double scale = 1.0,
+                                        glm::dvec2 window = {0.0, 0.0});
+
+// true when the two placed boxes overlap (the gap between them below `pad` pixels)
+bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad = 0.0);
+// true when the placed box covers part of the disc
+bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc);
+
+// Breaks `text` into lines no wider than `width` pixels at spaces only, so that a number
+// ("-0.2791048542272344") is never split; a word wider than the line gets a line alone.
+std::vector<std::string> breakAtSpaces(std::string_view text, double width,
+                                       const MeasureText& measure);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,400 @@
+// convexloc-viewer — the SVG writer.
+#include "logic/svg_writer.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "logic/text.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// a number for an attribute: two decimals are a hundredth of a pixel
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", std::abs(v) < 5e-3 ? 0.0 : v);
+  return buf;
+}
+
+// "#rrggbb"
+std::string rgb(Rgba c) {
+  auto byte = [](float x) {
+    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255));
+  };
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return buf;
+}
+
+// ` NAME="#rrggbb"`, and its opacity when not opaque
+std::string paint(const char* name, Rgba c) {
+  std::string s = std::string(" ") + name + "=\"" + rgb(c) + "\"";
+  if (c.a < 0.999f) s += std::string(" ") + name + "-opacity=\"" + num(c.a) + "\"";
+  return s;
+}
+
+// one element of the picture and the depth it is sorted by (3D)
+struct Item {
+  double depth = 0.0;
+  std::string svg;
+};
+
+// the parts of the picture, in the renderer's order
+struct Parts {
+  std::vector<Item> fills, lowPoints, segments, highPoints, markers;
+};
+
+// the screen points of a triangle or polygon, or nothing when a corner is behind the eye
+bool projectAll(const ScreenProjection& project, std::span<const glm::dvec3> world,
+                std::vector<glm::dvec3>& out) {
+  out.clear();
+  for (const glm::dvec3& w : world) {
+    const std::optional<glm::dvec3> s = project(w);
+    if (!s) return false;
+    out.push_back(*s);
+  }
+  return true;
+}
+
+// true when the screen points' box misses the viewport grown by `margin`
+bool offScreen(std::span<const glm::dvec3> pts, glm::dvec2 size, double margin) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : pts) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  return hi.x < -margin || hi.y < -margin || lo.x > size.x + margin || lo.y > size.y + margin;
+}
+
+// the mean depth of screen points
+double meanDepth(std::span<const glm::dvec3> pts) {
+  double d = 0.0;
+  for (const glm::dvec3& p : pts) d += p.z;
+  return pts.empty() ? 0.0 : d / static_cast<double>(pts.size());
+}
+
+// "x,y x,y ..." for a polygon's points attribute
+std::string pointList(std::span<const glm::dvec3> pts) {
+  std::string s;
+  for (const glm::dvec3& p : pts) {
+    if (!s.empty()) s += ' ';
+    s += num(p.x);
+    s += ',';
+    s += num(p.y);
+  }
+  return s;
+}
+
+// a fill's colour, lit by the headlight like the fill shader does
+Rgba litColour(const FillVertex& v, const std::optional<glm::dvec3>& eye, glm::dvec3 middle) {
+  Rgba c = v.colour;
+  if (!eye || glm::dot(v.normal, v.normal) <= 0.0f) return c;
+  const glm::dvec3 toEye = *eye - middle;
+  const double len = glm::length(toEye);
+  const double facing =
+      len > 0.0 ? std::abs(glm::dot(glm::normalize(glm::dvec3(v.normal)), toEye / len)) : 1.0;
+  const auto k = static_cast<float>(0.45 + 0.55 * facing);
+  return {c.r * k, c.g * k, c.b * k, c.a};
+}
+
+// Triangle fans of one colour (the draw lists' convex outlines) joined back into one
+// polygon each: triangle t continues the fan when it shares the first corner and the
+// previous triangle's last edge.
+void addFills(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  const auto& f = list.fills;
+  std::vector<glm::dvec3> world, screen;
+  for (std::size_t t = 0; t + 2 < f.size();) {
+    world = {f[t].p, f[t + 1].p, f[t + 2].p};
+    std::size_t next = t + 3;
+    while (next + 2 < f.size() && f[next].p == f[t].p && f[next + 1].p == world.back() &&
+           f[next].colour == f[t].colour && f[next].normal == f[t].normal) {
+      world.push_back(f[next + 2].p);
+      next += 3;
+    }
+    glm::dvec3 middle(0.0);
+    for (const glm::dvec3& w : world) middle += w / static_cast<double>(world.size());
+    if (projectAll(s.project, world, screen) && !offScreen(screen, s.size, 2.0))
+      out.push_back({meanDepth(screen), "<polygon points=\"" + pointList(screen) + "\"" +
+                                            paint("fill", litColour(f[t], s.eye, middle)) + "/>"});
+    t = next;
+  }
+}
+
+// Cuts the screen segment to the viewport grown by `m` (Liang-Barsky); false when it misses.
+bool clipToView(glm::dvec2& a, glm::dvec2& b, glm::dvec2 size, double m) {
+  double t0 = 0.0, t1 = 1.0;
+  const glm::dvec2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x + m, size.x + m - a.x, a.y + m, size.y + m - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double r = q[i] / p[i];
+    if (p[i] < 0.0)
+      t0 = std::max(t0, r);
+    else
+      t1 = std::min(t1, r);
+    if (t0 > t1) return false;
+  }
+  const glm::dvec2 a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+void addSegments(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  for (const Segment& g : list.segments) {
+    const std::optional<glm::dvec3> a = s.project(g.a), b = s.project(g.b);
+    if (!a || !b) continue;
+    glm::dvec2 p(*a), q(*b);
+    if (!clipToView(p, q, s.size, 10.0)) continue;
+    std::string e = "<line x1=\"" + num(p.x) + "\" y1=\"" + num(p.y) + "\" x2=\"" + num(q.x) +
+                    "\" y2=\"" + num(q.y) + "\"" + paint("stroke", g.colour) + " stroke-width=\"" +
+                    num(g.width * s.scale) + "\"";
+    if (g.dash > 0.0f) e += " stroke-dasharray=\"" + num(g.dash * s.scale) + "\"";
+    out.push_back({0.5 * (a->z + b->z), e + "/>"});
+  }
+}
+
+// a marker of each shape, as the marker shader draws it: a disc of the marker's diameter,
+// a ring inside its rim, the ring crossed, a square
+std::string markerSvg(glm::dvec2 c, double size, const Marker& m) {
+  const double r = std::max(0.5 * size, 0.5);
+  const std::string at = " cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\"";
+  const std::string ring = "<circle" + at + " r=\"" + num(std::max(r - 1.0, 0.5)) + "\"";
+  switch (m.shape) {
+    case MarkerShape::Disc:
+      return "<circle" + at + " r=\"" + num(r) + "\"" + paint("fill", m.colour) + "/>";
+    case MarkerShape::Ring:
+      return ring + " fill=\"none\"" + paint("stroke", m.colour) + " stroke-width=\"2\"/>";
+    case MarkerShape::Cross: {
+      const double b = std::max(r - 2.0, 0.5);
+      return "<g" + paint("stroke", m.colour) + " fill=\"none\" stroke-width=\"2\">" + ring +
+             "/><path d=\"M" + num(c.x - b) + " " + num(c.y) + "H" + num(c.x + b) + "M" + num(c.x) +
+             " " + num(c.y - b) + "V" + num(c.y + b) + "\"/></g>";
+    }
+    case MarkerShape::Square: break;
+  }
+  return "<rect x=\"" + num(c.x - r) + "\" y=\"" + num(c.y - r) + "\" width=\"" + num(2 * r) +
+         "\" height=\"" + num(2 * r) + "\"" + paint("fill", m.colour) + "/>";
+}
+
+void addMarkers(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  for (const Marker& m : list.markers) {
+    const std::optional<glm::dvec3> p = s.project(m.p);
+    if (!p || offScreen(std::span(&*p, 1), s.size, m.size * s.scale)) continue;
+    out.push_back({p->z, markerSvg(glm::dvec2(*p), m.size * s.scale, m)});
+  }
+}
+
+// every k-th visible point, so that at most maxPoints are written; the stride k
+std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
+  const SvgPoints& sp = s.points;
+  const std::size_t n = std::min(sp.points.size(), sp.classes.size());
+  visible = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    visible += (sp.visibleMask >> static_cast<unsigned>(sp.classes[i])) & 1u;
+  const std::size_t stride =
+      std::max<std::size_t>(1, (visible + s.maxPoints - 1) / std::max<std::size_t>(s.maxPoints, 1));
+  std::size_t seen = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned>(sp.classes[i]);
+    if (!((sp.visibleMask >> c) & 1u) || seen++ % stride != 0) continue;
+    const std::optional<glm::dvec3> p = s.project(sp.points[i]);
+    if (!p || offScreen(std::span(&*p, 1), s.size, 4.0)) continue;
+    const bool boundary = sp.classes[i] == Location::Boundary;
+    const double r = 0.5 * sp.size * (boundary ? 1.7 : 1.0);
+    std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
+                    "\"" + paint("fill", sp.colours[c]);
+    if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
+    (boundary ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
+  }
+  return stride;
+}
+
+// the items in the order written: 2D in the renderer's layer order; 3D back to front
+void writeItems(std::string& out, std::vector<Item> items, bool sorted) {
+  if (sorted)
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Item& a, const Item& b) { return a.depth > b.depth; });
+  for (const Item& i : items) out += "  " + i.svg + "\n";
+}
+
+// the base layers (fills, points, segments, markers) and the overlay over them
+void writeScene(const SvgScene& s, std::string& out, std::size_t& visible, std::size_t& stride) {
+  Parts base;
+  for (const DrawList* l : s.base) {
+    addFills(s, *l, base.fills);
+    addSegments(s, *l, base.segments);
+    addMarkers(s, *l, base.markers);
+  }
+  stride = addPoints(s, base, visible);
+  out += "<g id=\"scene\" stroke-linecap=\"butt\">\n";
+  if (s.depthSorted) {
+    std::vector<Item> all = std::move(base.fills);
+    for (auto* part : {&base.lowPoints, &base.segments, &base.highPoints})
+      all.insert(all.end(), part->begin(), part->end());
+    writeItems(out, std::move(all), true);
+  } else {
+    for (auto* part : {&base.fills, &base.lowPoints, &base.segments, &base.highPoints})
+      writeItems(out, std::move(*part), false);
+  }
+  writeItems(out, std::move(base.markers), false);
+  Parts over;
+  for (const DrawList* l : s.overlay) {
+    addFills(s, *l, over.fills);
+    addSegments(s, *l, over.segments);
+    addMarkers(s, *l, over.markers);
+  }
+  for (auto* part : {&over.fills, &over.segments, &over.markers})
+    writeItems(out, std::move(*part), false);
+  out += "</g>\n";
+}
+
+// core's cells and the shape's edges, unpainted, for selecting in an editor
+void writeOutlines(const SvgScene& s, std::string& out) {
+  std::vector<glm::dvec3> screen;
+  out += "<g id=\"cells\" fill=\"none\" stroke=\"none\">\n";
+  for (std::size_t k = 0; k < s.cells.size(); ++k)
+    if (projectAll(s.project, s.cells[k], screen))
+      out += "  <polygon class=\"cell\" data-cell=\"" + std::to_string(k) + "\" points=\"" +
+             pointList(screen) + "\"/>\n";
+  out += "</g>\n<g id=\"edges\" fill=\"none\" stroke=\"none\">\n";
+  for (std::size_t e = 0; e < s.edges.size(); ++e) {
+    const auto a = s.project(s.edges[e].first), b = s.project(s.edges[e].second);
+    if (!a || !b) continue;
+    out += "  <line class=\"edge\" data-edge=\"" + std::to_string(e) + "\" x1=\"" + num(a->x) +
+           "\" y1=\"" + num(a->y) + "\" x2=\"" + num(b->x) + "\" y2=\"" + num(b->y) + "\"/>\n";
+  }
+  out += "</g>\n";
+}
+
+// `text` centred at `c`, with a halo of the background behind it
+std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char* cls = "label") {
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(c.x) + "\" y=\"" + num(c.y) + "\"" +
+         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+}
+
+void writeLabels(const SvgScene& s, std::string& out) {
+  std::vector<const DrawList*> lists = s.base;
+  lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
+  const auto placed =
+      layoutSceneLabels(lists, s.base.size(), s.project, s.size, s.measure, s.scale);
+  out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
+         num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
+         paint("stroke", withAlpha(s.background, 0.85f)) +
+         " stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
+  for (const PlacedSceneLabel& p : placed) {
+    if (p.place.leader)
+      out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
+             num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
+             paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
+    out += "  " + textSvg(p.place.centre, p.label->text, p.label->colour) + "\n";
+  }
+  out += "</g>\n";
+}
+
+// the thinning note and the caption, along the bottom
+void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride) {
+  if (stride > 1) {
+    const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
+                             " of " + grouped(visible) + " drawn";
+    out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
+           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
+           "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
+  }
+  if (s.caption.empty()) return;
+  const double px = 1.6 * s.fontPixels;
+  out += "<text class=\"caption\" x=\"" + num(0.5 * s.size.x) + "\" y=\"" +
+         num(s.size.y - 1.2 * px) + "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" +
+         num(px) + "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" +
+         xmlEscape(s.caption) + "</text>\n";
+}
+
+}  // namespace
+
+std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
+                                                std::size_t essentialFrom,
+                                                const ScreenProjection& project,
+                                                glm::dvec2 viewport, const MeasureText& measure,
+                                                double scale, std::size_t budget) {
+  std::vector<PlacedSceneLabel> shown;
+  std::vector<LabelRequest> requests;
+  std::vector<PixelDisc> markers;
+  // essential labels first, so that they win their spots
+  for (std::size_t pass = 0; pass < 2; ++pass)
+    for (std::size_t k = 0; k < lists.size(); ++k) {
+      if ((k >= essentialFrom) != (pass == 0)) continue;
+      for (const Label& l : lists[k]->labels) {
+        if (shown.size() >= budget) break;
+        const std::optional<glm::dvec3> s = project(l.p);
+        if (!s) continue;
+        const glm::dvec2 at(*s);
+        if (at.x < -200.0 || at.y < -50.0 || at.x > viewport.x + 200.0 || at.y > viewport.y + 50.0)
+          continue;
+        shown.push_back({&l, at, {}});
+        requests.push_back({at, glm::dvec2(l.offset), l.text, pass == 0});
+      }
+    }
+  for (const DrawList* list : lists)
+    for (const Marker& m : list->markers)
+      if (const std::optional<glm::dvec3> s = project(m.p))
+        markers.push_back({glm::dvec2(*s), 0.5 * m.size * scale});
+  const std::vector<LabelPlacement> placed =
+      placeLabels(requests, markers, measure, scale, viewport);
+  std::vector<PlacedSceneLabel> out;
+  for (std::size_t i = 0; i < shown.size(); ++i)
+    if (placed[i].shown) out.push_back({shown[i].label, shown[i].anchor, placed[i]});
+  return out;
+}
+
+std::string xmlEscape(std::string_view text) {
+  std::string s;
+  for (char c : text) {
+    switch (c) {
+      case '&': s += "&amp;"; break;
+      case '<': s += "&lt;"; break;
+      case '>': s += "&gt;"; break;
+      case '"': s += "&quot;"; break;
+      case '\'': s += "&apos;"; break;
+      default:
+        // control characters are not allowed in XML 1.0
+        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') s += c;
+    }
+  }
+  return s;
+}
+
+std::string sceneSvg(const SvgScene& s) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(s.size.x) + "\" height=\"" +
+         num(s.size.y) + "\" viewBox=\"0 0 " + num(s.size.x) + " " + num(s.size.y) + "\">\n";
+  out += "<!-- convexloc-viewer: the scene as drawn, in window pixels -->\n";
+  out += "<rect id=\"background\" width=\"100%\" height=\"100%\"" + paint("fill", s.background) +
+         "/>\n";
+  writeOutlines(s, out);
+  std::size_t visible = 0, stride = 1;
+  writeScene(s, out, visible, stride);
+  writeLabels(s, out);
+  writeNotes(s, out, visible, stride);
+  out += "</svg>\n";
+  return out;
+}
+
+bool writeTextFile(const std::string& path, const std::string& text, std::string& error) {
+  std::ofstream f(path, std::ios::binary);
+  if (f) f << text;
+  if (!f || !f.flush()) {
+    error = path + ": cannot be written (" + std::strerror(errno) + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace convexloc::viewer

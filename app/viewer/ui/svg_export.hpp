@@ -1,0 +1,25 @@
+// convexloc-viewer — the scene shown, written as an SVG file (the picture's GL-free part
+// is logic/svg_writer; this gathers the scene view's draw lists, the camera and the text
+// measure of the window's font).
+#pragma once
+
+#include <string>
+
+#include "gl/scene_view.hpp"
+#include "logic/model.hpp"
+
+#include "logic/svg_writer.hpp"
+
+namespace convexloc::viewer {
+
+// world to window pixels (and depth, in 3D) by the camera of the scene shown
+ScreenProjection sceneProjection(const Model& model);
+// the width and height of a text in the window's current font
+glm::dvec2 measureText(std::string_view text);
+
+// Writes the scene as the window shows it (the view synced for this frame) to `path` as
+// SVG. Returns false and sets `error` (the path and why) when it cannot be written.
+bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
+                   std::string& error);
+
+}  // namespace convexloc::viewer

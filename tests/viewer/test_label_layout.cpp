@@ -1,0 +1,107 @@
+// Label placement: placed labels never overlap each other or a marker; text breaks at spaces.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "logic/label_layout.hpp"
+
+namespace cv = convexloc::viewer;
+
+namespace {
+
+// a monospaced measure: 7 pixels per character, 14 high
+glm::dvec2 mono(std::string_view t) {
+  return {7.0 * static_cast<double>(t.size()), 14.0};
+}
+
+}  // namespace
+
+TEST(LabelLayout, CrowdedRandomLabelsNeverOverlapOrCoverAMarker) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> x(0.0, 600.0), y(0.0, 400.0);
+  std::vector<std::string> texts;
+  for (int i = 0; i < 300; ++i) texts.push_back(std::to_string(i * 37 % 1000));
+  std::vector<cv::LabelRequest> labels;
+  std::vector<cv::PixelDisc> markers;
+  for (int i = 0; i < 300; ++i) labels.push_back({{x(rng), y(rng)}, {8.0, -8.0}, texts[i], false});
+  for (int i = 0; i < 80; ++i) markers.push_back({{x(rng), y(rng)}, 5.0});
+  const auto placed = cv::placeLabels(labels, markers, mono, 1.5);
+  ASSERT_EQ(placed.size(), labels.size());
+  std::size_t shown = 0;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    if (!placed[i].shown) continue;
+    ++shown;
+    for (std::size_t j = i + 1; j < placed.size(); ++j)
+      EXPECT_FALSE(placed[j].shown && cv::boxesOverlap(placed[i], placed[j])) << i << " " << j;
+    for (const cv::PixelDisc& m : markers) EXPECT_FALSE(cv::boxCoversDisc(placed[i], m)) << i;
+  }
+  // crowded, but most find a place
+  EXPECT_GT(shown, 150u);
+  EXPECT_LT(shown, labels.size());
+}
+
+TEST(LabelLayout, AFreeLabelKeepsItsOffsetAndAMarkedOneMovesOff) {
+  // "x_T" asked onto its own cross: it moves off the marker
+  const std::vector<cv::LabelRequest> labels{{{100.0, 100.0}, {0.0, 0.0}, "x_T", false},
+                                             {{300.0, 100.0}, {10.0, 0.0}, "9", false}};
+  const std::vector<cv::PixelDisc> markers{{{100.0, 100.0}, 8.0}};
+  const auto placed = cv::placeLabels(labels, markers, mono, 1.0);
+  ASSERT_TRUE(placed[0].shown && placed[1].shown);
+  EXPECT_FALSE(cv::boxCoversDisc(placed[0], markers[0]));
+  EXPECT_EQ(placed[1].centre, glm::dvec2(310.0, 100.0));
+  EXPECT_FALSE(placed[1].leader);
+}
+
+TEST(LabelLayout, NeighbouringNumbersDoNotRunTogether) {
+  // vertices 9 and 10 a few pixels apart, each asking for the same offset
+  const std::vector<cv::LabelRequest> labels{{{200.0, 200.0}, {0.0, 12.0}, "9", false},
+                                             {{212.0, 201.0}, {0.0, 12.0}, "10", false},
+                                             {{205.0, 190.0}, {12.0, 0.0}, "135", false}};
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0);
+  for (std::size_t i = 0; i < placed.size(); ++i)
+    for (std::size_t j = i + 1; j < placed.size(); ++j)
+      EXPECT_FALSE(placed[i].shown && placed[j].shown && cv::boxesOverlap(placed[i], placed[j]));
+  EXPECT_TRUE(placed[0].shown);
+  EXPECT_TRUE(placed[1].shown);
+}
+
+TEST(LabelLayout, AnEssentialLabelIsShownWithALeaderWhenBoxedIn) {
+  // a label whose every near candidate is covered by markers
+  std::vector<cv::PixelDisc> markers;
+  for (int dx = -60; dx <= 60; dx += 6)
+    for (int dy = -40; dy <= 40; dy += 6) markers.push_back({{100.0 + dx, 100.0 + dy}, 4.0});
+  const std::vector<cv::LabelRequest> labels{{{100.0, 100.0}, {0.0, 0.0}, "outside", true},
+                                             {{100.0, 100.0}, {0.0, 0.0}, "dropped", false}};
+  const auto placed = cv::placeLabels(labels, markers, mono, 1.0);
+  EXPECT_TRUE(placed[0].shown);
+  EXPECT_TRUE(placed[0].leader);
+  EXPECT_FALSE(placed[1].shown);
+}
+
+TEST(LabelLayout, LinesBreakAtSpacesNeverInsideANumber) {
+  const std::string text = "centre x_T = (0.02793342314053292, -0.5042585326694533) in octant 1";
+  const auto lines = cv::breakAtSpaces(text, 7.0 * 24, mono);
+  ASSERT_GT(lines.size(), 2u);
+  std::string joined;
+  for (const std::string& l : lines) {
+    EXPECT_TRUE(l.size() <= 24 || l.find(' ') == std::string::npos) << l;
+    joined += (joined.empty() ? "" : " ") + l;
+  }
+  EXPECT_EQ(joined, text);
+  bool whole = false;
+  for (const std::string& l : lines) whole |= l.find("-0.5042585326694533)") != std::string::npos;
+  EXPECT_TRUE(whole);
+  // line breaks in the text are kept
+  EXPECT_EQ(cv::breakAtSpaces("a\nb", 1000.0, mono).size(), 2u);
+}
+
+TEST(LabelLayout, LabelsStayInsideTheWindow) {
+  // asked to the left of an anchor at the window's left edge: it goes right instead
+  const std::vector<cv::LabelRequest> labels{{{4.0, 50.0}, {-30.0, 0.0}, "octant 4", false}};
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, {200.0, 100.0});
+  ASSERT_TRUE(placed[0].shown);
+  EXPECT_GE(placed[0].centre.x - 0.5 * placed[0].size.x, 0.0);
+  EXPECT_LE(placed[0].centre.x + 0.5 * placed[0].size.x, 200.0);
+}

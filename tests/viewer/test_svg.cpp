@@ -1,0 +1,195 @@
+// The SVG writer: well-formed XML, one cell polygon per core cell and one edge line per
+// polygon edge, labels escaped, a heavy spray thinned and said so, 3D back to front.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "convexloc/generate2d.hpp"
+#include "logic/camera2d.hpp"
+#include "logic/scene2d.hpp"
+#include "logic/structure2d.hpp"
+#include "logic/svg_writer.hpp"
+
+namespace cv = convexloc::viewer;
+using convexloc::Location;
+using convexloc::Method2D;
+using convexloc::Vec2;
+
+namespace {
+
+// Checks that `xml` is well-formed (one root, tags nested and closed, attributes quoted,
+// no raw '<' or stray '&' in text or values) and counts elements by "tag" and
+// "tag.class". Returns an empty string, or the first problem.
+std::string checkXml(const std::string& xml, std::map<std::string, int>& counts) {
+  std::vector<std::string> open;
+  int roots = 0;
+  auto entityOk = [&](std::size_t amp) {
+    const std::size_t semi = xml.find(';', amp);
+    if (semi == std::string::npos) return false;
+    const std::string e = xml.substr(amp + 1, semi - amp - 1);
+    return e == "amp" || e == "lt" || e == "gt" || e == "quot" || e == "apos" ||
+           (!e.empty() && e[0] == '#');
+  };
+  std::size_t i = 0;
+  while (i < xml.size()) {
+    if (xml[i] != '<') {
+      if (xml[i] == '&' && !entityOk(i)) return "stray & at " + std::to_string(i);
+      if (xml[i] == '>') return "raw > in text at " + std::to_string(i);
+      if (!std::isspace(static_cast<unsigned char>(xml[i])) && open.empty())
+        return "text outside the root";
+      ++i;
+      continue;
+    }
+    if (xml.compare(i, 4, "<!--") == 0) {
+      const std::size_t end = xml.find("-->", i + 4);
+      if (end == std::string::npos) return "unclosed comment";
+      if (xml.substr(i + 4, end - i - 4).find("--") != std::string::npos) return "-- in comment";
+      i = end + 3;
+      continue;
+    }
+    if (xml.compare(i, 2, "<?") == 0) {
+      i = xml.find("?>", i);
+      if (i == std::string::npos) return "unclosed declaration";
+      i += 2;
+      continue;
+    }
+    // a tag: attributes' values may not hold '<' and hold '&' only as entities
+    std::size_t j = i + 1;
+    bool inValue = false;
+    for (; j < xml.size() && (inValue || xml[j] != '>'); ++j) {
+      if (xml[j] == '"') inValue = !inValue;
+      if (inValue && xml[j] == '<') return "< in an attribute at " + std::to_string(j);
+      if (inValue && xml[j] == '&' && !entityOk(j)) return "stray & in an attribute";
+    }
+    if (j >= xml.size()) return "unclosed tag";
+    std::string tag = xml.substr(i + 1, j - i - 1);
+    i = j + 1;
+    if (tag[0] == '/') {
+      if (open.empty() || open.back() != tag.substr(1))
+        return "mismatched </" + tag.substr(1) + ">";
+      open.pop_back();
+      continue;
+    }
+    const bool empty = tag.back() == '/';
+    const std::string name = tag.substr(0, tag.find_first_of(" /\n"));
+    ++counts[name];
+    const std::size_t cls = tag.find(" class=\"");
+    if (cls != std::string::npos)
+      ++counts[name + "." + tag.substr(cls + 8, tag.find('"', cls + 8) - cls - 8)];
+    if (open.empty() && ++roots > 1) return "two roots";
+    if (!empty) open.push_back(name);
+  }
+  return open.empty() && roots == 1 ? "" : "unclosed elements or no root";
+}
+
+// a scene's SVG as the viewer writes it: its draw lists, a fitted camera, a fixed measure
+std::string svgOf(const cv::Scene2D& scene, cv::DrawList& structure, cv::DrawList& overlay,
+                  std::size_t maxPoints = 4000) {
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
+  cv::View2DOptions opt;
+  cv::buildStructure2D(scene, pal, opt, structure);
+  cv::buildOverlay2D(scene, pal, opt, overlay);
+  cv::Camera2D cam;
+  cam.setViewport({800.0, 600.0});
+  cam.fit(scene.polygon().bounds(), {{0.0, 0.0}, {800.0, 600.0}});
+  cv::SvgScene s;
+  s.size = {800.0, 600.0};
+  s.background = pal.background;
+  s.text = pal.text;
+  s.project = [cam](glm::dvec3 p) -> std::optional<glm::dvec3> {
+    return glm::dvec3(cam.toScreen({p.x, p.y}), 0.0);
+  };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.base = {&structure};
+  s.overlay = {&overlay};
+  for (Vec2 p : scene.points()) s.points.points.push_back({p.x, p.y, 0.0});
+  s.points.classes = scene.classes();
+  s.maxPoints = maxPoints;
+  for (const convexloc::Cell2D& c : scene.cells()) {
+    auto& o = s.cells.emplace_back();
+    for (Vec2 v : c.outline) o.push_back({v.x, v.y, 0.0});
+  }
+  const convexloc::ConvexPolygon& poly = scene.polygon();
+  for (std::size_t e = 0; e < poly.size(); ++e)
+    s.edges.push_back({cv::at2(cv::toGlm(poly.edgeStart(e))), cv::at2(cv::toGlm(poly.edgeEnd(e)))});
+  s.caption = "Fig. 3 <polar slabs> & \"x_T\"";
+  return cv::sceneSvg(s);
+}
+
+}  // namespace
+
+TEST(Svg, WellFormedWithOneCellPolygonPerCellAndOneLinePerEdge) {
+  for (Method2D m : {Method2D::Polar, Method2D::Slab, Method2D::Wedge}) {
+    cv::Scene2D scene;
+    const std::vector<Vec2> octagon =
+        convexloc::generatePolygon(convexloc::PolygonKind::Regular, 8, 1);
+    ASSERT_TRUE(scene.setShape(octagon, "octagon"));
+    scene.setMethod(m);
+    scene.place({0.1, 0.2});
+    cv::DrawList structure, overlay;
+    const std::string svg = svgOf(scene, structure, overlay);
+    std::map<std::string, int> counts;
+    ASSERT_EQ(checkXml(svg, counts), "") << svg.substr(0, 400);
+    EXPECT_EQ(counts["svg"], 1);
+    EXPECT_EQ(counts["polygon.cell"], static_cast<int>(scene.cells().size()));
+    EXPECT_EQ(counts["line.edge"], 8);
+    EXPECT_NE(svg.find("viewBox=\"0 0 800.00 600.00\""), std::string::npos);
+    // the segments and labels of the draw lists are all there (none is off screen here)
+    EXPECT_EQ(counts["line"] - counts["line.edge"],
+              static_cast<int>(structure.segments.size() + overlay.segments.size()));
+    EXPECT_GT(counts["text.label"], 8);  // vertex numbers at least
+  }
+}
+
+TEST(Svg, TextIsEscaped) {
+  cv::Scene2D scene;
+  cv::DrawList structure, overlay;
+  const std::string svg = svgOf(scene, structure, overlay);
+  EXPECT_NE(svg.find("Fig. 3 &lt;polar slabs&gt; &amp; &quot;x_T&quot;"), std::string::npos);
+  EXPECT_EQ(svg.find("<polar slabs>"), std::string::npos);
+  EXPECT_EQ(cv::xmlEscape("a<b&c>'\""), "a&lt;b&amp;c&gt;&apos;&quot;");
+}
+
+TEST(Svg, AHeavySprayIsThinnedAndSaysSo) {
+  cv::Scene2D scene;
+  scene.spray({20000, 3, false});
+  cv::DrawList structure, overlay;
+  const std::string svg = svgOf(scene, structure, overlay, 4000);
+  std::map<std::string, int> counts;
+  ASSERT_EQ(checkXml(svg, counts), "");
+  EXPECT_LE(counts["circle"], 4000 + 64);  // the points, and a few markers
+  EXPECT_GE(counts["circle"], 2000);
+  EXPECT_NE(svg.find("<!-- spray thinned for the SVG: 1 point in 5 of 20 000 drawn -->"),
+            std::string::npos);
+  EXPECT_EQ(counts["text.note"], 1);
+  // a light spray is written whole, without a note
+  scene.spray({1000, 3, false});
+  const std::string light = svgOf(scene, structure, overlay, 4000);
+  EXPECT_EQ(light.find("thinned"), std::string::npos);
+}
+
+TEST(Svg, ThreeDimensionalFillsAreWrittenBackToFront) {
+  cv::DrawList mesh;
+  const cv::Rgba near = cv::hex(0x00ff00), far = cv::hex(0xff0000);
+  // the near triangle first in the list: the writer must still write the far one first
+  mesh.triangle({0, 0, 1}, {1, 0, 1}, {0, 1, 1}, near);
+  mesh.triangle({0, 0, 5}, {1, 0, 5}, {0, 1, 5}, far);
+  cv::SvgScene s;
+  s.size = {100.0, 100.0};
+  s.depthSorted = true;
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> {
+    return glm::dvec3(50.0 + 10.0 * p.x, 50.0 - 10.0 * p.y, p.z);  // depth: z
+  };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.base = {&mesh};
+  const std::string svg = cv::sceneSvg(s);
+  const std::size_t farAt = svg.find("fill=\"#ff0000\""), nearAt = svg.find("fill=\"#00ff00\"");
+  ASSERT_NE(farAt, std::string::npos);
+  ASSERT_NE(nearAt, std::string::npos);
+  EXPECT_LT(farAt, nearAt);
+  std::map<std::string, int> counts;
+  EXPECT_EQ(checkXml(svg, counts), "");
+  EXPECT_EQ(counts["polygon"], 2);
+}
