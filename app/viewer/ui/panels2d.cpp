@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "logic/lines2d.hpp"
+#include "logic/y_gap.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -174,6 +175,11 @@ void legend2D(Model& model) {
   if (model.settings.view2d.showBox) {
     swatchLine(pal.box, true, 1.2f);
     ImGui::Text("bounding box");
+  }
+  // the paper's rule (Fig. 5): what the smallest y-gap costs, beside convexloc's count
+  if (model.settings.view2d.showGap) {
+    swatchLine(pal.negative, true, 1.6f);
+    ImGui::TextUnformatted(yGapCostText(model.scene2d).c_str());
   }
 }
 
