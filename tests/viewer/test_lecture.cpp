@@ -103,6 +103,7 @@ TEST(Figures, EveryFigureParsesAndIsLight) {
     EXPECT_TRUE(o.hideUi) << n;
     EXPECT_TRUE(o.method.has_value()) << n;
     EXPECT_FALSE(cv::figure(n).caption.empty());
+    EXPECT_EQ(o.caption, cv::figure(n).caption) << n;
   }
   // later options override the figure's
   EXPECT_EQ(parsed({"--figure", "1", "--method", "wedge"}).method, "wedge");

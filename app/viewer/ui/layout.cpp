@@ -242,9 +242,12 @@ void hints(const Model& model) {
 void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window) {
   sideWindow("convexloc", 0.0f, leftPanelWidth(model, window), window.y);
   dimensionButtons(model);
+  // a lecture's slides first, where one is open; else the figures at the end
+  const bool lecture = ui.show.lecture.slides.size() > 1;
+  if (lecture) lecturePanel(model, ui);
   scenePanels(model, ui);
   if (ImGui::CollapsingHeader("View")) viewPanel(model, renderer, ui);
-  lecturePanel(model, ui);
+  if (!lecture) lecturePanel(model, ui);
   hints(model);
   ImGui::End();
 }
