@@ -136,6 +136,7 @@ int main(int argc, char** argv) {
   cv::Window window;
   if (!window.open(options, headless)) return 1;
   cv::watchDrops(window.handle());
+  cv::watchKeys(window.handle());
   const cv::GlInfo gl = cv::queryGl();
   int samples = samplesFor(options, gl);
   cv::enableMultisample();

@@ -221,4 +221,9 @@ TEST(Lecture, AFigureSlideWithoutCaptionSaysWhatTheFigureShows) {
   ASSERT_EQ(p.error, "");
   EXPECT_EQ(p.lecture.slides[0].caption, cv::figure(3).caption);
   EXPECT_EQ(p.lecture.slides[1].caption, "mine");
+  EXPECT_EQ(p.lecture.slides[1].options.caption, "mine");
+  // a caption before the figure is kept too
+  const cv::ParsedLecture q = cv::parseLecture("slide A\ncaption first\nfigure 2\n", "t.lecture");
+  ASSERT_EQ(q.error, "");
+  EXPECT_EQ(q.lecture.slides[0].options.caption, "first");
 }

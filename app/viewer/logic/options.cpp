@@ -336,7 +336,8 @@ bool lectureOption(std::string_view a, ArgReader& in, Options& o) {
     const std::vector<std::string_view> args(words.begin(), words.end());
     if (std::string e = parseInto(args, o); !e.empty()) return in.fail("--figure: " + e);
     o.figure = n;
-    o.caption = std::string(figure(n).caption);  // a later --caption replaces it
+    // the figure's caption, unless one was given: a --caption before or after wins
+    if (o.caption.empty()) o.caption = std::string(figure(n).caption);
   } else if (a == "--lecture") {
     if (!in.value(v) || v.empty()) return in.fail("--lecture needs a .lecture file");
     o.lecture = std::string(v);

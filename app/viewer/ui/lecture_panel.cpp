@@ -156,8 +156,7 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
 }
 
 void lecturePanel(Model& model, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Lecture", ui.show.active() ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-    return;
+  if (!ImGui::CollapsingHeader("Lecture", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (ui.show.lecture.slides.size() > 1) {
     slideList(model, ui);
     slideButtons(model, ui);
