@@ -100,7 +100,7 @@ TEST(LabelLayout, LinesBreakAtSpacesNeverInsideANumber) {
 TEST(LabelLayout, LabelsStayInsideTheWindow) {
   // asked to the left of an anchor at the window's left edge: it goes right instead
   const std::vector<cv::LabelRequest> labels{{{4.0, 50.0}, {-30.0, 0.0}, "octant 4", false}};
-  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, {200.0, 100.0});
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, {{0.0, 0.0}, {200.0, 100.0}});
   ASSERT_TRUE(placed[0].shown);
   EXPECT_GE(placed[0].centre.x - 0.5 * placed[0].size.x, 0.0);
   EXPECT_LE(placed[0].centre.x + 0.5 * placed[0].size.x, 200.0);

@@ -199,7 +199,7 @@ TEST(Defects, PinnedCellSurvivesMethodsTwoThenThree) {
 
 TEST(Defects, HelpNamesEveryKey) {
   const std::string help = cv::usageText();
-  for (const char* key : {"T dark/light", "PageDown", "--figure", "--lecture", "--export",
+  for (const char* key : {"T theme (dark/light)", "PageDown", "--figure", "--lecture", "--export",
                           "--slice AXIS=V|none", "--y-gap"})
     EXPECT_NE(help.find(key), std::string::npos) << key;
 }

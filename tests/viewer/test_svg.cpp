@@ -8,6 +8,9 @@
 
 #include "convexloc/generate2d.hpp"
 #include "logic/camera2d.hpp"
+#include "logic/legend.hpp"
+#include "logic/model.hpp"
+#include "logic/options.hpp"
 #include "logic/scene2d.hpp"
 #include "logic/structure2d.hpp"
 #include "logic/svg_writer.hpp"
@@ -192,4 +195,78 @@ TEST(Svg, ThreeDimensionalFillsAreWrittenBackToFront) {
   std::map<std::string, int> counts;
   EXPECT_EQ(checkXml(svg, counts), "");
   EXPECT_EQ(counts["polygon"], 2);
+}
+
+TEST(Options, PresentationAndVectorFigureFlags) {
+  const std::vector<std::string_view> args{
+      "--present", "--caption",    "Fig. 3 & <4>", "--no-legend",  "--svg",
+      "out.svg",   "--screenshot", "out.png",      "--font-scale", "2"};
+  const cv::ParsedOptions parsed = cv::parseOptions(args);
+  ASSERT_EQ(parsed.error, "");
+  EXPECT_TRUE(parsed.options.present);
+  EXPECT_TRUE(parsed.options.noLegend);
+  EXPECT_EQ(parsed.options.caption, "Fig. 3 & <4>");
+  EXPECT_EQ(parsed.options.svg, "out.svg");
+  EXPECT_EQ(parsed.options.screenshot, "out.png");
+  // the model takes them: panels hidden, the legend off, the caption, lines scaled with text
+  cv::Model model;
+  EXPECT_EQ(model.apply(parsed.options), "");
+  EXPECT_TRUE(model.settings.present);
+  EXPECT_FALSE(model.settings.showUi);
+  EXPECT_FALSE(model.settings.showLegend);
+  EXPECT_EQ(model.settings.caption, "Fig. 3 & <4>");
+  EXPECT_FLOAT_EQ(model.settings.drawScale(), 2.0f);
+  for (const char* bad : {"--svg", "--caption"}) {
+    const std::vector<std::string_view> one{bad};
+    EXPECT_FALSE(cv::parseOptions(one).error.empty()) << bad;
+  }
+}
+
+namespace {
+
+// true when a row of the legend says `text`
+bool lists(const cv::Legend& g, const std::string& text) {
+  for (const cv::LegendRow& r : g.rows)
+    if (r.text.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Legend, ListsOnlyWhatIsDrawn) {
+  cv::Model model;
+  // polar cells of the default polygon list 2 edges at times: tinted, and listed
+  ASSERT_EQ(model.scene2d.method(), Method2D::Polar);
+  EXPECT_TRUE(lists(cv::legendOf(model), "cell listing 2+ edges"));
+  EXPECT_TRUE(lists(cv::legendOf(model), "octant lines"));
+  // a slab lists exactly its two edges: nothing is tinted, and no row says so
+  model.scene2d.setMethod(Method2D::Slab);
+  const cv::Legend slab = cv::legendOf(model);
+  EXPECT_FALSE(lists(slab, "cell listing"));
+  EXPECT_FALSE(lists(slab, "octant"));
+  EXPECT_EQ(slab.title, "slab");
+  ASSERT_EQ(slab.classes.size(), 3u);
+  EXPECT_EQ(slab.classes[0].text, "inside");
+  EXPECT_FALSE(slab.classes[0].count.empty());
+  // 3D: the section's row only while the plane cuts the polyhedron
+  model.show(cv::Dim::Three);
+  EXPECT_TRUE(lists(cv::legendOf(model), "section"));
+  model.scene3d().setSlice({2, -30.0});
+  EXPECT_FALSE(lists(cv::legendOf(model), "section"));
+}
+
+TEST(Svg, TheLegendIsWrittenWithItsRows) {
+  cv::Model model;
+  cv::SvgScene s;
+  s.size = {400.0, 300.0};
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.legend = cv::legendOf(model);
+  s.legendCorner = {390.0, 290.0};
+  const std::string svg = cv::sceneSvg(s);
+  std::map<std::string, int> counts;
+  ASSERT_EQ(checkXml(svg, counts), "");
+  EXPECT_NE(svg.find("<g id=\"legend\""), std::string::npos);
+  EXPECT_NE(svg.find(">octant lines through x_T</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">inside</text>"), std::string::npos);
 }

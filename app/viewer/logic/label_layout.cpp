@@ -28,18 +28,18 @@ LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double g
   return p;
 }
 
-// true when the box reaches past the edges of a window of `size` (none when size is 0)
-bool outside(const LabelPlacement& c, glm::dvec2 size) {
-  if (size.x <= 0.0 || size.y <= 0.0) return false;
+// true when the box reaches out of the area (never for an empty area)
+bool outside(const LabelPlacement& c, const PixelBox& area) {
+  if (area.empty()) return false;
   const glm::dvec2 lo = c.centre - 0.5 * c.size, hi = c.centre + 0.5 * c.size;
-  return lo.x < 0.0 || lo.y < 0.0 || hi.x > size.x || hi.y > size.y;
+  return lo.x < area.lo.x || lo.y < area.lo.y || hi.x > area.hi.x || hi.y > area.hi.y;
 }
 
-// how many placed labels and markers the candidate runs into (reaching out of the window
+// how many placed labels and markers the candidate runs into (reaching out of the area
 // counts as one)
 int conflicts(const LabelPlacement& c, const std::vector<LabelPlacement>& placed,
-              std::span<const PixelDisc> markers, glm::dvec2 window, bool stopAtFirst) {
-  int n = outside(c, window) ? 1 : 0;
+              std::span<const PixelDisc> markers, const PixelBox& area, bool stopAtFirst) {
+  int n = outside(c, area) ? 1 : 0;
   if (n && stopAtFirst) return n;
   for (const LabelPlacement& p : placed)
     if (p.shown && boxesOverlap(c, p, kPad) && (++n, stopAtFirst)) return n;
@@ -64,8 +64,7 @@ bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc) {
 
 std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
                                         std::span<const PixelDisc> markers,
-                                        const MeasureText& measure, double scale,
-                                        glm::dvec2 window) {
+                                        const MeasureText& measure, double scale, PixelBox area) {
   std::vector<LabelPlacement> placed(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const LabelRequest& l = labels[i];
@@ -78,7 +77,7 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
       for (glm::dvec2 d : kDirections)
         candidates.push_back(around(l.anchor, size, d, (kGap + kRingStep * ring) * scale));
     for (const LabelPlacement& c : candidates)
-      if (conflicts(c, placed, markers, window, true) == 0) {
+      if (conflicts(c, placed, markers, area, true) == 0) {
         placed[i] = c;
         placed[i].shown = true;
         break;
@@ -89,7 +88,7 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
     for (int ring = kRings; ring < kRings + kEssentialRings; ++ring)
       for (glm::dvec2 d : kDirections) {
         const LabelPlacement c = around(l.anchor, size, d, (kGap + kRingStep * 2 * ring) * scale);
-        const int n = conflicts(c, placed, markers, window, false);
+        const int n = conflicts(c, placed, markers, area, false);
         if (n < best) {
           best = n;
           placed[i] = c;

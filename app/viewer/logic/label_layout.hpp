@@ -39,19 +39,26 @@ struct LabelPlacement {
   bool leader = false;
 };
 
+// a rectangle of window pixels the labels must stay in; empty: no bounds
+struct PixelBox {
+  glm::dvec2 lo{0.0};
+  glm::dvec2 hi{0.0};
+  bool empty() const { return hi.x <= lo.x || hi.y <= lo.y; }
+};
+
 // the size of a text in window pixels
 using MeasureText = std::function<glm::dvec2(std::string_view)>;
 
 // Places the labels in order (earlier ones win a contested spot): the asked offset times
 // `scale` first, then 8 directions around the anchor at growing distances. A label whose
 // every candidate overlaps a placed label or a marker is dropped, unless essential: then
-// it goes to the least crowded candidate farther out with a leader line. With a `window`
-// size (> 0), a candidate reaching past the window's edges is not taken. Returns one
-// placement per request, in order.
+// it goes to the least crowded candidate farther out with a leader line. A candidate
+// reaching out of `area` (when not empty) is not taken. Returns one placement per request,
+// in order.
 std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
                                         std::span<const PixelDisc> markers,
                                         const MeasureText& measure, double scale = 1.0,
-                                        glm::dvec2 window = {0.0, 0.0});
+                                        PixelBox area = {});
 
 // true when the two placed boxes overlap (the gap between them below `pad` pixels)
 bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad = 0.0);

@@ -418,7 +418,7 @@ Without hands:
 Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, click to
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
-Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode, Space new
+Keys: F fit, H hide panels, T theme (dark/light), 1..5 method, L lines mode, Space new
 spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode,
 G legend; in a lecture PageDown / PageUp next and previous slide, Home / End first and
 last.

@@ -202,6 +202,10 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     visible += (sp.visibleMask >> static_cast<unsigned>(sp.classes[i])) & 1u;
   const std::size_t stride =
       std::max<std::size_t>(1, (visible + s.maxPoints - 1) / std::max<std::size_t>(s.maxPoints, 1));
+  // fewer points are drawn larger (up to the size of a light spray's), so that the thinned
+  // spray still reads as the classes' areas
+  const double size =
+      std::min(sp.size * std::sqrt(static_cast<double>(stride)), std::max<double>(sp.size, 3.5));
   std::size_t seen = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const auto c = static_cast<unsigned>(sp.classes[i]);
@@ -209,7 +213,7 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     const std::optional<glm::dvec3> p = s.project(sp.points[i]);
     if (!p || offScreen(std::span(&*p, 1), s.size, 4.0)) continue;
     const bool boundary = sp.classes[i] == Location::Boundary;
-    const double r = 0.5 * sp.size * (boundary ? 1.7 : 1.0);
+    const double r = 0.5 * size * (boundary ? 1.7 : 1.0);
     std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
                     "\"" + paint("fill", sp.colours[c]);
     if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
@@ -284,8 +288,9 @@ std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char
 void writeLabels(const SvgScene& s, std::string& out) {
   std::vector<const DrawList*> lists = s.base;
   lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
-  const auto placed =
-      layoutSceneLabels(lists, s.base.size(), s.project, s.size, s.measure, s.scale);
+  const auto placed = layoutSceneLabels(
+      lists, s.base.size(), s.project,
+      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale);
   out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
          num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
          paint("stroke", withAlpha(s.background, 0.85f)) +
@@ -310,11 +315,83 @@ void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::s
            "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
   }
   if (s.caption.empty()) return;
+  // under the middle of the scene area, as the window's caption box
   const double px = 1.6 * s.fontPixels;
-  out += "<text class=\"caption\" x=\"" + num(0.5 * s.size.x) + "\" y=\"" +
-         num(s.size.y - 1.2 * px) + "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" +
-         num(px) + "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" +
-         xmlEscape(s.caption) + "</text>\n";
+  const double x =
+      s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
+  out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(s.size.y - 1.2 * px) +
+         "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
+         "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(s.caption) +
+         "</text>\n";
+}
+
+// a legend row's swatch, `h` high, its left edge at x and its middle at y
+std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
+  const double w = 0.7 * h;
+  switch (r.swatch) {
+    case Swatch::Disc:
+      return "<circle cx=\"" + num(x + 0.3 * h) + "\" cy=\"" + num(y) + "\" r=\"" + num(0.27 * h) +
+             "\"" + paint("fill", r.colour) + paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Box:
+      return "<rect x=\"" + num(x) + "\" y=\"" + num(y - 0.35 * h) + "\" width=\"" + num(w) +
+             "\" height=\"" + num(0.7 * h) + "\"" + paint("fill", r.colour) +
+             paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Line:
+    case Swatch::DashedLine: break;
+  }
+  std::string e = "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + w) +
+                  "\" y2=\"" + num(y) + "\"" + paint("stroke", r.colour) + " stroke-width=\"" +
+                  num(r.width) + "\"";
+  if (r.swatch == Swatch::DashedLine) e += " stroke-dasharray=\"" + num(0.3 * w) + "\"";
+  return e + "/>";
+}
+
+// `text` at (x, y), its baseline centred on y, anchored at its start or end
+std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + paint("fill", c) +
+         (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+}
+
+// the legend as the window shows it: title, class rows in columns, a row per mark
+void writeLegend(const SvgScene& s, std::string& out) {
+  const Legend& g = *s.legend;
+  const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
+  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
+  double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
+  for (const LegendRow& r : g.classes) {
+    name = std::max(name, width(r.text));
+    count = std::max(count, width(r.count));
+    share = std::max(share, width(r.share));
+  }
+  for (const LegendRow& r : g.rows) rows = std::max(rows, sw + width(r.text));
+  const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
+  const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
+  const double w = std::max({heading, classes, rows}) + 2.0 * pad;
+  const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
+  out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
+         "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
+         "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
+         paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
+         " stroke-width=\"1\"/>\n";
+  double y = lo.y + pad + 0.5 * line;
+  const double x = lo.x + pad;
+  out += "  " + legendText(x, y, g.title, s.text) + "\n";
+  if (!g.subtitle.empty())
+    out += "  " + legendText(x + width(g.title) + 0.4 * f, y, g.subtitle, s.textMuted) + "\n";
+  for (const LegendRow& r : g.classes) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text);
+    if (!r.count.empty())
+      out += legendText(x + sw + name + 0.8 * f + count, y, r.count, s.text, true) +
+             legendText(x + sw + name + 1.4 * f + count, y, r.share, s.textMuted);
+    out += "\n";
+  }
+  for (const LegendRow& r : g.rows) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text) + "\n";
+  }
+  out += "</g>\n";
 }
 
 }  // namespace
@@ -322,7 +399,7 @@ void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::s
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
-                                                glm::dvec2 viewport, const MeasureText& measure,
+                                                const PixelBox& area, const MeasureText& measure,
                                                 double scale, std::size_t budget) {
   std::vector<PlacedSceneLabel> shown;
   std::vector<LabelRequest> requests;
@@ -336,7 +413,8 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
         const std::optional<glm::dvec3> s = project(l.p);
         if (!s) continue;
         const glm::dvec2 at(*s);
-        if (at.x < -200.0 || at.y < -50.0 || at.x > viewport.x + 200.0 || at.y > viewport.y + 50.0)
+        if (!area.empty() && (at.x < area.lo.x - 200.0 || at.y < area.lo.y - 50.0 ||
+                              at.x > area.hi.x + 200.0 || at.y > area.hi.y + 50.0))
           continue;
         shown.push_back({&l, at, {}});
         requests.push_back({at, glm::dvec2(l.offset), l.text, pass == 0});
@@ -346,8 +424,7 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
     for (const Marker& m : list->markers)
       if (const std::optional<glm::dvec3> s = project(m.p))
         markers.push_back({glm::dvec2(*s), 0.5 * m.size * scale});
-  const std::vector<LabelPlacement> placed =
-      placeLabels(requests, markers, measure, scale, viewport);
+  const std::vector<LabelPlacement> placed = placeLabels(requests, markers, measure, scale, area);
   std::vector<PlacedSceneLabel> out;
   for (std::size_t i = 0; i < shown.size(); ++i)
     if (placed[i].shown) out.push_back({shown[i].label, shown[i].anchor, placed[i]});
@@ -383,6 +460,7 @@ std::string sceneSvg(const SvgScene& s) {
   writeScene(s, out, visible, stride);
   writeLabels(s, out);
   writeNotes(s, out, visible, stride);
+  if (s.legend) writeLegend(s, out);
   out += "</svg>\n";
   return out;
 }

@@ -19,6 +19,7 @@
 #include "logic/colour.hpp"
 #include "logic/draw_list.hpp"
 #include "logic/label_layout.hpp"
+#include "logic/legend.hpp"
 
 namespace convexloc::viewer {
 
@@ -42,7 +43,7 @@ struct SvgScene {
   Rgba background;
   Rgba text;                 // the caption's and the note's colour
   double scale = 1.0;        // line widths, marker sizes and label offsets are multiplied by it
-  double fontPixels = 16.0;  // the labels' text height
+  double fontPixels = 16.0;  // the text's font size (em) in pixels
   bool depthSorted = false;  // 3D: fills, segments and points back to front
   std::optional<glm::dvec3> eye;  // 3D: the headlight, for lit faces
   ScreenProjection project;
@@ -56,6 +57,11 @@ struct SvgScene {
   std::vector<std::vector<glm::dvec3>> cells;
   std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
   std::string caption;  // written large at the bottom when not empty
+  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
+  std::optional<Legend> legend;
+  glm::dvec2 legendCorner{0.0};
+  PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
+  Rgba textMuted;      // the legend's counts and subtitle
 };
 
 // the labels of `lists` placed as both the window and the SVG draw them
@@ -64,13 +70,13 @@ struct PlacedSceneLabel {
   glm::dvec2 anchor{0.0};
   LabelPlacement place;
 };
-// Projects the labels of `lists` (at most `budget`, those off the viewport skipped) and
-// places them around the markers of the same lists; overlay labels (`essentialFrom` and
-// later lists) are essential.
+// Projects the labels of `lists` (at most `budget`, those far off `area` skipped) and
+// places them in `area` around the markers of the same lists; overlay labels
+// (`essentialFrom` and later lists) are essential.
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
-                                                glm::dvec2 viewport, const MeasureText& measure,
+                                                const PixelBox& area, const MeasureText& measure,
                                                 double scale, std::size_t budget = 400);
 
 // text with &, <, >, " and ' escaped for XML

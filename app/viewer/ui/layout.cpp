@@ -106,12 +106,20 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   panelsOf(model).legend(model);
   // dragged by hand (ImGui's own moving would fight the corner placement)
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  if (ImGui::IsWindowHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
+  // a drag that began on the legend moves it until the button is let go
+  if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    ui.legendDragging = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui.legendDragging = false;
+  const ImVec2 delta = ImGui::GetIO().MouseDelta;
+  if (ui.legendDragging && (delta.x != 0.0f || delta.y != 0.0f) && ImGui::IsMousePosValid()) {
     ui.legendMoved = true;
-    ui.legendPos[0] = pos.x + ImGui::GetIO().MouseDelta.x;
-    ui.legendPos[1] = pos.y + ImGui::GetIO().MouseDelta.y;
+    ui.legendPos[0] = pos.x + delta.x;
+    ui.legendPos[1] = pos.y + delta.y;
+  } else if (ImGui::IsWindowHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    ui.legendMoved = false;  // back to the corner, and the scene fitted beside it
+    model.requestFit();
   } else if (ImGui::IsWindowHovered()) {
-    ImGui::SetTooltip("drag to move; G hides the legend");
+    ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
   }
   if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
       now < ui.refitUntil)
@@ -295,7 +303,7 @@ float leftPanelWidth(const Model& model, glm::dvec2 window) {
 float rightPanelWidth(const Model& model, glm::dvec2 window) {
   // narrower windows keep the scene wide: legend and inspector float over it instead
   const float fs = model.settings.fontScale;
-  if (!model.settings.showUi || window.x < 1280.0 * std::max(1.0f, 0.8f * fs)) return 0.0f;
+  if (!model.settings.showUi || window.x < 1280.0 * std::max(1.0f, 0.75f * fs)) return 0.0f;
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
@@ -418,12 +426,14 @@ void drawLabels(Model& model, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   // placed as the SVG places them: no two overlap, none sits on a marker
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
-  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, sceneProjection(model), vp,
-                                                     measureText, model.settings.drawScale())) {
+  for (const PlacedSceneLabel& p :
+       layoutSceneLabels(lists, 1, sceneProjection(model), {area.lo, area.hi}, measureText,
+                         model.settings.drawScale())) {
     const char* text = p.label->text.c_str();
     const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
                     std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));

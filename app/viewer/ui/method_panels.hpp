@@ -202,19 +202,6 @@ void generatorsAndGallery(Model& model, Scene& scene, std::span<const Kind> kind
 
 // === Legend and inspector
 
-// the method's name, its shape's size and cells, and the class rows
-template <class Scene>
-void legendHeading(Model& model, const Scene& scene, std::size_t elements, const char* noun) {
-  const std::size_t cells = scene.stats().cells;
-  ImGui::Text("%s", std::string(toString(scene.method())).c_str());
-  ImGui::SameLine();
-  if (cells)
-    ImGui::TextDisabled("%s %s, %s cells", grouped(elements).c_str(), noun, grouped(cells).c_str());
-  else
-    ImGui::TextDisabled("%s %s", grouped(elements).c_str(), noun);
-  classRows(model, scene.counts(), scene.points().size(), false);
-}
-
 // The placed point: its class, its trace told line by line (`lines`), Clear and Copy;
 // without one, with `hints`, what a click would do (`hint`).
 template <class Scene, class Describe>

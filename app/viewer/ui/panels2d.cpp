@@ -7,7 +7,6 @@
 #include <imgui.h>
 
 #include "logic/lines2d.hpp"
-#include "logic/y_gap.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/widgets.hpp"
 
@@ -126,61 +125,8 @@ constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a poin
                                     "F fit, H hide panels, 1-5 method, Space spray",
                                     "L lines mode: drag to place a line", nullptr};
 
-// the Lines mode's legend: what the marks in both views are
-void legendLines(Model& model) {
-  const Palette& pal = paletteFor(model.settings.theme);
-  ImGui::Text("Lines: the dual problem");
-  swatchLine(pal.text, false, 1.5f);
-  ImGui::Text("the line through p1, p2");
-  swatchLine(pal.inside, false, 4.0f);
-  ImGui::Text("segment p1-p2 clipped");
-  swatchBox(pal.boundary, pal.boundary);
-  ImGui::Text("entry and exit");
-  swatchBox(pal.positive, pal.negative);
-  ImGui::Text("extreme vertices (sign of f)");
-  swatchBox(withAlpha(pal.hoverEdge, 0.28f), pal.hoverEdge);
-  ImGui::Text("b's dual cell, its proposals");
-  swatchLine(pal.structure, false, 1.0f);
-  ImGui::Text("polar slabs of P*");
-}
-
 void legend2D(Model& model) {
-  if (model.lines2d.enabled()) return legendLines(model);
-  const Scene2D& scene = model.scene2d;
-  const Palette& pal = paletteFor(model.settings.theme);
-  const Stats2D& s = scene.stats();
-  legendHeading(model, scene, s.edges, "edges");
-  const Method2D m = scene.method();
-  const std::size_t base = baseEdgesPerCell(m);
-  // only what is drawn: the tint's row when some cell is tinted
-  const bool tinted = std::any_of(scene.cells().begin(), scene.cells().end(), [&](const Cell2D& c) {
-    return c.edges.size() > base || c.edges.size() > kCrowdedCell;
-  });
-  if (tinted && model.settings.view2d.showTints) {
-    swatchBox(cellTint(pal, base + 1, base, false), withAlpha(pal.extraEdges, 0.8f));
-    ImGui::Text("cell listing %zu+ edges", base + 1);
-    if (s.crowdedCells) {
-      swatchBox(cellTint(pal, 0, base, true), withAlpha(pal.crowded, 0.8f));
-      ImGui::Text("crowded cell (bisection)");
-    }
-  }
-  if (m == Method2D::Polar && scene.centre()) {
-    if (model.settings.view2d.showOctants) {
-      swatchLine(pal.octant, true, 1.6f);
-      ImGui::Text("octant lines through x_T");
-    }
-    swatchLine(pal.structure, false, 1.0f);
-    ImGui::Text("polar slab boundaries");
-  }
-  if (model.settings.view2d.showBox) {
-    swatchLine(pal.box, true, 1.2f);
-    ImGui::Text("bounding box");
-  }
-  // the paper's rule (Fig. 5): what the smallest y-gap costs, beside convexloc's count
-  if (model.settings.view2d.showGap) {
-    swatchLine(pal.negative, true, 1.6f);
-    ImGui::TextUnformatted(yGapCostText(model.scene2d).c_str());
-  }
+  drawLegend(legendOf(model));
 }
 
 // the line's answer and the steps core took

@@ -138,41 +138,7 @@ constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
                                     "F fit, H hide panels, 1-3 method, Space spray", nullptr};
 
 void legend3D(Model& model) {
-  Scene3D& scene = model.scene3d();
-  const Palette& pal = paletteFor(model.settings.theme);
-  const Stats3D& s = scene.stats();
-  legendHeading(model, scene, s.faces, "faces");
-  // only what is drawn: the tint's row when some cell is tinted, the section's when it is there
-  const bool tinted = std::any_of(scene.cells().begin(), scene.cells().end(), [](const Cell3D& c) {
-    return c.faces.size() > kBaseFacesPerCell || c.faces.size() > kCrowdedCell3D;
-  });
-  const auto& cut = scene.section().classes;
-  const bool section =
-      std::any_of(cut.begin(), cut.end(), [](Location l) { return l != Location::Outside; });
-  if (tinted && model.settings.view3d.showCube && model.settings.view3d.showTints) {
-    swatchBox(cellTint(pal, 2, kBaseFacesPerCell, false), withAlpha(pal.extraEdges, 0.8f));
-    ImGui::Text("cell listing 2+ faces");
-    if (s.crowdedCells) {
-      swatchBox(cellTint(pal, 0, kBaseFacesPerCell, true), withAlpha(pal.crowded, 0.8f));
-      ImGui::Text("crowded cell (walk)");
-    }
-  }
-  if (s.cells && model.settings.view3d.showCube) {
-    swatchLine(pal.cube, false, 1.0f);
-    ImGui::Text("cube-map grid around x_T");
-  }
-  // the pinned cells: their pyramids from x_T and the faces they list
-  for (const auto& [k, colour] : {std::pair{scene.pinnedCell(), pal.crowded},
-                                  std::pair{scene.secondPinnedCell(), pal.inside}}) {
-    if (k < 0) continue;
-    const std::size_t faces = scene.cells()[static_cast<std::size_t>(k)].faces.size();
-    swatchBox(withAlpha(colour, 0.25f), colour);
-    ImGui::Text("cell %td: its pyramid lists %zu face%s", k, faces, faces == 1 ? "" : "s");
-  }
-  if (model.settings.view3d.showSlice && section) {
-    swatchBox(withAlpha(pal.inside, 0.45f), withAlpha(pal.inside, 0.8f));
-    ImGui::Text("section: inside, per core");
-  }
+  drawLegend(legendOf(model));
 }
 
 void inspector3D(Model& model, bool hints) {

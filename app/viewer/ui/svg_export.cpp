@@ -3,7 +3,9 @@
 
 #include <imgui.h>
 
+#include "logic/legend.hpp"
 #include "logic/svg_writer.hpp"
+#include "ui/layout.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -83,10 +85,21 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const std::string&
   s.background = pal.background;
   s.text = pal.text;
   s.scale = model.settings.drawScale();
-  s.fontPixels = ImGui::GetFontSize();
+  // ImGui sizes a font by its height from descent to ascent, SVG by its em: DejaVu Sans is
+  // 1.164 em high, so the SVG's text takes the window's width at this size
+  s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
   s.project = sceneProjection(model);
+  const ScreenRect area = sceneArea(model, s.size);
+  s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
   s.caption = model.settings.caption;
+  // the legend in the scene's lower right corner, above the caption
+  s.textMuted = pal.textMuted;
+  if (model.settings.showLegend) {
+    s.legend = legendOf(model);
+    const double caption = s.caption.empty() ? 0.0 : 3.4 * s.fontPixels;
+    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0 + caption);
+  }
   if (model.dim == Dim::Two)
     scene2d(model, view, s);
   else

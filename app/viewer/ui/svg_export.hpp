@@ -17,8 +17,9 @@ ScreenProjection sceneProjection(const Model& model);
 // the width and height of a text in the window's current font
 glm::dvec2 measureText(std::string_view text);
 
-// Writes the scene as the window shows it (the view synced for this frame) to `path` as
-// SVG. Returns false and sets `error` (the path and why) when it cannot be written.
+// Writes the scene as the window shows it (the view synced for this frame, after a frame
+// has been drawn: the window's font measures the labels) to `path` as SVG. Returns false
+// and sets `error` (the path and why) when it cannot be written.
 bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
                    std::string& error);
 

@@ -34,6 +34,7 @@ struct UiState {
   std::string exportDir;          // where F12 and V write; empty: the working directory
   char exportDirEdit[1024] = "";  // the View panel's box for it
   bool legendMoved = false;       // the user dragged the legend: it stays where put
+  bool legendDragging = false;    // a drag that began on the legend goes on
   float legendPos[2] = {0.0f, 0.0f};
   float legendSize[2] = {0.0f, 0.0f};  // the floating legend's size in the last frame
   float captionHeight = 0.0f;          // the caption box's height in the last frame

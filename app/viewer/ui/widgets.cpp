@@ -1,10 +1,12 @@
 // convexloc-viewer — shared ImGui pieces.
 #include "ui/widgets.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include "logic/label_layout.hpp"
+#include "logic/legend.hpp"
 #include "logic/presets.hpp"
 
 namespace convexloc::viewer {
@@ -62,11 +64,7 @@ void help(const char* text) {
 }
 
 std::string percent(std::size_t part, std::size_t whole) {
-  if (!whole) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f%%",
-                100.0 * static_cast<double>(part) / static_cast<double>(whole));
-  return buf;
+  return percentText(part, whole);
 }
 
 void statRow(const char* key, const std::string& value) {
@@ -174,41 +172,74 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
   }
 }
 
-void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total,
-               bool checkboxes) {
-  const Palette& pal = paletteFor(model.settings.theme);
+namespace {
+
+// the swatch of a legend row, in the text flow
+void swatch(const LegendRow& r) {
+  switch (r.swatch) {
+    case Swatch::Disc: swatchDisc(r.colour, 0.27f * ImGui::GetTextLineHeight(), r.edge); break;
+    case Swatch::Box: swatchBox(r.colour, r.edge); break;
+    case Swatch::Line: swatchLine(r.colour, false, r.width); break;
+    case Swatch::DashedLine: swatchLine(r.colour, true, r.width); break;
+  }
+}
+
+// The class rows: disc and name, the count right-aligned, the share; with `toggles`, a
+// check box before each that shows or hides the class.
+void classTable(const std::vector<LegendRow>& rows, Model* toggles) {
   const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
-  const float r = 0.27f * ImGui::GetTextLineHeight();
+  const bool counted = !rows.empty() && !rows[0].count.empty();
   // name, count and share in columns that fit their text (auto-sized windows too)
-  if (!ImGui::BeginTable("classes", total ? 3 : 1, ImGuiTableFlags_SizingFixedFit)) return;
-  for (Location l : order) {
-    const bool shown = (model.settings.visibleMask & classBit(l)) != 0;
-    ImGui::PushID(static_cast<int>(l));
+  if (!ImGui::BeginTable("classes", counted ? 3 : 1, ImGuiTableFlags_SizingFixedFit)) return;
+  float countWidth = 0.0f;
+  for (const LegendRow& r : rows)
+    countWidth = std::max(countWidth, ImGui::CalcTextSize(r.count.c_str()).x);
+  for (std::size_t i = 0; i < rows.size() && i < 3; ++i) {
+    const LegendRow& r = rows[i];
+    ImGui::PushID(static_cast<int>(i));
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    if (checkboxes) {
-      bool s = shown;
+    if (toggles) {
+      unsigned& mask = toggles->settings.visibleMask;
+      bool s = (mask & classBit(order[i])) != 0;
       if (ImGui::Checkbox("##show", &s))
-        model.settings.visibleMask = s ? model.settings.visibleMask | classBit(l)
-                                       : model.settings.visibleMask & ~classBit(l);
+        mask = s ? mask | classBit(order[i]) : mask & ~classBit(order[i]);
       ImGui::SameLine();
     }
-    swatchDisc(shown ? colourOf(pal, l) : withAlpha(colourOf(pal, l), 0.25f), r, pal.rim);
-    ImGui::TextUnformatted(std::string(toString(l)).c_str());
-    if (total) {
-      const std::size_t k = counts[static_cast<std::size_t>(l)];
+    swatch(r);
+    ImGui::TextUnformatted(r.text.c_str());
+    if (counted) {
       ImGui::TableNextColumn();
       // right-aligned counts
-      const std::string count = grouped(k);
-      const float width = ImGui::CalcTextSize(grouped(total).c_str()).x;
-      ImGui::SetCursorPosX(ImGui::GetCursorPosX() + width - ImGui::CalcTextSize(count.c_str()).x);
-      ImGui::TextUnformatted(count.c_str());
+      const float w = ImGui::CalcTextSize(r.count.c_str()).x;
+      ImGui::SetCursorPosX(ImGui::GetCursorPosX() + countWidth - w);
+      ImGui::TextUnformatted(r.count.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextDisabled("%s", percent(k, total).c_str());
+      ImGui::TextDisabled("%s", r.share.c_str());
     }
     ImGui::PopID();
   }
   ImGui::EndTable();
+}
+
+}  // namespace
+
+void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total,
+               bool checkboxes) {
+  classTable(classLegendRows(model, counts, total), checkboxes ? &model : nullptr);
+}
+
+void drawLegend(const Legend& legend) {
+  ImGui::TextUnformatted(legend.title.c_str());
+  if (!legend.subtitle.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", legend.subtitle.c_str());
+  }
+  if (!legend.classes.empty()) classTable(legend.classes, nullptr);
+  for (const LegendRow& r : legend.rows) {
+    swatch(r);
+    ImGui::TextUnformatted(r.text.c_str());
+  }
 }
 
 }  // namespace convexloc::viewer

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "logic/colour.hpp"
+#include "logic/legend.hpp"
 #include "logic/model.hpp"
 #include "logic/text.hpp"
 #include "ui/ui_state.hpp"
@@ -44,6 +45,8 @@ void gallery(Model& model, bool solid);
 void textAtSpaces(std::string_view text);
 // a trace, one coloured line per step
 void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour);
+// a legend: its title, the class rows, a swatch and a line of text per mark
+void drawLegend(const Legend& legend);
 // the class legend rows (disc, name, count) and the counts' visibility check boxes
 void classRows(Model& model, const std::array<std::size_t, 3>& counts, std::size_t total,
                bool checkboxes);
