@@ -65,9 +65,7 @@ constexpr Flag kFlags[] = {
     {"--version", &Options::version}, {"--near-boundary", &Options::nearBoundary},
     {"--hide-ui", &Options::hideUi},  {"--no-xvfb", &Options::noXvfb},
     {"--animate", &Options::animate}, {"--compare", &Options::compare},
-    {"--3d", &Options::solid},
-    // lectures and the paper's figures
-    {"--y-gap", &Options::yGap},
+    {"--3d", &Options::solid},        {"--y-gap", &Options::yGap},
 };
 
 // The arguments, read one at a time: an option's value is the next argument. A step
@@ -197,8 +195,8 @@ bool solidOption(std::string_view a, ArgReader& in, Options& o) {
       o.hideSlice = true;
       return true;
     }
-    if (v.size() < 3 || v[1] != '=' ||
-        (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') || !parseDouble(v.substr(2), s.offset))
+    if (v.size() < 3 || v[1] != '=' || (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') ||
+        !parseDouble(v.substr(2), s.offset))
       return in.fail("--slice needs AXIS=VALUE, e.g. z=0.25, or none");
     s.axis = v[0] - 'x';
     o.slice = s;

@@ -45,9 +45,13 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
     {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
     {GLFW_KEY_G, ActionKind::ToggleLegend},
-    // a lecture: what a presentation clicker sends
-    {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide}, {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
-    {GLFW_KEY_HOME, ActionKind::FirstSlide},     {GLFW_KEY_END, ActionKind::LastSlide},
+};
+// a lecture's keys: what a presentation clicker sends
+constexpr KeyBinding kSlideKeys[] = {
+    {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide},
+    {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
+    {GLFW_KEY_HOME, ActionKind::FirstSlide},
+    {GLFW_KEY_END, ActionKind::LastSlide},
 };
 // keys 1..5 choose a method
 constexpr int kMethodKeys = 5;
@@ -98,6 +102,8 @@ std::vector<Action> keyActions() {
   if (ImGui::GetIO().WantCaptureKeyboard) return actions;
   for (const KeyBinding& b : kKeys)
     if (pressed(b.key)) actions.push_back({b.kind, 0});
+  for (const KeyBinding& b : kSlideKeys)
+    if (pressed(b.key)) actions.push_back({b.kind, 0});
   for (int k = 0; k < kMethodKeys; ++k)
     if (pressed(GLFW_KEY_1 + k)) actions.push_back({ActionKind::ChooseMethod, k});
   return actions;
@@ -105,9 +111,8 @@ std::vector<Action> keyActions() {
 
 bool hadInput(bool dropped) {
   const ImGuiIO& io = ImGui::GetIO();
-  bool input =
-      io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f || dropped ||
-      gHadPresses;
+  bool input = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
+               dropped || gHadPresses;
   for (bool b : io.MouseDown) input |= b;
   for (bool k : io.KeysDown) input |= k;
   return input;

@@ -347,8 +347,8 @@ void scanAssets(UiState& ui) {
 
 void perform(const Action& action, Model& model, UiState& ui) {
   // the panel's settings, taken from the scene first where the scene's changed
-  followSpray(ui, model.dim == Dim::Two ? model.scene2d.spraySettings()
-                                        : model.scene3d().spraySettings());
+  followSpray(
+      ui, model.dim == Dim::Two ? model.scene2d.spraySettings() : model.scene3d().spraySettings());
   const SpraySettings spray{static_cast<std::size_t>(ui.sprayCount), ui.spraySeed + 1,
                             ui.sprayNear};
   switch (action.kind) {
