@@ -130,7 +130,16 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
 }
 
 // the caption, large, in a box along the bottom of the scene area
-void captionBox(const Model& model, UiState& ui, ScreenRect area) {
+void captionBox(Model& model, UiState& ui, ScreenRect area) {
+  // a caption of another height (a new slide's) leaves the scene other room: refit
+  struct Refit {
+    Model& model;
+    const float before;
+    const float& now;
+    ~Refit() {
+      if (std::abs(now - before) > 1.0f) model.requestFit();
+    }
+  } refit{model, ui.captionHeight, ui.captionHeight};
   ui.captionHeight = 0.0f;
   if (model.settings.caption.empty()) return;
   const float w = static_cast<float>(area.size().x) * 0.9f;
