@@ -138,6 +138,7 @@ int main(int argc, char** argv) {
   cv::Window window;
   if (!window.open(options, headless)) return 1;
   cv::watchDrops(window.handle());
+  cv::watchKeys(window.handle());
   const cv::GlInfo gl = cv::queryGl();
   int samples = samplesFor(options, gl);
   cv::enableMultisample();
@@ -196,7 +197,7 @@ int main(int argc, char** argv) {
     stats.count();
     bool lastFrame = headless && stats.frames() >= options.frames;
     if (exporter.active()) {  // --export: every slide written, then the run ends
-      if (!exporter.afterFrame(model, ui, size.framebufferWidth, size.framebufferHeight))
+      if (!exporter.afterFrame(model, view, ui, size.framebufferWidth, size.framebufferHeight))
         exitCode = 1;
       lastFrame = exporter.finished() || exitCode != 0;
     }

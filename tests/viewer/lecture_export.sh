@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Exports a lecture under xvfb-run and checks that every slide became a PNG; a bad lecture
-# must exit 1 and write nothing.
+# Exports a lecture under xvfb-run and checks that every slide became a PNG and a
+# well-formed SVG; a bad lecture must exit 1 and write nothing.
 # usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR
 set -euo pipefail
 xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5
@@ -13,6 +13,14 @@ if [[ $slides -ne $pngs ]]; then
   echo "expected $slides slides, found $pngs PNGs" >&2
   exit 1
 fi
+svgs=$(find "$out/good" -name 'slide-*.svg' | wc -l)
+if [[ $slides -ne $svgs ]]; then
+  echo "expected $slides slides, found $svgs SVGs" >&2
+  exit 1
+fi
+for svg in "$out"/good/slide-*.svg; do
+  python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' "$svg"
+done
 for png in "$out"/good/slide-*.png; do
   "$checker" "$png" --size 960x540 --not-uniform 0.0,0.0,1.0,1.0
 done
@@ -26,4 +34,4 @@ if "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$out/bad.lecture" 
 fi
 grep -q "bad.lecture:3: unknown key 'wobble'" "$out/bad.err"
 [[ ! -e $out/bad ]]
-echo "$pngs slides exported"
+echo "$pngs slides exported (PNG and SVG)"

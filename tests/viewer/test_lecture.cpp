@@ -103,6 +103,7 @@ TEST(Figures, EveryFigureParsesAndIsLight) {
     EXPECT_TRUE(o.hideUi) << n;
     EXPECT_TRUE(o.method.has_value()) << n;
     EXPECT_FALSE(cv::figure(n).caption.empty());
+    EXPECT_EQ(o.caption, cv::figure(n).caption) << n;
   }
   // later options override the figure's
   EXPECT_EQ(parsed({"--figure", "1", "--method", "wedge"}).method, "wedge");
@@ -198,7 +199,7 @@ TEST(Defects, PinnedCellSurvivesMethodsTwoThenThree) {
 
 TEST(Defects, HelpNamesEveryKey) {
   const std::string help = cv::usageText();
-  for (const char* key : {"T dark/light", "PageDown", "--figure", "--lecture", "--export",
+  for (const char* key : {"T theme (dark/light)", "PageDown", "--figure", "--lecture", "--export",
                           "--slice AXIS=V|none", "--y-gap"})
     EXPECT_NE(help.find(key), std::string::npos) << key;
 }
@@ -220,4 +221,9 @@ TEST(Lecture, AFigureSlideWithoutCaptionSaysWhatTheFigureShows) {
   ASSERT_EQ(p.error, "");
   EXPECT_EQ(p.lecture.slides[0].caption, cv::figure(3).caption);
   EXPECT_EQ(p.lecture.slides[1].caption, "mine");
+  EXPECT_EQ(p.lecture.slides[1].options.caption, "mine");
+  // a caption before the figure is kept too
+  const cv::ParsedLecture q = cv::parseLecture("slide A\ncaption first\nfigure 2\n", "t.lecture");
+  ASSERT_EQ(q.error, "");
+  EXPECT_EQ(q.lecture.slides[0].options.caption, "first");
 }

@@ -16,7 +16,7 @@ namespace {
 // options that belong to the window or the run, not to a slide
 constexpr std::string_view kNotSlideKeys[] = {"screenshot", "frames",  "size",    "shaders",
                                               "samples",    "no-xvfb", "animate", "help",
-                                              "version",    "lecture", "export"};
+                                              "version",    "lecture", "export",  "svg"};
 
 // the line without the blanks around it
 std::string_view trimmed(std::string_view s) {
@@ -236,6 +236,7 @@ Options slideOptions(const Slide& slide, const Model& model) {
   if (!slide.gives("theme")) o.theme = model.settings.theme;
   if (!slide.gives("font-scale")) o.fontScale = model.settings.fontScale;
   if (!slide.gives("hide-ui")) o.hideUi = !model.settings.showUi;
+  if (!slide.gives("present")) o.present = model.settings.present;
   return o;
 }
 

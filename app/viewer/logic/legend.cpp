@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include "logic/text.hpp"
+#include "logic/y_gap.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -104,6 +107,8 @@ Legend legend2D(const Model& model) {
                          "crowded cell (bisection)"));
   if (opt.showStructure) structureRows(scene, pal, opt, g);
   if (opt.showBox) g.rows.push_back(line(pal.box, true, 1.2f, "bounding box"));
+  // the paper's rule (Fig. 5): the smallest y-gap and what it costs, beside convexloc's
+  if (opt.showGap) g.rows.push_back(line(pal.negative, true, 1.6f, yGapCostText(scene)));
   return g;
 }
 
@@ -138,7 +143,7 @@ Legend legend3D(const Model& model) {
                          "crowded cell (walk)"));
   if (!cells.empty() && opt.showCube)
     g.rows.push_back(line(pal.cube, false, 1.0f, "cube-map grid around x_T"));
-  // the pinned cells: their pyramids from x_T and the faces they list
+  // the pinned cells (Fig. 7): their pyramids from x_T and the faces they list
   for (const auto& [k, colour] : {std::pair{scene.pinnedCell(), pal.crowded},
                                   std::pair{scene.secondPinnedCell(), pal.inside}}) {
     if (k < 0) continue;

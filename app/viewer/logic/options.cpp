@@ -199,8 +199,8 @@ bool solidOption(std::string_view a, ArgReader& in, Options& o) {
       o.hideSlice = true;
       return true;
     }
-    if (v.size() < 3 || v[1] != '=' ||
-        (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') || !parseDouble(v.substr(2), s.offset))
+    if (v.size() < 3 || v[1] != '=' || (v[0] != 'x' && v[0] != 'y' && v[0] != 'z') ||
+        !parseDouble(v.substr(2), s.offset))
       return in.fail("--slice needs AXIS=VALUE, e.g. z=0.25, or none");
     s.axis = v[0] - 'x';
     o.slice = s;
@@ -386,6 +386,8 @@ bool lectureOption(std::string_view a, ArgReader& in, Options& o) {
     const std::vector<std::string_view> args(words.begin(), words.end());
     if (std::string e = parseInto(args, o); !e.empty()) return in.fail("--figure: " + e);
     o.figure = n;
+    // the figure's caption, unless one was given: a --caption before or after wins
+    if (o.caption.empty()) o.caption = std::string(figure(n).caption);
   } else if (a == "--lecture") {
     if (!in.value(v) || v.empty()) return in.fail("--lecture needs a .lecture file");
     o.lecture = std::string(v);
@@ -482,12 +484,11 @@ Mouse: drag to pan (3D: orbit; right drag pans), wheel to zoom at the cursor, cl
 place a point (3D: on the slicing plane; Shift-click pins the cell under the cursor),
 drag a vertex handle to edit the polygon; in the Lines mode (L) a drag places a line.
 In the 3D Planes mode (L) the panel's sliders move the plane.
-Keys: F fit, H hide panels, T dark/light theme, 1..5 method, L lines mode (3D: planes
-mode), Space new
-spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P presentation mode, G
-legend; Left/Right previous/next step of the placed point's query, R the radius filter
-on/off (paper-faithful mode); in a lecture PageDown / PageUp next and previous slide,
-Home / End first and last.
+Keys: F fit, H hide panels, T theme (dark/light), 1..5 method, L lines mode (3D: planes
+mode), Space new spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P
+presentation mode, G legend, Left/Right previous/next step of the placed point's query, R
+the radius filter on/off (paper-faithful mode); in a lecture PageDown / PageUp next and
+previous slide, Home / End first and last.
 )";
 }
 

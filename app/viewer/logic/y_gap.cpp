@@ -33,19 +33,22 @@ void arrowHead(glm::dvec2 tip, double dir, double size, Rgba c, DrawList& out) {
   out.segment(at2(tip), at2(tip + glm::dvec2(0.45 * size, -dir * size)), c, 2.0f);
 }
 
-// what the paper's rule costs and what convexloc builds, one line each
-std::string costText(const Scene2D& scene, const YGap& g) {
-  const double slabs = g.paperSlabs();
-  std::string s = "paper: (ymax - ymin) / gap = " + approx(g.ymax - g.ymin, 3) + " / " +
-                  approx(g.gap(), 3) + " = " + largeText(slabs) + " slabs, " +
-                  largeBytes(slabs * kPaperBytesPerSlab) + " at least";
+}  // namespace
+
+std::string yGapCostText(const Scene2D& scene) {
+  const auto g = smallestYGap(scene.polygon());
+  if (!g) return {};
+  const double slabs = g->paperSlabs();
+  std::string s = "smallest y-gap " + approx(g->gap(), 3) +
+                  "\npaper: (ymax - ymin) / gap = " + approx(g->ymax - g->ymin, 3) + " / " +
+                  approx(g->gap(), 3) + "\n  = " + largeText(slabs) + " slabs, " +
+                  largeBytes(slabs * kPaperBytesPerSlab) + " at least" +
+                  (slabs <= 1000.0 ? " (the ticks left)" : "");
   if (scene.method() == Method2D::Uniform)
-    s += "\nconvexloc: " + grouped(scene.effectiveResolution()) + " slabs (bounded by N), " +
-         bytesText(scene.stats().bytes) + "; crowded slabs list extra edges";
+    s += "\nconvexloc: " + grouped(scene.effectiveResolution()) + " slabs (bounded), " +
+         bytesText(scene.stats().bytes) + ";\n  crowded slabs list extra edges";
   return s;
 }
-
-}  // namespace
 
 std::optional<YGap> smallestYGap(const ConvexPolygon& polygon) {
   std::vector<double> ys;
@@ -79,9 +82,14 @@ void drawYGap(const Scene2D& scene, const Palette& pal, DrawList& out) {
   out.segment(at2({xa, g->hi + len}), at2({xa, g->lo - len}), c, 2.0f);
   arrowHead({xa, g->hi}, -1.0, 0.3 * len, c, out);
   arrowHead({xa, g->lo}, 1.0, 0.3 * len, c, out);
-  out.label(at2({xa, g->hi + len}), "smallest y-gap " + approx(g->gap(), 3), c, {-70.0f, -22.0f});
-  out.label(at2({0.5 * (box.lo.x + box.hi.x), box.lo.y}), costText(scene, *g), pal.text,
-            {0.0f, 40.0f});
+  // the paper's slabs as a ruler left of the box, one tick a slab, where they can be told
+  // apart; convexloc's own slabs are the structure drawn across the polygon
+  if (g->paperSlabs() <= 1000.0)
+    for (double y = g->ymin; y <= g->ymax + 0.5 * g->gap(); y += g->gap())
+      out.segment(at2({x0 - 0.03 * w, y}), at2({x0 + 0.02 * w, y}), withAlpha(c, 0.8f), 1.25f);
+  // the label above the gap's upper line, mid-polygon: the legend may take the right side
+  out.label(at2({0.5 * (box.lo.x + box.hi.x), g->hi}), "smallest y-gap " + approx(g->gap(), 3), c,
+            {0.0f, -16.0f});
 }
 
 }  // namespace convexloc::viewer

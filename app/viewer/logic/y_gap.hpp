@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "convexloc/polygon.hpp"
 #include "logic/colour.hpp"
@@ -27,8 +28,12 @@ inline constexpr double kPaperBytesPerSlab = 8.0;
 // the polygon's smallest y-gap; none when all vertices share one y (impossible for a polygon)
 std::optional<YGap> smallestYGap(const ConvexPolygon& polygon);
 
-// The gap marked on the drawing: two horizontal lines through its vertices, a dimension
-// arrow between them, and the paper's slab count and memory beside convexloc's.
+// the paper's slab count and memory for the smallest gap, and convexloc's count and memory
+// when the method is uniform, one line each ("" without a gap)
+std::string yGapCostText(const Scene2D& scene);
+
+// The gap marked on the drawing: two horizontal lines through its vertices and a dimension
+// arrow between them, labelled with the gap.
 void drawYGap(const Scene2D& scene, const Palette& pal, DrawList& out);
 
 }  // namespace convexloc::viewer

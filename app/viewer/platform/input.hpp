@@ -15,6 +15,8 @@ namespace convexloc::viewer {
 
 // starts collecting the files dropped on `window`
 void watchDrops(GLFWwindow* window);
+// every key press seen, for keyActions (installed after ImGui's backend, which it calls)
+void watchKeys(GLFWwindow* window);
 // the files dropped since the last call, oldest first
 std::vector<std::string> takeDroppedFiles();
 

@@ -133,7 +133,16 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
 }
 
 // the caption, large, in a box along the bottom of the scene area
-void captionBox(const Model& model, UiState& ui, ScreenRect area) {
+void captionBox(Model& model, UiState& ui, ScreenRect area) {
+  // a caption of another height (a new slide's) leaves the scene other room: refit
+  struct Refit {
+    Model& model;
+    const float before;
+    const float& now;
+    ~Refit() {
+      if (std::abs(now - before) > 1.0f) model.requestFit();
+    }
+  } refit{model, ui.captionHeight, ui.captionHeight};
   ui.captionHeight = 0.0f;
   if (model.settings.caption.empty()) return;
   const float w = static_cast<float>(area.size().x) * 0.9f;
@@ -253,9 +262,12 @@ void hints(const Model& model) {
 void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window) {
   sideWindow("convexloc", 0.0f, leftPanelWidth(model, window), window.y);
   dimensionButtons(model);
+  // a lecture's slides first, where one is open; else the figures at the end
+  const bool lecture = ui.show.lecture.slides.size() > 1;
+  if (lecture) lecturePanel(model, ui);
   scenePanels(model, ui);
   if (ImGui::CollapsingHeader("View")) viewPanel(model, renderer, ui);
-  lecturePanel(model, ui);
+  if (!lecture) lecturePanel(model, ui);
   hints(model);
   ImGui::End();
 }
@@ -378,8 +390,8 @@ void scanAssets(UiState& ui) {
 
 void perform(const Action& action, Model& model, UiState& ui) {
   // the panel's settings, taken from the scene first where the scene's changed
-  followSpray(ui, model.dim == Dim::Two ? model.scene2d.spraySettings()
-                                        : model.scene3d().spraySettings());
+  followSpray(
+      ui, model.dim == Dim::Two ? model.scene2d.spraySettings() : model.scene3d().spraySettings());
   const SpraySettings spray{static_cast<std::size_t>(ui.sprayCount), ui.spraySeed + 1,
                             ui.sprayNear};
   switch (action.kind) {

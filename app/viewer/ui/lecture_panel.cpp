@@ -15,21 +15,22 @@
 namespace convexloc::viewer {
 namespace {
 
-// the paper's figure n as the only slide; the panels stay as they are
+// the paper's figure n as the only slide, in the viewer's text size and panels
 void showFigure(Model& model, UiState& ui, int n) {
-  const bool panels = model.settings.showUi;
   const std::vector<std::string> words = figureArgs(n);
   const std::vector<std::string_view> args(words.begin(), words.end());
   ui.show.lecture = figureLecture(n, parseOptions(args).options);
+  ui.show.lecture.slides[0].keys = {"figure", "theme"};
   goToSlide(model, ui, 0);
-  model.settings.showUi = panels;
 }
 
 // the slides, one line each; a click shows it
 void slideList(Model& model, UiState& ui) {
   const auto& slides = ui.show.lecture.slides;
   const float rows = static_cast<float>(std::min<std::size_t>(slides.size(), 8));
-  ImGui::BeginChild("##slides", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 8.0f),
+  ImGui::BeginChild("##slides",
+                    ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() +
+                                     2.0f * ImGui::GetStyle().WindowPadding.y),
                     true);
   for (std::size_t k = 0; k < slides.size(); ++k) {
     char line[160];
@@ -145,7 +146,9 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
   else
     ImGui::TextUnformatted(s.title.c_str());
   ImGui::SetWindowFontScale(1.0f);
-  if (!s.caption.empty()) ImGui::TextWrapped("%s", s.caption.c_str());
+  // a caption the scene shows in its own box (--caption) is not written twice
+  if (!s.caption.empty() && model.settings.caption.empty())
+    ImGui::TextWrapped("%s", s.caption.c_str());
   ImGui::PopTextWrapPos();
   const float band = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + 8.0f;
   ImGui::End();
@@ -153,8 +156,7 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
 }
 
 void lecturePanel(Model& model, UiState& ui) {
-  if (!ImGui::CollapsingHeader("Lecture", ui.show.active() ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-    return;
+  if (!ImGui::CollapsingHeader("Lecture", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (ui.show.lecture.slides.size() > 1) {
     slideList(model, ui);
     slideButtons(model, ui);

@@ -7,17 +7,21 @@
 
 #include "ui/lecture_panel.hpp"
 #include "ui/screenshot.hpp"
+#include "ui/svg_export.hpp"
 
 namespace convexloc::viewer {
 
-bool SlideExporter::afterFrame(Model& model, UiState& ui, int width, int height) {
+bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui, int width,
+                               int height) {
   if (!active() || finished_ || ++frames_ < kFramesPerSlide) return true;
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   char name[32];
-  std::snprintf(name, sizeof name, "slide-%02zu.png", ui.show.current + 1);
+  std::snprintf(name, sizeof name, "slide-%02zu", ui.show.current + 1);
   const std::string path = (std::filesystem::path(dir_) / name).string();
-  if (const std::string problem = saveScreenshot(path, width, height); !problem.empty()) {
+  std::string problem = saveScreenshot(path + ".png", width, height);
+  if (problem.empty()) writeSceneSvg(model, view, path + ".svg", problem);
+  if (!problem.empty()) {
     std::cerr << "convexloc-viewer: " << problem << "\n";
     return false;
   }
@@ -27,7 +31,7 @@ bool SlideExporter::afterFrame(Model& model, UiState& ui, int width, int height)
     finished_ = true;
     return true;
   }
-  const std::string problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
+  problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
   if (!problem.empty()) {
     std::cerr << "convexloc-viewer: slide " << ui.show.current + 1 << ": " << problem << "\n";
     return false;

@@ -1,10 +1,11 @@
 // convexloc-viewer — --export DIR: every slide of the lecture (or the figure) rendered and
-// written as DIR/slide-01.png, slide-02.png, ..., driven by the frame loop.
+// written as DIR/slide-01.png and slide-01.svg, slide-02..., driven by the frame loop.
 #pragma once
 
 #include <cstddef>
 #include <string>
 
+#include "gl/scene_view.hpp"
 #include "logic/model.hpp"
 #include "ui/ui_state.hpp"
 
@@ -21,7 +22,7 @@ class SlideExporter {
   bool active() const { return !dir_.empty(); }
   // Called after each frame is drawn (before the swap): writes the slide once its frames
   // are done and shows the next. False on a problem, printed on stderr.
-  bool afterFrame(Model& model, UiState& ui, int width, int height);
+  bool afterFrame(Model& model, const SceneView& view, UiState& ui, int width, int height);
   // every slide written
   bool finished() const { return finished_; }
   std::size_t written() const { return written_; }
