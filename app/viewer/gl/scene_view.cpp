@@ -28,6 +28,14 @@ bool same(const View3DOptions& a, const View3DOptions& b) {
 // the camera has wandered so far from the origin, in pixels, that floats would blur
 constexpr double kRebasePixels = 1e5;
 
+// `more` drawn after what `out` holds
+void append(const DrawList& more, DrawList& out) {
+  out.fills.insert(out.fills.end(), more.fills.begin(), more.fills.end());
+  out.segments.insert(out.segments.end(), more.segments.begin(), more.segments.end());
+  out.markers.insert(out.markers.end(), more.markers.begin(), more.markers.end());
+  out.labels.insert(out.labels.end(), more.labels.begin(), more.labels.end());
+}
+
 void classColours(const Palette& pal, FrameParams& f) {
   f.classColours[0] = pal.inside;
   f.classColours[1] = pal.boundary;
@@ -122,10 +130,7 @@ void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
   buildStructure2D(model.scene2d, pal, untinted, structure_);
   DrawList step;
   buildAnimation2D(model.scene2d, model.build.step, pal, step);
-  structure_.fills.insert(structure_.fills.end(), step.fills.begin(), step.fills.end());
-  structure_.segments.insert(structure_.segments.end(), step.segments.begin(), step.segments.end());
-  structure_.markers.insert(structure_.markers.end(), step.markers.begin(), step.markers.end());
-  structure_.labels.insert(structure_.labels.end(), step.labels.begin(), step.labels.end());
+  append(step, structure_);
 }
 
 void SceneView::syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt,
@@ -173,10 +178,19 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
   }
   // the cube faces seen from inside change only when the eye crosses one's plane
   const unsigned far = farCubeFaces(scene, model.camera3d.eye());
-  if (reshape || restyle || v.structure != seen_.structure || far != farFaces_) {
+  const std::uint64_t build = model.build.active ? model.build.version : ~0ull;
+  if (reshape || restyle || v.structure != seen_.structure || far != farFaces_ ||
+      build != buildSeen_) {
     View3DOptions noSlice = opt;
     noSlice.showSlice = false;  // the section has its own layer
+    noSlice.showTints = opt.showTints && !model.build.active;  // the build tints instead
     buildStructure3D(scene, pal, noSlice, far, structure_);
+    if (model.build.active) {
+      DrawList step;
+      buildAnimation3D(scene, model.build.step, far, pal, step);
+      append(step, structure_);
+    }
+    buildSeen_ = build;
     farFaces_ = far;
     ++uploads_;
     renderer.upload(Layer::Structure, structure_, origin_);

@@ -89,7 +89,8 @@ void methodPanel3D(Model& model, UiState& ui) {
   methodChoice(scene);
   if (scene.method() == Method3D::Cubemap) resolutionSlider(scene, kGridSlider);
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
-  whyButton(model);  // Why O(1): the cost against F
+  buildControls(model);  // the build animation
+  whyButton(model);      // Why O(1): the cost against F
 }
 
 void slicePanel3D(Model& model) {

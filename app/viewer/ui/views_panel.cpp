@@ -31,9 +31,18 @@ void splitControls(Model& model) {
   }
 }
 
+namespace {
+
+// the build's steps in the scene shown
+std::size_t stepsShown(Model& model) {
+  return model.dim == Dim::Two ? buildSteps(model.scene2d) : buildSteps(model.scene3d());
+}
+
+}  // namespace
+
 void buildControls(Model& model) {
   BuildPlayback& b = model.build;
-  const std::size_t steps = model.scene2d.cells().empty() ? 0 : model.scene2d.polygon().size();
+  const std::size_t steps = stepsShown(model);
   if (steps == 0) {
     b.active = false;
     return;
@@ -46,25 +55,27 @@ void buildControls(Model& model) {
     ++b.version;
   }
   help(
-      "The cells receiving their edges one edge at a time, in edge order: the cells listing the "
-      "edge just added flash, tints grow with the edges held, crowded cells get a cross.");
+      "The cells receiving their edges (faces) one at a time, in order: the cells listing the "
+      "one just added flash, tints grow with what they hold, crowded cells get a cross.");
   if (!b.active) return;
   ImGui::SameLine();
   int k = static_cast<int>(b.step);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 3.5f);
-  if (ImGui::SliderInt("##buildstep", &k, 0, static_cast<int>(steps), "edge %d"))
+  const bool plane = model.dim == Dim::Two;
+  if (ImGui::SliderInt("##buildstep", &k, 0, static_cast<int>(steps),
+                       plane ? "edge %d" : "face %d"))
     b.show(static_cast<std::size_t>(k), steps);
   ImGui::SameLine();
   if (ImGui::Button("Done")) {
     b.active = b.playing = false;
     ++b.version;
   }
-  ImGui::TextDisabled("%zu of %zu edges in", b.step, steps);
+  ImGui::TextDisabled("%zu of %zu %s in", b.step, steps, model.dim == Dim::Two ? "edges" : "faces");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
   float speed = static_cast<float>(b.edgesPerSecond);
-  if (ImGui::SliderFloat("##buildspeed", &speed, 0.5f, 60.0f, "%.1f edges/s",
-                         ImGuiSliderFlags_Logarithmic))
+  if (ImGui::SliderFloat("##buildspeed", &speed, 0.5f, 60.0f,
+                         plane ? "%.1f edges/s" : "%.1f faces/s", ImGuiSliderFlags_Logarithmic))
     b.edgesPerSecond = speed;
 }
 
@@ -111,8 +122,7 @@ void splitInspector(const Model& model) {
 void buildLegend(const Model& model) {
   if (!model.build.active || model.dim != Dim::Two || model.scene2d.cells().empty()) return;
   const Palette& pal = paletteFor(model.settings.theme);
-  ImGui::TextDisabled("Build: %zu of %zu edges in", model.build.step,
-                      model.scene2d.polygon().size());
+  ImGui::TextDisabled("Build: %zu of %zu edges in", model.build.step, buildSteps(model.scene2d));
   swatchBox(withAlpha(pal.hoverEdge, 0.22f), pal.hoverEdge);
   ImGui::Text("cells listing the edge just added");
   swatchBox(cellTint(pal, 2, 0, false), withAlpha(pal.extraEdges, 0.8f));
@@ -123,8 +133,7 @@ void buildLegend(const Model& model) {
 }
 
 void advanceBuild(Model& model, double seconds) {
-  if (model.dim != Dim::Two || model.scene2d.cells().empty()) return;
-  model.build.advance(seconds, model.scene2d.polygon().size());
+  model.build.advance(seconds, stepsShown(model));
 }
 
 }  // namespace convexloc::viewer
