@@ -1,6 +1,7 @@
 // convexloc-viewer — the split view's, the build animation's and Why O(1)'s controls.
 #include "ui/views_panel.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <imgui.h>
@@ -95,7 +96,9 @@ void splitDecorations(const Model& model) {
        {std::pair{l, &model.scene2d}, std::pair{r, &model.split.scene()}}) {
     const std::string text = SecondView::traceCaption(*scene);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 at(static_cast<float>(half.middle().x) - 0.5f * size.x,
+    // centred over the half, but never starting left of it
+    const ImVec2 at(std::max(static_cast<float>(half.middle().x) - 0.5f * size.x,
+                             static_cast<float>(half.lo.x) + 2.0f * pad),
                     static_cast<float>(half.lo.y) + 1.5f * pad);
     dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
                       ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
