@@ -150,6 +150,12 @@ TEST(SplitView, FollowsTheShapeAndThePoint) {
   second.sync(main);
   ASSERT_TRUE(second.scene().probe().has_value());
   EXPECT_EQ(second.scene().probe()->trace.result, convexloc::Location::Outside);
+  // the hovered point follows; the cell under it is the second method's own
+  main.hover(Vec2{0.1, 0.1});
+  second.sync(main);
+  ASSERT_TRUE(second.scene().hoverPoint().has_value());
+  EXPECT_EQ(second.scene().hoverPoint()->x, 0.1);
+  EXPECT_GE(second.scene().hoveredCell(), 0);
 }
 
 TEST(SplitView, HalvesAndTheRightCamera) {
