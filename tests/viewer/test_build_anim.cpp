@@ -5,6 +5,7 @@
 
 #include "logic/build_anim.hpp"
 #include "logic/scene2d.hpp"
+#include "logic/scene3d.hpp"
 #include "logic/second_view.hpp"
 
 namespace cv = convexloc::viewer;
@@ -41,6 +42,29 @@ TEST(BuildAnim, CountsAtEachStepAreTheListedEdgesBelowIt) {
     const std::vector<std::size_t> all = order.countsAt(order.steps());
     for (std::size_t c = 0; c < cells.size(); ++c) EXPECT_EQ(all[c], cells[c].edges.size());
   }
+}
+
+TEST(BuildAnim, CubeMapCellsReceiveTheirFaces) {
+  cv::Scene3D scene;
+  scene.setMethod(convexloc::Method3D::Cubemap);
+  const auto& cells = scene.cells();
+  ASSERT_FALSE(cells.empty());
+  const std::size_t f = scene.polyhedron().faceCount();
+  const cv::BuildOrder order(cells, f);
+  ASSERT_EQ(order.steps(), f);
+  ASSERT_EQ(cv::buildStepCount(scene), f);
+  for (const std::size_t k : {std::size_t{0}, f / 3, f}) {
+    const std::vector<std::size_t> counts = order.countsAt(k);
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      std::size_t n = 0;
+      for (const std::uint32_t face : cells[c].faces) n += face < k ? 1 : 0;
+      EXPECT_EQ(counts[c], n);
+    }
+  }
+  cv::DrawList step;
+  cv::buildAnimation3D(scene, 1, 0x3f, cv::paletteFor(cv::Theme::Dark), step);
+  ASSERT_EQ(step.labels.size(), 1u);
+  EXPECT_EQ(step.labels[0].text.rfind("f0 added: 1 of ", 0), 0u);
 }
 
 TEST(BuildAnim, EachEdgeFlashesInTheCellsListingIt) {
@@ -126,6 +150,12 @@ TEST(SplitView, FollowsTheShapeAndThePoint) {
   second.sync(main);
   ASSERT_TRUE(second.scene().probe().has_value());
   EXPECT_EQ(second.scene().probe()->trace.result, convexloc::Location::Outside);
+  // the hovered point follows; the cell under it is the second method's own
+  main.hover(Vec2{0.1, 0.1});
+  second.sync(main);
+  ASSERT_TRUE(second.scene().hoverPoint().has_value());
+  EXPECT_EQ(second.scene().hoverPoint()->x, 0.1);
+  EXPECT_GE(second.scene().hoveredCell(), 0);
 }
 
 TEST(SplitView, HalvesAndTheRightCamera) {

@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "logic/log_plot.hpp"
+#include "logic/model.hpp"
+#include "logic/options.hpp"
 #include "logic/scaling.hpp"
 
 namespace cv = convexloc::viewer;
@@ -207,4 +210,33 @@ TEST(LogPlot, DecadeLabels) {
   EXPECT_EQ(cv::decadeText(7), "10M");
   EXPECT_EQ(cv::decadeText(-1), "0.1");
   EXPECT_EQ(cv::decadeText(-9), "1e-9");
+}
+
+TEST(ScalingOptions, WhySplitAndBuildFlags) {
+  const std::vector<std::string_view> args = {
+      "--why", "--why-max", "4096", "--split", "wedge", "--build-step", "3", "--why-svg", "x.svg"};
+  const cv::ParsedOptions p = cv::parseOptions(args);
+  ASSERT_TRUE(p.error.empty()) << p.error;
+  EXPECT_TRUE(p.options.why);
+  EXPECT_EQ(p.options.whyMost, 4096u);
+  EXPECT_EQ(p.options.split, "wedge");
+  EXPECT_EQ(p.options.buildStep, 3u);
+  EXPECT_EQ(p.options.whySvg, "x.svg");
+  const std::vector<std::string_view> bad = {"--why-max", "5"};
+  EXPECT_FALSE(cv::parseOptions(bad).error.empty());
+  EXPECT_NE(cv::usageText().find("--why-svg FILE"), std::string::npos);
+}
+
+TEST(ScalingOptions, SplitAndBuildApplyToTheModel) {
+  cv::Model model;
+  cv::Options o;
+  o.split = "wedge";
+  o.buildStep = 4;
+  EXPECT_TRUE(model.apply(o).empty());
+  EXPECT_TRUE(model.split.enabled());
+  EXPECT_EQ(model.split.method(), Method2D::Wedge);
+  EXPECT_TRUE(model.build.active);
+  EXPECT_EQ(model.build.step, 4u);
+  o.split = "cubemap";
+  EXPECT_FALSE(model.apply(o).empty());
 }

@@ -133,10 +133,7 @@ void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
   buildStructure2D(model.scene2d, pal, untinted, structure_);
   DrawList step;
   buildAnimation2D(model.scene2d, model.build.step, pal, step);
-  structure_.fills.insert(structure_.fills.end(), step.fills.begin(), step.fills.end());
-  structure_.segments.insert(structure_.segments.end(), step.segments.begin(), step.segments.end());
-  structure_.markers.insert(structure_.markers.end(), step.markers.begin(), step.markers.end());
-  structure_.labels.insert(structure_.labels.end(), step.labels.begin(), step.labels.end());
+  append(structure_, step);
 }
 
 void SceneView::syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt,
@@ -193,10 +190,19 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
   }
   // the cube faces seen from inside change only when the eye crosses one's plane
   const unsigned far = farCubeFaces(scene, model.camera3d.eye());
-  if (reshape || restyle || v.structure != seen_.structure || far != farFaces_) {
+  const std::uint64_t build = model.build.active ? model.build.version : ~0ull;
+  if (reshape || restyle || v.structure != seen_.structure || far != farFaces_ ||
+      build != buildSeen_) {
     View3DOptions noSlice = opt;
     noSlice.showSlice = false;  // the section has its own layer
+    noSlice.showTints = opt.showTints && !model.build.active;  // the build tints instead
     buildStructure3D(scene, pal, noSlice, far, structure_);
+    if (model.build.active) {
+      DrawList step;
+      buildAnimation3D(scene, model.build.step, far, pal, step);
+      append(structure_, step);
+    }
+    buildSeen_ = build;
     farFaces_ = far;
     ++uploads_;
     renderer.upload(Layer::Structure, structure_, origin_);

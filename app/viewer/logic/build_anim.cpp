@@ -6,6 +6,7 @@
 
 #include "logic/camera2d.hpp"
 #include "logic/scene2d.hpp"
+#include "logic/scene3d.hpp"
 #include "logic/text.hpp"
 
 namespace convexloc::viewer {
@@ -25,13 +26,6 @@ glm::dvec2 middleOf(const std::vector<Vec2>& outline) {
 }
 
 }  // namespace
-
-BuildOrder::BuildOrder(std::span<const Cell2D> cells, std::size_t edgeCount)
-    : cellsOfEdge_(edgeCount), cellCount_(cells.size()) {
-  for (std::size_t c = 0; c < cells.size(); ++c)
-    for (const std::uint32_t e : cells[c].edges)
-      if (e < edgeCount) cellsOfEdge_[e].push_back(c);
-}
 
 std::vector<std::size_t> BuildOrder::countsAt(std::size_t k) const {
   std::vector<std::size_t> counts(cellCount_, 0);
@@ -94,6 +88,57 @@ void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal
   const float reach =
       12.0f + std::abs(n.x) * 3.6f * static_cast<float>(text.size()) + std::abs(n.y) * 9.0f;
   out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, n * reach);
+}
+
+// a cube-map cell's square, filled
+void square(const Cell3D& c, Rgba colour, DrawList& out) {
+  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[1]), toGlm(c.corners[2]), colour);
+  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[2]), toGlm(c.corners[3]), colour);
+}
+
+void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces, const Palette& pal,
+                      DrawList& out) {
+  const std::vector<Cell3D>& cells = scene.cells();
+  const ConvexPolyhedron& solid = scene.polyhedron();
+  if (cells.empty()) return;
+  const BuildOrder order(cells, solid.faceCount());
+  step = std::min(step, order.steps());
+  const std::vector<std::size_t> counts = order.countsAt(step);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool crowded = counts[c] > kCrowdedCell3D;
+    const glm::dvec3 middle = 0.5 * (toGlm(cells[c].corners[0]) + toGlm(cells[c].corners[2]));
+    if (counts[c] > 0 && (farFaces >> cells[c].cubeFace & 1u))
+      square(cells[c], cellTint(pal, counts[c], 0, crowded), out);
+    if (crowded) out.marker(middle, pal.crowded, 9.0f, MarkerShape::Cross);
+  }
+  if (step == 0) return;
+  // the face just added, and the cells that list it, outlined
+  const std::size_t f = step - 1;
+  for (const std::size_t c : order.cellsOf(f)) {
+    square(cells[c], withAlpha(pal.hoverEdge, 0.22f), out);
+    for (int k = 0; k < 4; ++k)
+      out.segment(toGlm(cells[c].corners[k]), toGlm(cells[c].corners[(k + 1) % 4]), pal.hoverEdge,
+                  2.0f);
+  }
+  const auto& t = solid.triangles()[f];
+  const glm::dvec3 a = toGlm(solid.vertices()[t[0]]), b = toGlm(solid.vertices()[t[1]]),
+                   c = toGlm(solid.vertices()[t[2]]);
+  out.triangle(a, b, c, withAlpha(pal.hoverEdge, 0.6f));
+  out.segment(a, b, pal.hoverEdge, 3.0f);
+  out.segment(b, c, pal.hoverEdge, 3.0f);
+  out.segment(c, a, pal.hoverEdge, 3.0f);
+  std::string text = numbered("f", f);
+  text.append(" added: ").append(std::to_string(step)).append(" of ");
+  text.append(std::to_string(order.steps())).append(" faces");
+  out.label((a + b + c) / 3.0, std::move(text), pal.hoverEdge, {0.0f, -22.0f});
+}
+
+std::size_t buildStepCount(const Scene2D& scene) {
+  return scene.cells().empty() ? 0 : scene.polygon().size();
+}
+
+std::size_t buildStepCount(const Scene3D& scene) {
+  return scene.cells().empty() ? 0 : scene.polyhedron().faceCount();
 }
 
 }  // namespace convexloc::viewer

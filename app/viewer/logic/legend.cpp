@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "logic/build_anim.hpp"
 #include "logic/text.hpp"
 #include "logic/y_gap.hpp"
 
@@ -70,15 +71,22 @@ void structureRows(const Scene2D& scene, const Palette& pal, const View2DOptions
 // the build animation's rows: the cells the edge just added went to, the tint of the edges
 // held so far, the crowded cells
 void buildRows(const Model& model, const Palette& pal, Legend& g) {
-  g.subtitle = "build: " + std::to_string(model.build.step) + " of " +
-               std::to_string(model.scene2d.polygon().size()) + " edges in";
-  g.rows.push_back(
-      box(withAlpha(pal.hoverEdge, 0.22f), pal.hoverEdge, "cells listing the edge just added"));
-  g.rows.push_back(
-      box(cellTint(pal, 2, 0, false), withAlpha(pal.extraEdges, 0.8f), "tint: edges held so far"));
-  if (model.scene2d.stats().maxPerCell > kCrowdedCell)
-    g.rows.push_back(box(cellTint(pal, 0, 0, true), withAlpha(pal.crowded, 0.8f),
-                         "crowded (> " + std::to_string(kCrowdedCell) + " edges), crossed"));
+  const bool flat = model.dim == Dim::Two;
+  const char* noun = flat ? "edge" : "face";
+  const std::size_t total = flat ? buildStepCount(model.scene2d) : buildStepCount(model.scene3d());
+  const std::size_t crowdedAbove = flat ? kCrowdedCell : kCrowdedCell3D;
+  const std::size_t most =
+      flat ? model.scene2d.stats().maxPerCell : model.scene3d().stats().maxPerCell;
+  g.subtitle = "build: " + std::to_string(model.build.step) + " of " + std::to_string(total) + " " +
+               noun + "s in";
+  g.rows.push_back(box(withAlpha(pal.hoverEdge, 0.22f), pal.hoverEdge,
+                       std::string("cells listing the ") + noun + " just added"));
+  g.rows.push_back(box(cellTint(pal, 2, 0, false), withAlpha(pal.extraEdges, 0.8f),
+                       std::string("tint: ") + noun + "s held so far"));
+  if (most > crowdedAbove)
+    g.rows.push_back(
+        box(cellTint(pal, 0, 0, true), withAlpha(pal.crowded, 0.8f),
+            "crowded (> " + std::to_string(crowdedAbove) + " " + noun + "s), crossed"));
 }
 
 Legend legend2D(const Model& model) {
@@ -135,10 +143,13 @@ Legend legend3D(const Model& model) {
   });
   const bool crowded = std::any_of(cells.begin(), cells.end(),
                                    [](const Cell3D& c) { return c.faces.size() > kCrowdedCell3D; });
-  if (opt.showCube && opt.showTints && extra)
+  if (model.build.active) {
+    buildRows(model, pal, g);
+  } else if (opt.showCube && opt.showTints && extra) {
     g.rows.push_back(box(cellTint(pal, 2, kBaseFacesPerCell, false),
                          withAlpha(pal.extraEdges, 0.8f), "cell listing 2+ faces"));
-  if (opt.showCube && opt.showTints && crowded)
+  }
+  if (!model.build.active && opt.showCube && opt.showTints && crowded)
     g.rows.push_back(box(cellTint(pal, 0, kBaseFacesPerCell, true), withAlpha(pal.crowded, 0.8f),
                          "crowded cell (walk)"));
   if (!cells.empty() && opt.showCube)

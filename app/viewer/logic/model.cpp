@@ -341,8 +341,9 @@ void Model::applyTeachingViews(const Options& o) {
     }
   }
   if (o.buildStep) {
-    build.active = dim == Dim::Two;
-    build.show(*o.buildStep, scene2d.polygon().size());
+    const std::size_t steps = dim == Dim::Two ? buildStepCount(scene2d) : buildStepCount(scene3d());
+    build.active = steps > 0;
+    build.show(*o.buildStep, steps);
   }
 }
 

@@ -85,7 +85,7 @@ class Model {
   // its measurement, in a worker thread (held apart so that the model stays movable)
   std::unique_ptr<ScalingWorker> scaling = std::make_unique<ScalingWorker>();
   SecondView split;        // 2D: a second method beside the current one
-  BuildPlayback build;     // 2D: the cells receiving their edges one at a time
+  BuildPlayback build;     // the cells receiving their edges (faces) one at a time
   // something moves without input (a measurement, the build playing): draw every frame
   bool busy() const { return (scaling && scaling->running()) || build.playing; }
 

@@ -472,7 +472,7 @@ Why O(1), split view, build:
   --why-max N           the largest N measured (8 .. 10^6, default 10^6)
   --why-svg FILE        measure without a window, write the plots as SVG and exit
   --split M             2D: the scene twice, method M in the right half, one camera
-  --build-step K        2D: the cells after receiving edges 0 .. K-1 (the build animation)
+  --build-step K        the cells after receiving edges (3D: faces) 0 .. K-1 (build animation)
 Without hands:
   --screenshot FILE     render --frames frames (default 3), write FILE (PNG) and exit
   --svg FILE            the same, writing the scene as SVG (vector; both may be given)

@@ -196,7 +196,7 @@ PlotStyle plotStyle(Theme theme, double fontPx) {
   s.frame = withAlpha(pal.text, 0.7f);
   s.grid = withAlpha(pal.text, 0.15f);
   s.fontPx = fontPx;
-  s.charWidth = 0.52 * fontPx;
+  s.charWidth = 0.56 * fontPx;
   return s;
 }
 

@@ -23,6 +23,8 @@ void SecondView::sync(const Scene2D& main) {
     }
     overlaySeen_ = v.overlay;
   }
+  // the cell under the cursor, in this half's own cells
+  if (main.hoverPoint() != scene_.hoverPoint()) scene_.hover(main.hoverPoint());
 }
 
 ScreenRect SecondView::left() const {

@@ -22,7 +22,7 @@ class SecondView {
   void setMethod(Method2D m) { scene_.setMethod(m); }
 
   // Brings the right half's scene in step with `main`: its shape (when main's shape
-  // version changed) and its placed point. Cheap when nothing changed.
+  // version changed), its placed point and its hovered point. Cheap when nothing changed.
   void sync(const Scene2D& main);
   // the right half's scene: its locator, cells, probe and trace
   const Scene2D& scene() const { return scene_; }

@@ -154,7 +154,8 @@ void methodPanel3D(Model& model, UiState& ui) {
   // the row is kept for every method, so that the buttons below never move
   if (scene.method() != Method3D::Cubemap) noResolutionRow();
   methodDetails(model, scene, statLines(scene), ui.compare3d, kMethodText3D);
-  whyButton(model);  // Why O(1): the cost against F
+  buildControls(model);  // the build animation
+  whyButton(model);      // Why O(1): the cost against F
 }
 
 void slicePanel3D(Model& model) {

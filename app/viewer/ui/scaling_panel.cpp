@@ -92,13 +92,16 @@ void controls(Model& model, UiState& ui, const ScalingProgress& p) {
 
 // one page of plots in the rest of the window
 void plots(const Model& model, const ScalingProgress& p, bool solid) {
+  // never smaller than the plots stay readable at: the window scrolls instead
+  const float font = ImGui::GetFontSize();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const ImVec2 size(std::max(avail.x, 64.0f * font), std::max(avail.y, 48.0f * font));
   const ImVec2 o = ImGui::GetCursorScreenPos();
-  ImGui::Dummy(avail);
+  ImGui::Dummy(size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const PlotStyle style = plotStyle(model.settings.theme, ImGui::GetFontSize());
+  const PlotStyle style = plotStyle(model.settings.theme, font);
   for (const PlotDrawing& d :
-       scalingDrawings(p.result, model.scaling->config(), style, {avail.x, avail.y}, solid))
+       scalingDrawings(p.result, model.scaling->config(), style, {size.x, size.y}, solid))
     drawPlot(dl, d, o);
 }
 
@@ -107,12 +110,13 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
 void scalingWindow(Model& model, UiState& ui) {
   if (!model.whyOpen) return;
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * 0.7f, io.DisplaySize.y * 0.8f),
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * 0.8f, io.DisplaySize.y * 0.88f),
                            ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);
-  if (!ImGui::Begin("Why O(1): cost against N", &model.whyOpen, ImGuiWindowFlags_NoSavedSettings)) {
+  if (!ImGui::Begin("Why O(1): cost against N", &model.whyOpen,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_HorizontalScrollbar)) {
     ImGui::End();
     return;
   }

@@ -1,6 +1,7 @@
 // convexloc-viewer — the split view's, the build animation's and Why O(1)'s controls.
 #include "ui/views_panel.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <imgui.h>
@@ -31,9 +32,18 @@ void splitControls(Model& model) {
   }
 }
 
+namespace {
+
+// the build's steps in the scene shown
+std::size_t stepsShown(Model& model) {
+  return model.dim == Dim::Two ? buildStepCount(model.scene2d) : buildStepCount(model.scene3d());
+}
+
+}  // namespace
+
 void buildControls(Model& model) {
   BuildPlayback& b = model.build;
-  const std::size_t steps = model.scene2d.cells().empty() ? 0 : model.scene2d.polygon().size();
+  const std::size_t steps = stepsShown(model);
   if (steps == 0) {
     b.active = false;
     return;
@@ -46,25 +56,27 @@ void buildControls(Model& model) {
     ++b.version;
   }
   help(
-      "The cells receiving their edges one edge at a time, in edge order: the cells listing the "
-      "edge just added flash, tints grow with the edges held, crowded cells get a cross.");
+      "The cells receiving their edges (faces) one at a time, in order: the cells listing the "
+      "one just added flash, tints grow with what they hold, crowded cells get a cross.");
   if (!b.active) return;
   ImGui::SameLine();
   int k = static_cast<int>(b.step);
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 3.5f);
-  if (ImGui::SliderInt("##buildstep", &k, 0, static_cast<int>(steps), "edge %d"))
+  const bool plane = model.dim == Dim::Two;
+  if (ImGui::SliderInt("##buildstep", &k, 0, static_cast<int>(steps),
+                       plane ? "edge %d" : "face %d"))
     b.show(static_cast<std::size_t>(k), steps);
   ImGui::SameLine();
   if (ImGui::Button("Done")) {
     b.active = b.playing = false;
     ++b.version;
   }
-  ImGui::TextDisabled("%zu of %zu edges in", b.step, steps);
+  ImGui::TextDisabled("%zu of %zu %s in", b.step, steps, model.dim == Dim::Two ? "edges" : "faces");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
   float speed = static_cast<float>(b.edgesPerSecond);
-  if (ImGui::SliderFloat("##buildspeed", &speed, 0.5f, 60.0f, "%.1f edges/s",
-                         ImGuiSliderFlags_Logarithmic))
+  if (ImGui::SliderFloat("##buildspeed", &speed, 0.5f, 60.0f,
+                         plane ? "%.1f edges/s" : "%.1f faces/s", ImGuiSliderFlags_Logarithmic))
     b.edgesPerSecond = speed;
 }
 
@@ -84,7 +96,9 @@ void splitDecorations(const Model& model) {
        {std::pair{l, &model.scene2d}, std::pair{r, &model.split.scene()}}) {
     const std::string text = SecondView::traceCaption(*scene);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 at(static_cast<float>(half.middle().x) - 0.5f * size.x,
+    // centred over the half, but never starting left of it
+    const ImVec2 at(std::max(static_cast<float>(half.middle().x) - 0.5f * size.x,
+                             static_cast<float>(half.lo.x) + 2.0f * pad),
                     static_cast<float>(half.lo.y) + 1.5f * pad);
     dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
                       ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
@@ -109,8 +123,7 @@ void splitInspector(const Model& model) {
 }
 
 void advanceBuild(Model& model, double seconds) {
-  if (model.dim != Dim::Two || model.scene2d.cells().empty()) return;
-  model.build.advance(seconds, model.scene2d.polygon().size());
+  model.build.advance(seconds, stepsShown(model));
 }
 
 }  // namespace convexloc::viewer
