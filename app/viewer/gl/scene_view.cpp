@@ -125,6 +125,20 @@ glm::mat4 SceneView::splitClip(const Model& model) const {
   return model.split.rightCamera(model.camera2d).clipFromLocal(glm::dvec2(origin_));
 }
 
+// the split view: `draw` with the `left` layer over the left half, then with the `right`
+// layer over the right half through the second camera
+template <class Draw>
+void SceneView::drawHalves(const Model& model, Renderer& renderer, const FrameParams& f, Layer left,
+                           Layer right, Draw draw) const {
+  renderer.clipTo(model.split.left(), f);
+  draw(left, f);
+  FrameParams g = f;
+  g.clipFromLocal = splitClip(model);
+  renderer.clipTo(model.split.right(), g);
+  draw(right, g);
+  renderer.clearClip();
+}
+
 void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
   const Palette& pal = paletteFor(model.settings.theme);
   if (!model.build.active) return buildStructure2D(model.scene2d, pal, opt, structure_);
@@ -194,7 +208,7 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
   if (reshape || restyle || v.structure != seen_.structure || far != farFaces_ ||
       build != buildSeen_) {
     View3DOptions noSlice = opt;
-    noSlice.showSlice = false;  // the section has its own layer
+    noSlice.showSlice = false;                                 // the section has its own layer
     noSlice.showTints = opt.showTints && !model.build.active;  // the build tints instead
     buildStructure3D(scene, pal, noSlice, far, structure_);
     if (model.build.active) {
@@ -287,8 +301,8 @@ void SceneView::drawBase(Model& model, Renderer& renderer, glm::vec2 fbSize, flo
   FrameParams f = frameParams(model, fbSize, pixelRatio);
   const Rgba bg = paletteFor(model.settings.theme).background;
   const glm::mat4 right = splitShown(model) ? splitClip(model) : glm::mat4(0.0f);
-  const BaseKey key{f.clipFromLocal, right, fbSize, uploads_, f.visibleMask, f.pointSize,
-                    f.lineScale};
+  const BaseKey key{f.clipFromLocal, right,       fbSize,     uploads_,
+                    f.visibleMask,   f.pointSize, f.lineScale};
   const std::size_t n = renderer.pointCount();
   if (!renderer.hasTarget()) {
     // no cache: the whole base, every frame
@@ -337,15 +351,7 @@ void SceneView::drawBaseLayers(Model& model, Renderer& renderer, const FramePara
       renderer.drawMarkers(layer, g);
     };
     if (!splitShown(model)) return flat(Layer::Structure, f);
-    // the split view: the current method left, the second right, through its camera
-    renderer.clipTo(model.split.left(), f);
-    flat(Layer::Structure, f);
-    FrameParams g = f;
-    g.clipFromLocal = splitClip(model);
-    renderer.clipTo(model.split.right(), g);
-    flat(Layer::SplitStructure, g);
-    renderer.clearClip();
-    return;
+    return drawHalves(model, renderer, f, Layer::Structure, Layer::SplitStructure, flat);
   }
   const bool transparent = model.settings.view3d.transparent;
   // opaque faces first, pushed back a little so their edges draw over them
@@ -386,13 +392,7 @@ void SceneView::drawOverlay(Model& model, Renderer& renderer, glm::vec2 fbSize, 
     renderer.drawMarkers(layer, g);
   };
   if (!splitShown(model)) return overlay(Layer::Overlay, f);
-  renderer.clipTo(model.split.left(), f);
-  overlay(Layer::Overlay, f);
-  FrameParams g = f;
-  g.clipFromLocal = splitClip(model);
-  renderer.clipTo(model.split.right(), g);
-  overlay(Layer::SplitOverlay, g);
-  renderer.clearClip();
+  drawHalves(model, renderer, f, Layer::Overlay, Layer::SplitOverlay, overlay);
 }
 
 }  // namespace convexloc::viewer

@@ -66,6 +66,9 @@ class SceneView {
   // whether the right half shows (2D, split on, no Lines mode)
   static bool splitShown(const Model& model);
   glm::mat4 splitClip(const Model& model) const;
+  template <class Draw>
+  void drawHalves(const Model& model, Renderer& renderer, const FrameParams& f, Layer left,
+                  Layer right, Draw draw) const;
   // the right half's lists, after a change of its scene, a restyle or a move of the origin
   void syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt, bool force);
   // the structure with the build animation's step over it (tints left to the animation)
@@ -85,12 +88,12 @@ class SceneView {
   View2DOptions options2_{};
   View3DOptions options3_{};
   unsigned farFaces_ = 0;
-  bool linesShown_ = false;          // the 2D Lines mode was on
-  std::uint64_t linesSeen_ = ~0ull;  // the Lines mode's version drawn
+  bool linesShown_ = false;           // the 2D Lines mode was on
+  std::uint64_t linesSeen_ = ~0ull;   // the Lines mode's version drawn
   bool planesShown_ = false;          // the 3D Planes mode was on
   std::uint64_t planesSeen_ = ~0ull;  // the Planes mode's version drawn
   DrawList planesOverlay_;            // its marks over everything
-  std::uint64_t uploads_ = 0;        // grows with every upload the base depends on
+  std::uint64_t uploads_ = 0;         // grows with every upload the base depends on
   BaseKey lastKey_;
   bool cached_ = false;          // the cache holds lastKey_'s picture
   bool partial_ = false;         // ... drawn with a subsample of the points

@@ -25,28 +25,46 @@ LogPlot methodPlot(const std::vector<SeriesOf<Method>>& series, Value value) {
   return p;
 }
 
-// a plot against N of the 2D methods, and what it leaves out
-template <class Value>
-LogPlot plot2D(const ScalingResult& r, const ScalingConfig& c, Value value) {
-  LogPlot p = methodPlot(r.series, value);
-  p.xLabel = "N, edges of a regular N-gon";
-  if (!c.sizes.empty() && c.sizes.back() > c.linearLimit)
-    p.notes.push_back(std::string("halfplane stops at N = ")
-                          .append(grouped(c.linearLimit))
-                          .append(" (O(N) per query)"));
+// the sizes measured, their axis and the O(N) method that stops early, of one dimension
+struct Axis {
+  const char* label;       // the x axis
+  const char* linearName;  // the method that stops early
+  const char* symbol;      // "N" or "F"
+  const std::vector<std::size_t>& sizes;
+  std::size_t linearLimit;
+};
+
+// a plot of one quantity against the axis' sizes, and what it leaves out
+template <class Method, class Value>
+LogPlot plotOf(const std::vector<SeriesOf<Method>>& series, const Axis& axis, Value value) {
+  LogPlot p = methodPlot(series, value);
+  p.xLabel = axis.label;
+  if (!axis.sizes.empty() && axis.sizes.back() > axis.linearLimit)
+    p.notes.push_back(std::string(axis.linearName)
+                          .append(" stops at ")
+                          .append(axis.symbol)
+                          .append(" = ")
+                          .append(grouped(axis.linearLimit))
+                          .append(" (O(")
+                          .append(axis.symbol)
+                          .append(") per query)"));
   return p;
 }
 
-// a plot against F of the 3D methods, and what it leaves out
+// the 2D methods against N
+template <class Value>
+LogPlot plot2D(const ScalingResult& r, const ScalingConfig& c, Value value) {
+  return plotOf(r.series,
+                Axis{"N, edges of a regular N-gon", "halfplane", "N", c.sizes, c.linearLimit},
+                value);
+}
+
+// the 3D methods against F
 template <class Value>
 LogPlot plot3D(const ScalingResult& r, const ScalingConfig& c, Value value) {
-  LogPlot p = methodPlot(r.series3d, value);
-  p.xLabel = "F, faces of a geodesic sphere";
-  if (!c.faces.empty() && c.faces.back() > c.linearLimit3d)
-    p.notes.push_back(std::string("halfspace stops at F = ")
-                          .append(grouped(c.linearLimit3d))
-                          .append(" (O(F) per query)"));
-  return p;
+  return plotOf(r.series3d,
+                Axis{"F, faces of a geodesic sphere", "halfspace", "F", c.faces, c.linearLimit3d},
+                value);
 }
 
 // the measurement in words, in the page's fourth quarter
