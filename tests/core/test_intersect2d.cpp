@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -103,8 +104,19 @@ TEST_P(Intersect2DExact, EveryMethodMatchesTheReference) {
   const LineIntersector dual(polygon, LineMethod::Dual);
   const auto lines = linesFor(ring, ring.size() > 1000 ? 100 : 400, GetParam() + 1);
   std::size_t clipped = 0, index = 0;
-  for (const auto& [p1, p2] : lines) {
+  // the batch of every method, in one call (blocks, prefetching, a partial last block)
+  std::vector<Vec2> flat;
+  for (const auto& [p1, p2] : lines) flat.insert(flat.end(), {p1, p2});
+  std::vector<std::vector<Crossing>> batches;
+  for (const LineIntersector* li : {&vertices, &bisection, &dual}) {
+    batches.emplace_back(lines.size());
+    li->classify(std::span(flat), std::span(batches.back()));
+  }
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const auto& [p1, p2] = lines[k];
     const LineHit want = referenceHit(ring, p1, p2);
+    for (const std::vector<Crossing>& b : batches)
+      ASSERT_EQ(b[k], want.crossing) << "batch line " << show(p1) << show(p2);
     // the rational clip costs O(N) rationals: every line of a small polygon, some of a large
     const bool checkClip = ring.size() <= 300 || index++ % 16 == 0;
     const std::optional<Segment2D> wantClip =

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -133,8 +134,18 @@ TEST_P(Intersect3DExact, BothMethodsMatchTheReference) {
   const ConvexPolyhedron p(c.mesh);
   const PlaneIntersector vertices(p, PlaneMethod::Vertices), dual(p, PlaneMethod::Dual);
   std::size_t crosses = 0, touches = 0;
-  for (const Plane& pl : planesFor(p, 300, GetParam() + 7)) {
+  const auto planes = planesFor(p, 300, GetParam() + 7);
+  // the batch of both methods, in one call (blocks, prefetching, a partial last block)
+  std::vector<Vec3> flat;
+  for (const Plane& pl : planes) flat.insert(flat.end(), {pl.a, pl.b, pl.c});
+  std::vector<Crossing> viaVertices(planes.size()), viaDual(planes.size());
+  vertices.classify(std::span(flat), std::span(viaVertices));
+  dual.classify(std::span(flat), std::span(viaDual));
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const Plane& pl = planes[k];
     const Crossing want = referenceCrossing(p.vertices(), pl.a, pl.b, pl.c);
+    ASSERT_EQ(viaVertices[k], want) << "batch plane " << k;
+    ASSERT_EQ(viaDual[k], want) << "batch plane " << k;
     crosses += want == Crossing::Crosses;
     touches += want == Crossing::Touches;
     for (const PlaneIntersector* pi : {&vertices, &dual}) {

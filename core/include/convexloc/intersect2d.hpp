@@ -32,7 +32,8 @@ class PolarLocator;
 
 namespace detail {
 class DualPolar2D;
-}
+struct LineProbe;
+}  // namespace detail
 
 // === Results
 
@@ -135,6 +136,13 @@ class LineIntersector {
   // the vertices where f is largest and smallest, and their exact signs; records in `trace`
   // when given
   ExtremeVertices extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept;
+  // dual: the ring index of a vertex where the probe's f is largest, confirmed in polar cell
+  // c's window or climbed to from its proposal, and its coordinates in `at`; counts moves
+  // in `steps`, sets `bisected` when bisection finished a long climb
+  std::uint32_t largestFrom(std::int64_t c, detail::LineProbe& probe, Vec2& at,
+                            std::uint32_t& steps, bool& bisected) const noexcept;
+  // dual: the crossing from the cells of the line's normal (up) and of its opposite (down)
+  Crossing classifyInCells(Vec2 p1, Vec2 p2, std::int64_t up, std::int64_t down) const noexcept;
   LineMethod method_;
   std::vector<Vec2> ring_;
   std::unique_ptr<detail::DualPolar2D> dual_;

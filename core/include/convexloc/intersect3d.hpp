@@ -30,6 +30,8 @@ class CubemapLocator;
 
 namespace detail {
 class DualCubemap3D;
+struct GridCell;
+struct PlaneProbe;
 struct VertexGraph;
 }  // namespace detail
 
@@ -95,6 +97,13 @@ class PlaneIntersector {
 
  private:
   PlaneTrace run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const noexcept;
+  // dual: a vertex where the probe's G is largest, climbing from grid cell `from`'s star over
+  // the stars of the graph (moves counted in `steps`); its coordinates in `at`
+  std::uint32_t largestFrom(detail::GridCell from, detail::PlaneProbe& probe, Vec3& at,
+                            std::uint32_t& steps) const noexcept;
+  // dual: the crossing from the grid cells of the plane's w (up) and of -w (down)
+  Crossing classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const detail::GridCell& up,
+                        const detail::GridCell& down) const noexcept;
   PlaneMethod method_;
   std::vector<Vec3> vertices_;
   std::unique_ptr<detail::VertexGraph> graph_;

@@ -10,8 +10,8 @@
 //
 // A vertex of a convex polyhedron none of whose neighbours (in the triangulated surface) has
 // a strictly larger G is a largest one: the polyhedron lies in the cone of the edges at that
-// vertex, and G is linear. The climb stops only there, whatever vertex it starts from; it
-// ends because G rises strictly at every move.
+// vertex, and G is linear. The dual's climb (PlaneIntersector::largestFrom) stops only
+// there, whatever vertex it starts from; it ends because G rises strictly at every move.
 #pragma once
 
 #include <cmath>
@@ -66,24 +66,5 @@ struct PlaneProbe {
   // the same plane with its sides swapped
   PlaneProbe swapped() const noexcept { return {q1, q3, q2, 0}; }
 };
-
-// Moves `at` along the graph to a vertex where G is largest, in at most `maxSteps` moves
-// (counted in `steps`); false when it ran out of moves first.
-inline bool climbToLargest(const VertexGraph& graph, std::span<const Vec3> vertices,
-                           PlaneProbe& plane, std::uint32_t& at, std::uint32_t maxSteps,
-                           std::uint32_t& steps) noexcept {
-  for (;;) {
-    std::uint32_t higher = at;
-    for (const std::uint32_t k : graph.of(at))
-      if (plane.rise(vertices[at], vertices[k]) > 0) {
-        higher = k;
-        break;
-      }
-    if (higher == at) return true;
-    if (steps == maxSteps) return false;
-    at = higher;
-    ++steps;
-  }
-}
 
 }  // namespace convexloc::detail
