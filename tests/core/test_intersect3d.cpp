@@ -193,6 +193,28 @@ TEST(Intersect3DDual, GeodesicClimbsLittle) {
   EXPECT_GT(s.cells, 0u);
 }
 
+// the batch over every length around its blocks (three in flight), against one plane at a
+// time, on a coarse polyhedron (long climbs) and a fine one
+TEST(Intersect3DDual, BatchLengthsAgreeWithSingle) {
+  for (std::size_t faces : {12, 5120}) {
+    const ConvexPolyhedron p(convexloc::generatePolyhedron(PolyhedronKind::Geodesic, faces, 1));
+    const PlaneIntersector dual(p, PlaneMethod::Dual);
+    convexloc::Rng rng(9);
+    std::vector<Vec3> flat;
+    for (int k = 0; k < 3 * 70; ++k)
+      flat.push_back({rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)});
+    for (std::size_t count : {0, 1, 15, 16, 17, 32, 33, 48, 49, 70}) {
+      std::vector<Crossing> out(count, Crossing::Touches);
+      dual.classify(std::span(flat).first(3 * count), std::span(out));
+      for (std::size_t k = 0; k < count; ++k) {
+        const Vec3* q = flat.data() + 3 * k;
+        ASSERT_EQ(out[k], dual.classify(q[0], q[1], q[2])) << faces << " " << count << " " << k;
+        ASSERT_EQ(out[k], referenceCrossing(p.vertices(), q[0], q[1], q[2]));
+      }
+    }
+  }
+}
+
 TEST(Intersect3DNames, RoundTripAndCollinear) {
   for (PlaneMethod m : convexloc::kAllPlaneMethods)
     EXPECT_EQ(convexloc::parsePlaneMethod(convexloc::toString(m)), m);
