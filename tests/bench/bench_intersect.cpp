@@ -50,6 +50,7 @@ void intersect2D(benchmark::State& state, LineMethod method) {
     i = (i + 1) & (kQueries - 1);
   }
   state.SetItemsProcessed(state.iterations());
+  state.counters["bytes"] = static_cast<double>(li.stats().bytes);
 }
 
 // the batch: every line of the set per call
@@ -76,6 +77,7 @@ void intersect3D(benchmark::State& state, PlaneMethod method) {
     i = (i + 1) & (kQueries - 1);
   }
   state.SetItemsProcessed(state.iterations());
+  state.counters["bytes"] = static_cast<double>(pi.stats().bytes);
   state.counters["faces"] = static_cast<double>(polyhedron(state.range(0)).faceCount());
 }
 

@@ -93,7 +93,8 @@ std::uint32_t PlaneIntersector::largestFrom(detail::GridCell from, detail::Plane
       at = star[0];
       return from.vertex;
     }
-    from = dual_->starOf(graph_->of(from.vertex)[higher - 1], *graph_);
+    // the star of vertex v begins at offsets[v] + v, so v's neighbour list at star - v
+    from = dual_->starOf(graph_->neighbours[from.star - from.vertex + higher - 1], *graph_);
     ++steps;
   }
 }
