@@ -155,7 +155,13 @@ TEST(Intersect2DDual, RegularLargeClimbsLittle) {
     const Vec2 p2{rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)};
     const convexloc::LineTrace t = dual.trace(p1, p2);
     ASSERT_GE(t.cell, 0);
+    ASSERT_GE(t.opposite, 0);
     ASSERT_FALSE(t.bisected);
+    // the opposite cell is the one of -w: it holds c* - (b - c*), the point b mirrored
+    const Vec2 c = *dual.dualLocator()->centre();
+    const Vec2 d{p2.x - p1.x, p2.y - p1.y};
+    const double m = std::max(std::fabs(d.x), std::fabs(d.y));
+    ASSERT_EQ(t.opposite, dual.dualLocator()->cellIndex({c.x + d.y / m, c.y - d.x / m}));
     worst = std::max(worst, t.climbSteps);
     if (k < 40) {
       ASSERT_EQ(t.crossing, referenceHit(ring, p1, p2).crossing);

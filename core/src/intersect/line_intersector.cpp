@@ -102,7 +102,7 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
     e.largest = largestFrom(cell, up, at, steps, bisected);
     e.smallest = largestFrom(opposite, down, at, steps, bisected);
   } else {
-    cell = -1;
+    cell = opposite = -1;
     e.largest = detail::bisectLargest(ring_, up);
     e.smallest = detail::bisectLargest(ring_, down);
     bisected = method_ == LineMethod::Dual;
@@ -112,6 +112,7 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
   if (trace) {
     trace->extremes = e;
     trace->cell = cell;
+    trace->opposite = opposite;
     trace->startMax = startMax;
     trace->startMin = startMin;
     trace->climbSteps = steps;
