@@ -17,7 +17,7 @@
 // leaves on or inside the hull is dropped). Each edge of Q is labelled with the vertex of P
 // farthest along its middle direction (floating point: a label is a proposal, never a
 // decision). The polar locator of Q gets about one cell per vertex of Q (slabsFor), so a
-// cell is at most about one average cone of directions wide.
+// cell is about one average cone of directions wide.
 //
 // The query. For f(x) = w . (x - p1) with w = (p2 - p1) turned a quarter counter-clockwise,
 // f is largest at the vertex farthest along w and smallest at the one farthest along -w. The
@@ -130,9 +130,10 @@ std::vector<std::uint32_t> labelEdges(std::span<const Vec2> dual, std::span<cons
   return labels;
 }
 
-// Slabs per octant for a dual of n vertices: 8 q cells, each at most 1 / q radians wide,
-// against an average cone of 2 pi / n per dual edge, so a cell spans about 0.8 of an average
-// cone and its window (two consecutive candidates) holds the extreme for nearly every line.
+// Slabs per octant for a dual of n vertices: 8 q cells, pi / (4 q) radians wide on average and
+// at most 1 / q, against an average cone of 2 pi / n per dual edge. With q = n / 8 a cell is
+// one average cone wide on average and 1.3 at most, so its window (two consecutive
+// candidates) holds the extreme for nearly every line.
 std::uint32_t slabsFor(std::size_t n) {
   return static_cast<std::uint32_t>(std::clamp<std::size_t>(n / 8, 8, std::size_t{1} << 23));
 }
