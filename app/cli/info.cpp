@@ -10,12 +10,14 @@
 #include <charconv>
 #include <cstdio>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "commands.hpp"
+#include "convexloc/generate2d.hpp"
 #include "convexloc/intersect2d.hpp"
 #include "convexloc/intersect3d.hpp"
 #include "convexloc/locate2d.hpp"
@@ -331,6 +333,7 @@ struct DualRow {
   bool built = true;
   std::size_t dualSize = 0, cells = 0, entries = 0, maxPerCell = 0, bytes = 0;
   double bytesPer = 0.0, buildSeconds = 0.0;
+  std::string measured;  // the dual's work per query on random queries, a sentence
 };
 
 // the words of one dimension's intersection section
@@ -364,7 +367,9 @@ template <class Intersector>
 DualRow rowOf(const Intersector& x) {
   const auto s = x.stats();
   const auto [dualSize, elements] = sizesOf(s);
-  DualRow row{std::string(toString(x.method())), std::string(costOf(x.method()))};
+  DualRow row;
+  row.name = toString(x.method());
+  row.cost = costOf(x.method());
   row.dualSize = dualSize;
   if (const auto* dual = x.dualLocator()) {
     const auto table = dual->stats();
@@ -378,10 +383,54 @@ DualRow rowOf(const Intersector& x) {
   return row;
 }
 
-// every line method built on the polygon, one row each
+// queries the dual's work is measured on
+constexpr int kMeasured = 1000;
+
+// uniform in [lo, hi] enlarged by 10% of its width on either side, kept finite (for shapes
+// near the largest doubles, where the width itself would overflow)
+double around(Rng& rng, double lo, double hi) {
+  const double t = rng.uniform(-0.1, 1.1), big = std::numeric_limits<double>::max();
+  return std::clamp(lo * (1 - t) + hi * t, -big, big);
+}
+
+// a random line (plane) through two (three) random points of the enlarged box, traced
+LineTrace randomTrace(const LineIntersector& x, Rng& rng, const Box2& b) {
+  const Vec2 p{around(rng, b.lo.x, b.hi.x), around(rng, b.lo.y, b.hi.y)};
+  const Vec2 q{around(rng, b.lo.x, b.hi.x), around(rng, b.lo.y, b.hi.y)};
+  return x.trace(p, q == p ? Vec2{p.x + 1, p.y} : q);
+}
+PlaneTrace randomTrace(const PlaneIntersector& x, Rng& rng, const Box3& b) {
+  Vec3 q[3];
+  for (Vec3& p : q)
+    p = {around(rng, b.lo.x, b.hi.x), around(rng, b.lo.y, b.hi.y), around(rng, b.lo.z, b.hi.z)};
+  if (collinear(q[0], q[1], q[2])) q[2] = {q[2].x + 1, q[2].y, q[2].z + 2};
+  return x.trace(q[0], q[1], q[2]);
+}
+
+// the dual's mean exact comparisons and climb moves per query on kMeasured random queries
+template <class Intersector, class Box>
+std::string measuredWork(const Intersector& x, const Box& box, const char* query) {
+  Rng rng(1);
+  double comparisons = 0, moves = 0;
+  for (int k = 0; k < kMeasured; ++k) {
+    const auto t = randomTrace(x, rng, box);
+    comparisons += t.comparisons;
+    moves += t.climbSteps;
+  }
+  return format(
+      "The dual, on %d random %ss through the enlarged bounding box: %.2f exact\n"
+      "comparisons and %.2f climb moves per %s on average.\n",
+      kMeasured, query, comparisons / kMeasured, moves / kMeasured, query);
+}
+
+// every line method built on the polygon, one row each; the dual's work measured
 std::vector<DualRow> lineRows(const ConvexPolygon& polygon) {
   std::vector<DualRow> rows;
-  for (LineMethod m : kAllLineMethods) rows.push_back(rowOf(LineIntersector(polygon, m)));
+  for (LineMethod m : kAllLineMethods) {
+    const LineIntersector x(polygon, m);
+    rows.push_back(rowOf(x));
+    if (m == LineMethod::Dual) rows.back().measured = measuredWork(x, polygon.bounds(), "line");
+  }
   return rows;
 }
 
@@ -390,9 +439,15 @@ std::vector<DualRow> planeRows(const ConvexPolyhedron& polyhedron, bool buildDua
   std::vector<DualRow> rows;
   for (PlaneMethod m : kAllPlaneMethods) {
     if (m != PlaneMethod::Dual || buildDual) {
-      rows.push_back(rowOf(PlaneIntersector(polyhedron, m)));
+      const PlaneIntersector x(polyhedron, m);
+      rows.push_back(rowOf(x));
+      if (m == PlaneMethod::Dual)
+        rows.back().measured = measuredWork(x, polyhedron.bounds(), "plane");
     } else {
-      rows.push_back({std::string(toString(m)), std::string(costOf(m)), false});
+      DualRow& row = rows.emplace_back();
+      row.name = toString(m);
+      row.cost = costOf(m);
+      row.built = false;
     }
   }
   return rows;
@@ -429,6 +484,8 @@ void reportDualTable(Output& out, const std::vector<DualRow>& rows, const DualWo
   out.put(std::string("\n") + words.note +
           "\nEvery method decides exactly: the dual's table only proposes where its exact climb "
           "starts.\n");
+  for (const DualRow& row : rows)
+    if (!row.measured.empty()) out.put(row.measured);
 }
 
 // === The command, for either dimension

@@ -3,6 +3,7 @@
 // dual is built, and that the report before it is left as it was.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -109,3 +110,24 @@ TEST_F(Cli, InfoIntersectOnBadInputWritesNothing) {
 }
 
 }  // namespace
+
+// the dual's work measured on random queries: a sentence under each dimension's table
+TEST_F(Cli, InfoMeasuresTheDualsWorkPerQuery) {
+  Result r = run("info " + q(kAssets + "/hexagon.txt"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t at = r.out.find("The dual, on 1000 random lines through the enlarged bounding");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  // both extremes confirmed, each with at least two exact comparisons
+  double comparisons = 0, moves = 0;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + r.out.find("box: ", at),
+                        "box: %lf exact\ncomparisons and %lf", &comparisons, &moves),
+            2)
+      << r.out;
+  EXPECT_GE(comparisons, 4.0);
+  EXPECT_LT(moves, 2.0);
+  Result planes = run("info " + data("cube3d.off") + " --intersect");
+  ASSERT_EQ(planes.code, 0) << planes.err;
+  EXPECT_NE(planes.out.find("The dual, on 1000 random planes"), std::string::npos) << planes.out;
+  Result unbuilt = run("info " + data("cube3d.off"));
+  EXPECT_EQ(unbuilt.out.find("random planes"), std::string::npos) << unbuilt.out;
+}

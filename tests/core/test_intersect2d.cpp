@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -103,8 +104,19 @@ TEST_P(Intersect2DExact, EveryMethodMatchesTheReference) {
   const LineIntersector dual(polygon, LineMethod::Dual);
   const auto lines = linesFor(ring, ring.size() > 1000 ? 100 : 400, GetParam() + 1);
   std::size_t clipped = 0, index = 0;
-  for (const auto& [p1, p2] : lines) {
+  // the batch of every method, in one call (blocks, prefetching, a partial last block)
+  std::vector<Vec2> flat;
+  for (const auto& [p1, p2] : lines) flat.insert(flat.end(), {p1, p2});
+  std::vector<std::vector<Crossing>> batches;
+  for (const LineIntersector* li : {&vertices, &bisection, &dual}) {
+    batches.emplace_back(lines.size());
+    li->classify(std::span(flat), std::span(batches.back()));
+  }
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const auto& [p1, p2] = lines[k];
     const LineHit want = referenceHit(ring, p1, p2);
+    for (const std::vector<Crossing>& b : batches)
+      ASSERT_EQ(b[k], want.crossing) << "batch line " << show(p1) << show(p2);
     // the rational clip costs O(N) rationals: every line of a small polygon, some of a large
     const bool checkClip = ring.size() <= 300 || index++ % 16 == 0;
     const std::optional<Segment2D> wantClip =
@@ -143,7 +155,13 @@ TEST(Intersect2DDual, RegularLargeClimbsLittle) {
     const Vec2 p2{rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)};
     const convexloc::LineTrace t = dual.trace(p1, p2);
     ASSERT_GE(t.cell, 0);
+    ASSERT_GE(t.opposite, 0);
     ASSERT_FALSE(t.bisected);
+    // the opposite cell is the one of -w: it holds c* - (b - c*), the point b mirrored
+    const Vec2 c = *dual.dualLocator()->centre();
+    const Vec2 d{p2.x - p1.x, p2.y - p1.y};
+    const double m = std::max(std::fabs(d.x), std::fabs(d.y));
+    ASSERT_EQ(t.opposite, dual.dualLocator()->cellIndex({c.x + d.y / m, c.y - d.x / m}));
     worst = std::max(worst, t.climbSteps);
     if (k < 40) {
       ASSERT_EQ(t.crossing, referenceHit(ring, p1, p2).crossing);
@@ -158,6 +176,56 @@ TEST(Intersect2DDual, RegularLargeClimbsLittle) {
   ASSERT_TRUE(dual.dualLocator()->centre().has_value());
   EXPECT_LT(std::fabs(dual.dualLocator()->centre()->x), 1e-12);
   EXPECT_LT(std::fabs(dual.dualLocator()->centre()->y), 1e-12);
+}
+
+// Turning angles spanning many orders of magnitude (points of a parabola at t = +-2^-k): the
+// dual's cells near its axis list long runs of vertices, so windows cannot confirm and the
+// climb over the ring and bisection take over; every answer, one by one and in a batch,
+// still matches the reference.
+TEST(Intersect2DDual, UnevenTurningFallsBackExactly) {
+  std::vector<Vec2> points;
+  for (int k = 40; k >= 0; --k) points.push_back({-std::ldexp(1.0, -k), std::ldexp(1.0, -2 * k)});
+  for (int k = 0; k <= 40; ++k) points.push_back({std::ldexp(1.0, -k), std::ldexp(1.0, -2 * k)});
+  points.push_back({0, 0});
+  const ConvexPolygon polygon(convexloc::convexHull(points));
+  const std::vector<Vec2> ring(polygon.vertices().begin(), polygon.vertices().end());
+  const LineIntersector dual(polygon, LineMethod::Dual);
+  auto lines = linesFor(ring, 400, 11);
+  convexloc::Rng rng(12);
+  for (int k = 0; k < 400; ++k) {  // nearly horizontal lines: the crowded cells
+    const double y = std::ldexp(rng.uniform(), -static_cast<int>(rng.uniform() * 60));
+    lines.push_back({{-2, y}, {2, y * (1 + rng.uniform() * 1e-3)}});
+  }
+  std::vector<Vec2> flat;
+  for (const auto& [p1, p2] : lines) flat.insert(flat.end(), {p1, p2});
+  std::vector<Crossing> batch(lines.size());
+  dual.classify(std::span(flat), std::span(batch));
+  std::size_t fallbacks = 0;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const auto& [p1, p2] = lines[k];
+    const LineHit want = referenceHit(ring, p1, p2);
+    ASSERT_EQ(dual.classify(p1, p2), want.crossing) << show(p1) << show(p2);
+    ASSERT_EQ(batch[k], want.crossing) << show(p1) << show(p2);
+    ASSERT_EQ(dual.intersect(p1, p2), want) << show(p1) << show(p2);
+    const convexloc::LineTrace t = dual.trace(p1, p2);
+    fallbacks += t.bisected || t.climbSteps > 2;
+  }
+  EXPECT_GT(fallbacks, 0u);  // the climb past the windows was exercised
+}
+
+// the batch over every length around its blocks, against one line at a time
+TEST(Intersect2DDual, BatchLengthsAgreeWithSingle) {
+  const ConvexPolygon polygon(shapes::regular(1000));
+  const LineIntersector dual(polygon, LineMethod::Dual);
+  convexloc::Rng rng(8);
+  std::vector<Vec2> flat;
+  for (int k = 0; k < 2 * 70; ++k) flat.push_back({rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)});
+  for (std::size_t count : {0, 1, 15, 16, 17, 33, 70}) {
+    std::vector<Crossing> out(count, Crossing::Touches);
+    dual.classify(std::span(flat).first(2 * count), std::span(out));
+    for (std::size_t k = 0; k < count; ++k)
+      ASSERT_EQ(out[k], dual.classify(flat[2 * k], flat[2 * k + 1])) << count << " " << k;
+  }
 }
 
 // an integer lattice polygon: lines exactly parallel to edges and exactly through vertices

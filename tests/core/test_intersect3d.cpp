@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -133,8 +134,18 @@ TEST_P(Intersect3DExact, BothMethodsMatchTheReference) {
   const ConvexPolyhedron p(c.mesh);
   const PlaneIntersector vertices(p, PlaneMethod::Vertices), dual(p, PlaneMethod::Dual);
   std::size_t crosses = 0, touches = 0;
-  for (const Plane& pl : planesFor(p, 300, GetParam() + 7)) {
+  const auto planes = planesFor(p, 300, GetParam() + 7);
+  // the batch of both methods, in one call (blocks, prefetching, a partial last block)
+  std::vector<Vec3> flat;
+  for (const Plane& pl : planes) flat.insert(flat.end(), {pl.a, pl.b, pl.c});
+  std::vector<Crossing> viaVertices(planes.size()), viaDual(planes.size());
+  vertices.classify(std::span(flat), std::span(viaVertices));
+  dual.classify(std::span(flat), std::span(viaDual));
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const Plane& pl = planes[k];
     const Crossing want = referenceCrossing(p.vertices(), pl.a, pl.b, pl.c);
+    ASSERT_EQ(viaVertices[k], want) << "batch plane " << k;
+    ASSERT_EQ(viaDual[k], want) << "batch plane " << k;
     crosses += want == Crossing::Crosses;
     touches += want == Crossing::Touches;
     for (const PlaneIntersector* pi : {&vertices, &dual}) {
@@ -182,8 +193,8 @@ TEST(Intersect3DDual, GeodesicClimbsLittle) {
   EXPECT_GT(s.cells, 0u);
 }
 
-// the trace's direction is the unit -N, its cell's labels propose startMax, and the labels
-// cover every face of the dual the cube map locates in
+// the trace's direction is the unit -N, and every face of the dual the cube map locates in
+// is labelled with the vertex farthest along its middle direction
 TEST(Intersect3DDual, TraceReportsTheDirectionAndItsCell) {
   const ConvexPolyhedron p(convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 500, 1));
   const PlaneIntersector dual(p, PlaneMethod::Dual);
@@ -198,11 +209,44 @@ TEST(Intersect3DDual, TraceReportsTheDirectionAndItsCell) {
   EXPECT_EQ(t.direction.z, -1.0);
   const auto listed = cube->cellFaces(t.direction);
   ASSERT_FALSE(listed.empty());
-  EXPECT_EQ(dual.dualLabels()[listed[listed.size() / 2]], t.startMax);
+  const auto q = cube->vertices();
+  const auto v = p.vertices();
+  for (std::size_t f = 0; f < cube->faces().size(); ++f) {
+    const auto& tri = cube->faces()[f];
+    const Vec3 mid{q[tri[0]].x + q[tri[1]].x + q[tri[2]].x, q[tri[0]].y + q[tri[1]].y + q[tri[2]].y,
+                   q[tri[0]].z + q[tri[1]].z + q[tri[2]].z};
+    auto along = [&](std::uint32_t k) { return mid.x * v[k].x + mid.y * v[k].y + mid.z * v[k].z; };
+    double best = along(0);
+    for (std::uint32_t k = 1; k < v.size(); ++k) best = std::max(best, along(k));
+    ASSERT_LT(dual.dualLabels()[f], v.size());
+    EXPECT_NEAR(along(dual.dualLabels()[f]), best, 1e-12) << f;
+  }
   const PlaneIntersector baseline(p, PlaneMethod::Vertices);
   EXPECT_TRUE(baseline.dualLabels().empty());
   const convexloc::PlaneTrace b = baseline.trace({0, 0, 0.25}, {1, 0, 0.25}, {0, 1, 0.25});
   EXPECT_EQ(b.direction.z, 0.0);
+}
+
+// the batch over every length around its blocks (three in flight), against one plane at a
+// time, on a coarse polyhedron (long climbs) and a fine one
+TEST(Intersect3DDual, BatchLengthsAgreeWithSingle) {
+  for (std::size_t faces : {12, 5120}) {
+    const ConvexPolyhedron p(convexloc::generatePolyhedron(PolyhedronKind::Geodesic, faces, 1));
+    const PlaneIntersector dual(p, PlaneMethod::Dual);
+    convexloc::Rng rng(9);
+    std::vector<Vec3> flat;
+    for (int k = 0; k < 3 * 70; ++k)
+      flat.push_back({rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2), rng.uniform(-1.2, 1.2)});
+    for (std::size_t count : {0, 1, 15, 16, 17, 32, 33, 48, 49, 70}) {
+      std::vector<Crossing> out(count, Crossing::Touches);
+      dual.classify(std::span(flat).first(3 * count), std::span(out));
+      for (std::size_t k = 0; k < count; ++k) {
+        const Vec3* q = flat.data() + 3 * k;
+        ASSERT_EQ(out[k], dual.classify(q[0], q[1], q[2])) << faces << " " << count << " " << k;
+        ASSERT_EQ(out[k], referenceCrossing(p.vertices(), q[0], q[1], q[2]));
+      }
+    }
+  }
 }
 
 TEST(Intersect3DNames, RoundTripAndCollinear) {

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,10 +54,14 @@ void intersect2D(ByteSource& src, Encoding encoding) {
   for (std::size_t i = 0; i < v.size() && i < 8; ++i) addNeighbours(points, v[i]);
   std::vector<convexloc::LineIntersector> methods;
   for (convexloc::LineMethod m : convexloc::kAllLineMethods) methods.emplace_back(polygon, m);
+  std::vector<Vec2> lines;  // the batch: every line tried, against the reference's crossings
+  std::vector<Crossing> wants;
   for (std::size_t i = 0; i + 1 < points.size() && i < 40; ++i) {
     const Vec2 p1 = points[i], p2 = points[(i * 7 + 3) % points.size()];
     if (p1 == p2) continue;
     const LineHit want = referenceHit(v, p1, p2);
+    lines.insert(lines.end(), {p1, p2});
+    wants.push_back(want.crossing);
     const std::optional<Segment2D> clip = referenceClip(v, p1, p2);
     for (const convexloc::LineIntersector& li : methods) {
       const std::string where = std::string(toString(li.method())) + " " + show(p1) + show(p2);
@@ -66,6 +71,11 @@ void intersect2D(ByteSource& src, Encoding encoding) {
       if (got.has_value() != clip.has_value() || (got && !(*got == *clip)))
         fail("clip differs: " + where);
     }
+  }
+  for (const convexloc::LineIntersector& li : methods) {
+    std::vector<Crossing> got(wants.size());
+    li.classify(std::span<const Vec2>(lines), std::span<Crossing>(got));
+    if (got != wants) fail("batch crossing differs: " + std::string(toString(li.method())));
   }
 }
 
@@ -86,6 +96,8 @@ void intersect3D(ByteSource& src, Encoding encoding) {
   points.insert(points.end(), v.begin(), v.end());
   const convexloc::PlaneIntersector vertices(*p, convexloc::PlaneMethod::Vertices);
   const convexloc::PlaneIntersector dual(*p, convexloc::PlaneMethod::Dual);
+  std::vector<Vec3> planes;  // the batch: every plane tried, against the exact crossings
+  std::vector<Crossing> wants;
   for (std::size_t i = 0; i < points.size() && i < 40; ++i) {
     const Vec3 a = points[i], b = points[(i * 5 + 1) % points.size()],
                c = points[(i * 11 + 2) % points.size()];
@@ -99,6 +111,13 @@ void intersect3D(ByteSource& src, Encoding encoding) {
                                          : (on ? Crossing::Touches : Crossing::Misses);
     if (vertices.classify(a, b, c) != want || dual.classify(a, b, c) != want)
       fail("plane crossing differs: " + show(a) + show(b) + show(c));
+    planes.insert(planes.end(), {a, b, c});
+    wants.push_back(want);
+  }
+  for (const convexloc::PlaneIntersector* pi : {&vertices, &dual}) {
+    std::vector<Crossing> got(wants.size());
+    pi->classify(std::span<const Vec3>(planes), std::span<Crossing>(got));
+    if (got != wants) fail("batch plane crossing differs: " + std::string(toString(pi->method())));
   }
 }
 

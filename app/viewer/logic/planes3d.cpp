@@ -71,13 +71,13 @@ void describeCells(const PlaneProbe3D& p, std::vector<TraceLine>& out) {
   out.push_back({TraceLine::Heading, "dual cube map (the direction y)"});
   out.push_back({TraceLine::Step, "y = -N / |N| = " + approx(t.direction.x, 3) + ", " +
                                       approx(t.direction.y, 3) + ", " + approx(t.direction.z, 3)});
-  out.push_back({TraceLine::Step, "cell " + std::to_string(p.cellUp) + " of y lists " +
-                                      std::to_string(t.listedMax) + " dual face" +
-                                      (t.listedMax == 1 ? "" : "s") + ", proposes vertex " +
-                                      std::to_string(t.startMax)});
+  out.push_back({TraceLine::Step,
+                 "cell " + std::to_string(p.cellUp) + " of y lists " + std::to_string(t.listedMax) +
+                     " dual face" + (t.listedMax == 1 ? "" : "s") +
+                     "; y's direction cell proposes vertex " + std::to_string(t.startMax)});
   out.push_back({TraceLine::Step, "cell " + std::to_string(p.cellDown) + " of -y lists " +
                                       std::to_string(t.listedMin) + " dual face" +
-                                      (t.listedMin == 1 ? "" : "s") + ", proposes vertex " +
+                                      (t.listedMin == 1 ? "" : "s") + "; -y's proposes vertex " +
                                       std::to_string(t.startMin)});
   out.push_back({TraceLine::Step, std::to_string(t.climbSteps) + " climb move" +
                                       (t.climbSteps == 1 ? "" : "s") + " to the extremes"});

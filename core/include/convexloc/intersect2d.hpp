@@ -32,7 +32,8 @@ class PolarLocator;
 
 namespace detail {
 class DualPolar2D;
-}
+struct LineProbe;
+}  // namespace detail
 
 // === Results
 
@@ -79,9 +80,10 @@ struct LineTrace {
   LineMethod method = LineMethod::Dual;
   Crossing crossing = Crossing::Misses;
   ExtremeVertices extremes;    // where f is largest and smallest, its exact signs there
-  std::int64_t cell = -1;      // dual: the polar cell of the line's normal, -1 when none
-  std::uint32_t startMax = 0;  // dual: the vertices the cell proposed
-  std::uint32_t startMin = 0;
+  std::int64_t cell = -1;      // dual: the polar cell of the line's normal w, -1 when none
+  std::int64_t opposite = -1;  // dual: the polar cell of -w
+  std::uint32_t startMax = 0;  // dual: the vertex cell proposed (for the largest f)
+  std::uint32_t startMin = 0;  // dual: the vertex opposite proposed (for the smallest f)
   std::uint32_t climbSteps = 0;   // dual: moves from the proposals to the extremes
   bool bisected = false;          // dual: a climb ran long and bisection finished it
   std::uint32_t comparisons = 0;  // exact comparisons of two vertices along the normal
@@ -135,6 +137,13 @@ class LineIntersector {
   // the vertices where f is largest and smallest, and their exact signs; records in `trace`
   // when given
   ExtremeVertices extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept;
+  // dual: the ring index of a vertex where the probe's f is largest, confirmed in polar cell
+  // c's window or climbed to from its proposal, and its coordinates in `at`; counts moves
+  // in `steps`, sets `bisected` when bisection finished a long climb
+  std::uint32_t largestFrom(std::int64_t c, detail::LineProbe& probe, Vec2& at,
+                            std::uint32_t& steps, bool& bisected) const noexcept;
+  // dual: the crossing from the cells of the line's normal (up) and of its opposite (down)
+  Crossing classifyInCells(Vec2 p1, Vec2 p2, std::int64_t up, std::int64_t down) const noexcept;
   LineMethod method_;
   std::vector<Vec2> ring_;
   std::unique_ptr<detail::DualPolar2D> dual_;

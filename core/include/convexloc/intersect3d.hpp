@@ -7,9 +7,9 @@
 // some lie on it, and crosses it otherwise. Both methods find a vertex where G is largest
 // and one where it is smallest and decide from their two exact signs:
 //   vertices  O(V)  every vertex's sign (the baseline)
-//   dual      O(1)  the cube map of the dual polyhedron proposes the two vertices, an exact
-//                   climb over the vertex graph confirms them (see
-//                   core/src/intersect/plane_dual.cpp for when the O(1) holds)
+//   dual      O(1)  a cube map of directions, labelled through the dual polyhedron,
+//                   proposes the two vertices, an exact climb over the vertex graph confirms
+//                   them (see core/src/intersect/plane_dual.cpp for when the O(1) holds)
 #pragma once
 
 #include <cstddef>
@@ -30,6 +30,8 @@ class CubemapLocator;
 
 namespace detail {
 class DualCubemap3D;
+struct GridCell;
+struct PlaneProbe;
 struct VertexGraph;
 }  // namespace detail
 
@@ -52,10 +54,10 @@ struct PlaneTrace {
   PlaneMethod method = PlaneMethod::Dual;
   Crossing crossing = Crossing::Misses;
   ExtremeVertices extremes;    // where G is largest and smallest, its exact signs there
-  bool proposed = false;       // dual: the cube map proposed both starting vertices
+  bool proposed = false;       // dual: the direction grid proposed both starting vertices
   std::uint32_t startMax = 0;  // dual: the proposals
   std::uint32_t startMin = 0;
-  std::uint32_t listedMax = 0;  // dual: faces of the dual listed in the two cells
+  std::uint32_t listedMax = 0;  // dual: faces the dual's cube-map cells of w and -w list
   std::uint32_t listedMin = 0;
   std::uint32_t climbSteps = 0;   // dual: moves from the proposals to the extremes
   std::uint32_t comparisons = 0;  // exact comparisons of two vertices along the normal
@@ -92,7 +94,8 @@ class PlaneIntersector {
   // the steps classify takes
   PlaneTrace trace(Vec3 q1, Vec3 q2, Vec3 q3) const;
   PlaneStats stats() const;
-  // dual: the cube map of the dual polyhedron, whose cells trace() reads; null otherwise
+  // dual: the cube map of the dual polyhedron, whose cells' lists trace() counts; null
+  // otherwise
   const CubemapLocator* dualLocator() const noexcept;
   // dual: per face of the dual polyhedron (dualLocator()'s faces), the vertex it proposes;
   // empty otherwise
@@ -100,6 +103,13 @@ class PlaneIntersector {
 
  private:
   PlaneTrace run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const noexcept;
+  // dual: a vertex where the probe's G is largest, climbing from grid cell `from`'s star over
+  // the stars of the graph (moves counted in `steps`); its coordinates in `at`
+  std::uint32_t largestFrom(detail::GridCell from, detail::PlaneProbe& probe, Vec3& at,
+                            std::uint32_t& steps) const noexcept;
+  // dual: the crossing from the grid cells of the plane's w (up) and of -w (down)
+  Crossing classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const detail::GridCell& up,
+                        const detail::GridCell& down) const noexcept;
   PlaneMethod method_;
   std::vector<Vec3> vertices_;
   std::unique_ptr<detail::VertexGraph> graph_;

@@ -10,33 +10,40 @@
 // which edge does the ray from the centre leave", asked of P*'s polar subdivision.
 //
 // The dual polygon built. Only the directions of the a_i matter to that question, so each is
-// the unit outward normal of its edge. The normals' antipodes are added: the vertex extreme
-// along -w is then read from the same cell, and the shape is centrally symmetric, so its
-// centre of area is the origin and the polar locator's centre lies within rounding of it.
+// the unit outward normal of its edge. The normals' antipodes are added: the shape is then
+// centrally symmetric, so its centre of area is the origin and the polar locator's centre
+// lies within rounding of it, and every direction's cone is at most half a turn.
 // Q is the strictly convex hull of these 2N points (exact predicates; a normal that rounding
 // leaves on or inside the hull is dropped). Each edge of Q is labelled with the vertex of P
-// largest along its middle direction and the one largest along the opposite direction
-// (floating point: a label is a proposal, never a decision).
+// farthest along its middle direction (floating point: a label is a proposal, never a
+// decision). The polar locator of Q gets about one cell per vertex of Q (slabsFor), so a
+// cell is about one average cone of directions wide.
 //
 // The query. For f(x) = w . (x - p1) with w = (p2 - p1) turned a quarter counter-clockwise,
-// the cell is the one of the point c* + w / |w|_max, c* the locator's centre, and proposes the
-// labels of the middle edge it lists. Conservative cell: by the polar locator's contract the
-// cell lists every edge of Q through which the ray from c* towards that point leaves Q. That
-// ray differs from the origin's ray along w by |c*| and the rounding of the point, so it
-// leaves through the edge E the origin's ray leaves through, or, when w points within that
-// distance of a vertex of Q, through E's neighbour. E's label is the extreme vertex along w
-// except where w lies within rounding of a normal (the label is then its neighbour) or in
-// the arc of a dropped normal. The cell's edges are a consecutive run, so the proposal is at
-// most half the run's labels away from E's.
+// f is largest at the vertex farthest along w and smallest at the one farthest along -w. The
+// cells asked for are those of the points c* + w / |w|_max and c* - w / |w|_max, c* the
+// locator's centre (index arithmetic only, no table read). Each cell keeps one record of 64
+// bytes, one cache line: four consecutive vertices of P, from the one before its proposal to
+// two after it (RingWindow), and the proposal's index beside it. Conservative cell: by the
+// polar locator's contract the cell lists every edge of Q through which the ray from c*
+// towards that point leaves Q. That ray differs from the origin's ray along w by |c*| and
+// the rounding of the point, so it leaves through the edge E the origin's ray leaves
+// through, or, when w points within that distance of a vertex of Q, through E's neighbour.
+// E's label is the extreme vertex along w except where w lies within rounding of a normal
+// (the label is then its neighbour) or in the arc of a dropped normal. The cell's edges are
+// a consecutive run, their labels a consecutive run of vertices of P; where that run has at
+// most two vertices the proposal is its first, and the window holds them both.
 //
-// Exactness and cost. The proposals only say where the climb (ring2d.hpp) starts; it compares
-// vertices exactly and stops only at a largest vertex, and the answer comes from the exact
-// signs at the two vertices it reaches, whatever the proposals were. It is O(1) when each
-// proposal is within kClimbMoves of the extreme: so whenever the cell lists at most about
-// 2 kClimbMoves edges, which holds for polygons whose turning angles lie within a modest
-// factor of 2 pi / N (regular, random, elliptic). A cell that lists many more (a polygon
-// whose turning angles span many orders of magnitude) may need a longer climb: after
-// kClimbMoves moves, bisection finishes in O(log N).
+// Exactness and cost. The window confirms its second or third vertex when neither of its
+// ring neighbours (both in the window) is strictly larger, with exact comparisons: that is
+// the exact test for a largest vertex (ring2d.hpp), so the answer, from the exact signs at
+// the two vertices reached, is exact whatever the proposals were. Where the window confirms
+// neither, the climb (ring2d.hpp) goes on over the ring from the proposal and stops only at a
+// largest vertex. A query is O(1) with two cache lines read when both windows confirm, which
+// holds for every line whose cells' label runs have at most two vertices: polygons whose
+// turning angles lie within a modest factor of 2 pi / N (regular, random, elliptic). A cell
+// listing many more (a polygon whose turning angles span many orders of magnitude) may need
+// a longer climb: after kClimbMoves moves, bisection finishes in O(log N).
 #include "intersect/dual_polar.hpp"
 
 #include <algorithm>
@@ -109,24 +116,36 @@ std::uint32_t farthestAlong(const std::vector<Vec2>& ring, Vec2 w) {
   return best;
 }
 
-// For each edge of the dual polygon, counter-clockwise, the vertices of the ring farthest
-// along its middle direction and along the opposite one. Both turn counter-clockwise with
-// the edges, so two pointers go once around the ring: O(N + edges).
-std::vector<ExtremePair> labelEdges(std::span<const Vec2> dual, std::span<const Vec2> ring) {
+// For each edge of the dual polygon, counter-clockwise, the vertex of the ring farthest along
+// its middle direction. It turns counter-clockwise with the edges, so one pointer goes once
+// around the ring: O(N + edges).
+std::vector<std::uint32_t> labelEdges(std::span<const Vec2> dual, std::span<const Vec2> ring) {
   const std::vector<Vec2> scaled = scaledRing(ring);
-  std::vector<ExtremePair> labels(dual.size());
+  std::vector<std::uint32_t> labels(dual.size());
   for (std::uint32_t k = 0; k < dual.size(); ++k) {
     const Vec2 a = dual[k], b = dual[nextOf(k, dual.size())];
-    const Vec2 w{a.x + b.x, a.y + b.y}, opposite{-w.x, -w.y};
-    ExtremePair& l = labels[k];
-    if (k == 0) {
-      l = {farthestAlong(scaled, w), farthestAlong(scaled, opposite)};
-    } else {
-      l = {advanceAlong(scaled, w, labels[k - 1].largest),
-           advanceAlong(scaled, opposite, labels[k - 1].smallest)};
-    }
+    const Vec2 w{a.x + b.x, a.y + b.y};
+    labels[k] = k == 0 ? farthestAlong(scaled, w) : advanceAlong(scaled, w, labels[k - 1]);
   }
   return labels;
+}
+
+// Slabs per octant for a dual of n vertices: 8 q cells, pi / (4 q) radians wide on average and
+// at most 1 / q, against an average cone of 2 pi / n per dual edge. With q = n / 8 a cell is
+// one average cone wide on average and 1.3 at most, so its window (two consecutive
+// candidates) holds the extreme for nearly every line.
+std::uint32_t slabsFor(std::size_t n) {
+  return static_cast<std::uint32_t>(std::clamp<std::size_t>(n / 8, 8, std::size_t{1} << 23));
+}
+
+// The proposal of a cell listing `edges`: the label of its first edge when the labels of
+// its edges span at most two consecutive vertices (the window then holds both), else the
+// label of its middle edge (nearest the extreme whichever edge the ray leaves through).
+std::uint32_t proposalOf(std::span<const std::uint32_t> edges,
+                         const std::vector<std::uint32_t>& labels, std::size_t n) {
+  const std::uint32_t first = labels[edges.front()], last = labels[edges.back()];
+  if ((last + n - first) % n <= 1) return first;
+  return labels[edges[edges.size() / 2]];
 }
 
 }  // namespace
@@ -137,34 +156,39 @@ DualPolar2D::DualPolar2D(std::span<const Vec2> ring) {
   const ConvexPolygon dual(hull);
   dualVertices_ = dual.size();
   vertices_.assign(dual.vertices().begin(), dual.vertices().end());
-  const std::vector<ExtremePair> labels = labelEdges(dual.vertices(), ring);
-  polar_.emplace(dual);
+  const std::vector<std::uint32_t> labels = labelEdges(dual.vertices(), ring);
+  polar_.emplace(dual, slabsFor(dual.size()));
   const std::optional<Vec2> centre = polar_->centre();
-  if (!centre) {  // no cell to aim from: propose() says no and every query searches
+  if (!centre) {  // no cell to aim from: cells() says no and every query searches
     polar_.reset();
     return;
   }
   centre_ = *centre;
-  byCell_.resize(polar_->cellCount());
-  for (std::uint32_t c = 0; c < byCell_.size(); ++c) {
+  const std::size_t n = ring.size();
+  windows_.resize(polar_->cellCount());
+  starts_.resize(polar_->cellCount());
+  for (std::uint32_t c = 0; c < windows_.size(); ++c) {
     const std::span<const std::uint32_t> edges = polar_->cellEdges(c);
     maxPerCell_ = std::max(maxPerCell_, edges.size());
-    if (!edges.empty()) byCell_[c] = labels[edges[edges.size() / 2]];
+    const std::uint32_t s = edges.empty() ? 0 : proposalOf(edges, labels, n);
+    starts_[c] = s;
+    const std::uint32_t before = prevOf(s, n), after = nextOf(s, n);
+    windows_[c] = {{ring[before], ring[s], ring[after], ring[nextOf(after, n)]}};
   }
 }
 
-bool DualPolar2D::propose(Vec2 p1, Vec2 p2, ExtremePair& out, std::int64_t& cell) const noexcept {
+bool DualPolar2D::cells(Vec2 p1, Vec2 p2, std::int64_t& up, std::int64_t& down) const noexcept {
   if (!polar_) return false;
   const Vec2 d = direction(p1, p2);
   const double m = std::max(std::fabs(d.x), std::fabs(d.y));
-  cell = polar_->cellIndex({centre_.x - d.y / m, centre_.y + d.x / m});
-  if (cell < 0) return false;
-  out = byCell_[static_cast<std::size_t>(cell)];
-  return true;
+  const double wx = -d.y / m, wy = d.x / m;  // w / |w|max, w = d turned a quarter
+  up = polar_->cellIndex({centre_.x + wx, centre_.y + wy});
+  down = polar_->cellIndex({centre_.x - wx, centre_.y - wy});
+  return up >= 0 && down >= 0;
 }
 
 std::size_t DualPolar2D::bytes() const noexcept {
-  return (polar_ ? polar_->stats().bytes : 0) + bytesOf(byCell_);
+  return (polar_ ? polar_->stats().bytes : 0) + bytesOf(windows_) + bytesOf(starts_);
 }
 
 }  // namespace convexloc::detail

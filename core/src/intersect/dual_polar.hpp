@@ -10,22 +10,34 @@
 
 #include "convexloc/geometry.hpp"
 #include "convexloc/locate2d.hpp"
+#include "convexloc/table.hpp"
 
 namespace convexloc::detail {
 
-// a proposal: the vertex largest along a direction and the one largest along its opposite
-struct ExtremePair {
-  std::uint32_t largest = 0;
-  std::uint32_t smallest = 0;
+// Four consecutive vertices of the ring, from the one before a cell's proposal to two after
+// it, on one cache line: all that confirming the proposal or its successor reads.
+struct alignas(64) RingWindow {
+  Vec2 v[4];
 };
 
 class DualPolar2D {
  public:
   // builds the dual of the counter-clockwise ring of a strictly convex polygon: O(N log N)
   explicit DualPolar2D(std::span<const Vec2> ring);
-  // The proposal for the line p1 -> p2 (f = (p2 - p1) x (x - p1)) and the polar cell it came
-  // from; false when the direction has no cell (the caller then searches without one).
-  bool propose(Vec2 p1, Vec2 p2, ExtremePair& out, std::int64_t& cell) const noexcept;
+  // The polar cells of the line p1 -> p2's normal w (f = (p2 - p1) x (x - p1) is largest
+  // along w) and of -w; false when the direction has no cell (the caller then searches).
+  bool cells(Vec2 p1, Vec2 p2, std::int64_t& up, std::int64_t& down) const noexcept;
+  // cell c's proposal for the vertex largest along its directions: the ring index of
+  // window(c).v[1]
+  std::uint32_t proposal(std::int64_t c) const noexcept {
+    return starts_[static_cast<std::size_t>(c)];
+  }
+  // the ring around cell c's proposal
+  const RingWindow& window(std::int64_t c) const noexcept {
+    return windows_[static_cast<std::size_t>(c)];
+  }
+  // starts loading cell c's window
+  void prefetch(std::int64_t c) const noexcept { __builtin_prefetch(windows_.data() + c); }
   // the polar locator of the dual polygon; null when the dual has no centre (never for the
   // centrally symmetric dual built here, but then every query searches)
   const PolarLocator* locator() const noexcept { return polar_ ? &*polar_ : nullptr; }
@@ -38,7 +50,8 @@ class DualPolar2D {
  private:
   std::optional<PolarLocator> polar_;
   std::vector<Vec2> vertices_;
-  std::vector<ExtremePair> byCell_;  // per polar cell: the labels of the middle edge it lists
+  Table<RingWindow> windows_;    // per polar cell
+  Table<std::uint32_t> starts_;  // per polar cell: its proposal
   Vec2 centre_{};
   std::size_t dualVertices_ = 0;
   std::size_t maxPerCell_ = 0;

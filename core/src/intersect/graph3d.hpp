@@ -10,8 +10,8 @@
 //
 // A vertex of a convex polyhedron none of whose neighbours (in the triangulated surface) has
 // a strictly larger G is a largest one: the polyhedron lies in the cone of the edges at that
-// vertex, and G is linear. The climb stops only there, whatever vertex it starts from; it
-// ends because G rises strictly at every move.
+// vertex, and G is linear. The dual's climb (PlaneIntersector::largestFrom) stops only
+// there, whatever vertex it starts from; it ends because G rises strictly at every move.
 #pragma once
 
 #include <cmath>
@@ -39,51 +39,45 @@ struct VertexGraph {
 // row k is (to[k] - from[k])
 int det3DifferencesExact(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept;
 
-// a plane through three points, and a count of the vertex comparisons made against it
+// A plane through three points, and a count of the vertex comparisons made against it. The
+// rows q2 - q1 and q3 - q1 are the same in every comparison, so their 2 x 2 minors (and the
+// magnitudes that bound their rounding) are formed once, with the very operations the full
+// expansion would use: every comparison computes the same doubles it would from scratch.
 struct PlaneProbe {
   Vec3 q1, q2, q3;
   std::uint32_t comparisons = 0;
-  // the exact sign of G(v) - G(u)
-  int rise(Vec3 u, Vec3 v) noexcept {
-    ++comparisons;
-    const double rows[3][3] = {{u.x - v.x, u.y - v.y, u.z - v.z},
-                               {q2.x - q1.x, q2.y - q1.y, q2.z - q1.z},
+  double minor[3] = {}, magnitude[3] = {};  // per column k of the first row: l - r, |l| + |r|
+  bool tameRows = false;                    // every entry of the two fixed rows is tame
+
+  PlaneProbe(Vec3 a, Vec3 b, Vec3 c) noexcept : q1(a), q2(b), q3(c) {
+    const double rows[2][3] = {{q2.x - q1.x, q2.y - q1.y, q2.z - q1.z},
                                {q3.x - q1.x, q3.y - q1.y, q3.z - q1.z}};
-    // expansion along the first row, with the permanent that bounds its rounding
-    double det = 0.0, permanent = 0.0;
+    tameRows = true;
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
-      const double l = rows[1][i] * rows[2][j], r = rows[1][j] * rows[2][i];
-      det += rows[0][k] * (l - r);
-      permanent += std::fabs(rows[0][k]) * (std::fabs(l) + std::fabs(r));
+      const double l = rows[0][i] * rows[1][j], r = rows[0][j] * rows[1][i];
+      minor[k] = l - r;
+      magnitude[k] = std::fabs(l) + std::fabs(r);
+      tameRows = tameRows && tame3d(rows[0][k]) && tame3d(rows[1][k]);
     }
-    const bool tame = tame3dAll(rows[0][0], rows[0][1], rows[0][2], rows[1][0], rows[1][1],
-                                rows[1][2], rows[2][0], rows[2][1], rows[2][2]);
+  }
+  // the exact sign of G(v) - G(u): the determinant of rows u - v, q2 - q1, q3 - q1, expanded
+  // along the first row, with the permanent that bounds its rounding
+  int rise(Vec3 u, Vec3 v) noexcept {
+    ++comparisons;
+    const double d[3] = {u.x - v.x, u.y - v.y, u.z - v.z};
+    double det = 0.0, permanent = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      det += d[k] * minor[k];
+      permanent += std::fabs(d[k]) * magnitude[k];
+    }
+    const bool tame = tameRows && tame3d(d[0]) && tame3d(d[1]) && tame3d(d[2]);
     if (tame && std::fabs(det) > kO3dBound * permanent) return det > 0 ? 1 : -1;
     if (tame && permanent == 0.0) return 0;
     return det3DifferencesExact({v, q1, q1}, {u, q2, q3});
   }
   // the same plane with its sides swapped
-  PlaneProbe swapped() const noexcept { return {q1, q3, q2, 0}; }
+  PlaneProbe swapped() const noexcept { return {q1, q3, q2}; }
 };
-
-// Moves `at` along the graph to a vertex where G is largest, in at most `maxSteps` moves
-// (counted in `steps`); false when it ran out of moves first.
-inline bool climbToLargest(const VertexGraph& graph, std::span<const Vec3> vertices,
-                           PlaneProbe& plane, std::uint32_t& at, std::uint32_t maxSteps,
-                           std::uint32_t& steps) noexcept {
-  for (;;) {
-    std::uint32_t higher = at;
-    for (const std::uint32_t k : graph.of(at))
-      if (plane.rise(vertices[at], vertices[k]) > 0) {
-        higher = k;
-        break;
-      }
-    if (higher == at) return true;
-    if (steps == maxSteps) return false;
-    at = higher;
-    ++steps;
-  }
-}
 
 }  // namespace convexloc::detail

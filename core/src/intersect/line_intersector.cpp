@@ -27,6 +27,8 @@ namespace {
 
 // moves a climb from the dual's proposal may take before bisection takes over
 constexpr std::uint32_t kClimbMoves = 8;
+// lines per block of the dual batch (its prefetch distance)
+constexpr std::size_t kBatchBlock = 16;
 
 // one method: its enum value, what --method takes, the cost of one query
 struct LineMethodInfo {
@@ -65,24 +67,42 @@ LineIntersector::~LineIntersector() = default;
 LineIntersector::LineIntersector(LineIntersector&&) noexcept = default;
 LineIntersector& LineIntersector::operator=(LineIntersector&&) noexcept = default;
 
+std::uint32_t LineIntersector::largestFrom(std::int64_t c, detail::LineProbe& probe, Vec2& at,
+                                           std::uint32_t& steps, bool& bisected) const noexcept {
+  const detail::RingWindow& w = dual_->window(c);
+  const std::uint32_t s = dual_->proposal(c);
+  if (const int k = detail::largestInWindow(w.v, probe); k != 0) {
+    at = w.v[k];
+    if (k == 1) return s;
+    ++steps;
+    return detail::nextOf(s, ring_.size());
+  }
+  std::uint32_t i = s;
+  if (!detail::climbToLargest(ring_, probe, i, steps + kClimbMoves, steps)) {
+    i = detail::bisectLargest(ring_, probe);
+    bisected = true;
+  }
+  at = ring_[i];
+  return i;
+}
+
 ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) const noexcept {
   detail::LineProbe up{p1, p2}, down = up.reversed();
   ExtremeVertices e;
-  detail::ExtremePair start;
-  std::int64_t cell = -1;
-  std::uint32_t steps = 0;
+  std::int64_t cell = -1, opposite = -1;
+  std::uint32_t steps = 0, startMax = 0, startMin = 0;
   bool bisected = false;
   if (method_ == LineMethod::Vertices) {
     e.largest = detail::scanLargest<Vec2>(ring_, up);
     e.smallest = detail::scanLargest<Vec2>(ring_, down);
-  } else if (method_ == LineMethod::Dual && dual_->propose(p1, p2, start, cell)) {
-    e.largest = start.largest;
-    e.smallest = start.smallest;
-    if (!detail::climbToLargest(ring_, up, e.largest, kClimbMoves, steps))
-      e.largest = detail::bisectLargest(ring_, up), bisected = true;
-    if (!detail::climbToLargest(ring_, down, e.smallest, steps + kClimbMoves, steps))
-      e.smallest = detail::bisectLargest(ring_, down), bisected = true;
+  } else if (method_ == LineMethod::Dual && dual_->cells(p1, p2, cell, opposite)) {
+    startMax = dual_->proposal(cell);
+    startMin = dual_->proposal(opposite);
+    Vec2 at;
+    e.largest = largestFrom(cell, up, at, steps, bisected);
+    e.smallest = largestFrom(opposite, down, at, steps, bisected);
   } else {
+    cell = opposite = -1;
     e.largest = detail::bisectLargest(ring_, up);
     e.smallest = detail::bisectLargest(ring_, down);
     bisected = method_ == LineMethod::Dual;
@@ -92,8 +112,9 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
   if (trace) {
     trace->extremes = e;
     trace->cell = cell;
-    trace->startMax = start.largest;
-    trace->startMin = start.smallest;
+    trace->opposite = opposite;
+    trace->startMax = startMax;
+    trace->startMin = startMin;
     trace->climbSteps = steps;
     trace->bisected = bisected;
     trace->comparisons = up.comparisons + down.comparisons;
@@ -101,15 +122,56 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
   return e;
 }
 
+Crossing LineIntersector::classifyInCells(Vec2 p1, Vec2 p2, std::int64_t up,
+                                          std::int64_t down) const noexcept {
+  detail::LineProbe high{p1, p2}, low = high.reversed();
+  Vec2 largest, smallest;
+  std::uint32_t steps = 0;
+  bool bisected = false;
+  largestFrom(up, high, largest, steps, bisected);
+  largestFrom(down, low, smallest, steps, bisected);
+  return crossingOf(orient2d(p1, p2, largest), orient2d(p1, p2, smallest));
+}
+
 Crossing LineIntersector::classify(Vec2 p1, Vec2 p2) const noexcept {
   if (method_ == LineMethod::Vertices) return detail::crossingBySides(ring_, p1, p2);
+  std::int64_t up = -1, down = -1;
+  if (method_ == LineMethod::Dual && dual_->cells(p1, p2, up, down))
+    return classifyInCells(p1, p2, up, down);
   const ExtremeVertices e = extremes(p1, p2, nullptr);
   return crossingOf(e.largestSign, e.smallestSign);
 }
 
+// The dual batch in blocks of kBatchBlock lines: the cells of the next block are found and
+// their windows prefetched before this block is confirmed, so the loads of one block overlap
+// the exact work of the other. Every line gets what classify(p1, p2) gives it.
 void LineIntersector::classify(std::span<const Vec2> lines,
                                std::span<Crossing> out) const noexcept {
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = classify(lines[2 * i], lines[2 * i + 1]);
+  const std::size_t n = std::min(lines.size() / 2, out.size());
+  if (method_ != LineMethod::Dual) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = classify(lines[2 * i], lines[2 * i + 1]);
+    return;
+  }
+  std::int64_t cells[2][kBatchBlock][2];  // per block: each line's up and down cells
+  auto aim = [&](std::size_t first, std::int64_t(*c)[2]) {
+    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
+      if (!dual_->cells(lines[2 * (first + j)], lines[2 * (first + j) + 1], c[j][0], c[j][1])) {
+        c[j][0] = -1;
+        continue;
+      }
+      dual_->prefetch(c[j][0]);
+      dual_->prefetch(c[j][1]);
+    }
+  };
+  aim(0, cells[0]);
+  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b ^= 1) {
+    aim(first + kBatchBlock, cells[b ^ 1]);
+    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
+      const Vec2 p1 = lines[2 * (first + j)], p2 = lines[2 * (first + j) + 1];
+      out[first + j] = cells[b][j][0] < 0 ? classify(p1, p2)
+                                          : classifyInCells(p1, p2, cells[b][j][0], cells[b][j][1]);
+    }
+  }
 }
 
 LineHit LineIntersector::intersect(Vec2 p1, Vec2 p2) const noexcept {

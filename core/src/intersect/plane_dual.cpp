@@ -1,35 +1,36 @@
-// convexloc — the dual method in 3D: the cube map of the dual polyhedron proposes the
+// convexloc — the dual method in 3D: the dual polyhedron's cells of directions propose the
 // vertices where a plane's side function is largest and smallest, an exact climb over the
 // vertex graph confirms them.
 //
 // Duality. With the polar dual P* of P about a point c strictly inside, face f of P is a
 // vertex a_f of P*, and vertex v of P is the face of P* spanned by the a_f of the faces
-// around v. The vertex of P farthest along a direction w is v exactly when w lies in the
-// cone of those a_f, that is when the ray from the origin along w leaves P* through the face
-// dual to v: cube-map point location's question, asked of P*. Only the directions of the
-// a_f matter, so the dual built here, Q, is Qhull's hull of the unit outward face normals
-// (coplanar faces give one normal, up to rounding; Qhull may drop a point within rounding
-// of the hull). Q's vertices lie on the unit sphere; each triangle of Q is labelled with the
-// vertex of P farthest along its middle direction (floating point, a proposal only).
-//
+// around v. The vertex of P farthest along a direction w is v exactly when w lies in the cone
+// of those a_f, that is when the ray from the origin along w leaves P* through the face dual
+// to v: cube-map point location's question, asked of P*. Only the directions of the a_f
+// matter. Two tables answer it here:
+//   - the cube map of Q, Qhull's hull of the unit outward face normals (the dual itself),
+//     which lists per cell the faces of Q the cell's rays may leave through: for `info`, the
+//     viewer and the trace (how many faces a plane's cells list);
+//   - the direction grid, a cube map of directions with side g per cube face and no lists:
+//     each cell holds the vertex of P farthest along the cell's middle direction (the face of
+//     Q that direction's ray leaves through, found at build time by a floating-point climb
+//     from the previous cell's vertex), with where its star begins and its degree. The star
+//     of a vertex (its coordinates, then its neighbours', in one run) is all the climb reads.
 // The query. For G(v) = orient3d(q1, q2, q3, v) = (q1 - v) . N, N = (q2 - q1) x (q3 - q1), G
 // is largest at the vertex farthest along w = -N and smallest at the one farthest along N.
-// The cube map is asked for the cell of the point y = w / |w| on the unit sphere (and of -y)
-// and proposes the label of the middle face that cell lists. Conservative cell: by the cube
-// map's contract the cell lists every face of Q through which the ray from its centre c*
-// through y leaves Q. The triangle T of Q that the origin's ray along w meets lies within
-// its sagitta h (the gap between T and the sphere, about the square of T's angular size over
-// 8) of y, so the ray from c* through y leaves Q within about h |y - c*| / (its distance to
-// Q's inner sphere) of y: through T or a triangle near it, whose label is the extreme vertex
-// or one of its neighbours in the vertex graph. On a finely tessellated surface (many small
-// faces, h tiny) the proposal is the extreme vertex, or one move from it, except where w lies
-// within rounding of a face normal.
+// The grid cells of w and of -w are computed from w alone (no table read), and each proposes
+// its vertex: the extreme for directions near the cell's middle, a neighbour of it or close
+// for the rest of the cell, since a cell is a fraction of a vertex's cone wide on a finely
+// tessellated surface (about 4 cells per vertex).
 //
-// Exactness and cost. The climb (graph3d.hpp) compares vertices exactly and stops only at a
-// largest vertex, so the answer, from the exact signs of G at the two vertices it reaches, is
-// exact whatever the proposals. Each move costs a vertex's degree in comparisons. It is O(1)
-// when the proposals are within a few moves of the extremes (above); where they are not (a
-// coarse dual on a polyhedron with few faces, or rounding) the climb is longer, O(V) at worst.
+// Exactness and cost. The climb compares vertices exactly (graph3d.hpp) and stops only at a
+// vertex none of whose neighbours is strictly larger, a largest vertex, so the answer, from
+// the exact signs of G at the two vertices it reaches, is exact whatever the proposals. It
+// reads the proposal's star (one run of memory), and each move one more star and costs a
+// vertex's degree in comparisons. It is O(1) when the proposals are within a few moves of the
+// extremes (fine surfaces, as above); where they are not (a polyhedron whose vertex cones
+// differ in size by orders of magnitude, or with vertices of very high degree) the climb is
+// longer, O(V) at worst.
 #include "intersect/plane_dual.hpp"
 
 #include <algorithm>
@@ -113,6 +114,47 @@ std::uint32_t climbAlong(const VertexGraph& graph, const std::vector<Vec3>& v, V
   return at;
 }
 
+// the cell of direction w on a grid of side g per cube face: the face of w's dominant axis
+// (and its sign), then w's other two coordinates over the dominant one's magnitude, each in
+// [-1, 1], cut into g; -1 when w is zero or not finite
+std::int64_t gridCell(Vec3 w, std::uint32_t g) noexcept {
+  const double ax = std::fabs(w.x), ay = std::fabs(w.y), az = std::fabs(w.z);
+  int axis = 2;
+  double major = w.z, u = w.x, v = w.y;
+  if (ax >= ay && ax >= az)
+    axis = 0, major = w.x, u = w.y, v = w.z;
+  else if (ay >= az)
+    axis = 1, major = w.y, u = w.z, v = w.x;
+  const double m = std::fabs(major);
+  if (!(m > 0) || !(ax + ay + az < std::numeric_limits<double>::infinity())) return -1;
+  const double half = 0.5 * g;
+  auto slot = [&](double c) {
+    return std::min(g - 1, static_cast<std::uint32_t>((c / m + 1) * half));
+  };
+  const std::int64_t face = 2 * axis + (major < 0 ? 1 : 0);
+  return (face * g + slot(u)) * g + slot(v);
+}
+
+// the direction through the centre of grid cell `c` (the inverse of gridCell)
+Vec3 gridDirection(std::size_t c, std::uint32_t g) {
+  const std::size_t face = c / (std::size_t{g} * g), i = c / g % g, j = c % g;
+  const double u = (2.0 * static_cast<double>(i) + 1) / g - 1;
+  const double v = (2.0 * static_cast<double>(j) + 1) / g - 1;
+  const double major = face % 2 ? -1.0 : 1.0;
+  switch (face / 2) {
+    case 0: return {major, u, v};
+    case 1: return {v, major, u};
+    default: return {u, v, major};
+  }
+}
+
+// the grid's side for a polyhedron of n vertices: about 4 cells per vertex, so a cell is a
+// fraction of a vertex's cone of directions on a fine surface
+std::uint32_t gridSideFor(std::size_t n) {
+  const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(n) / 6.0));
+  return static_cast<std::uint32_t>(std::clamp(side, 1.0, 4096.0));
+}
+
 // For every triangle of the dual, the vertex of P farthest along its middle direction: a
 // breadth-first walk over the dual's triangles, each climb starting from its parent's label.
 std::vector<std::uint32_t> labelFaces(const ConvexPolyhedron& dual, const VertexGraph& graph,
@@ -143,14 +185,32 @@ std::vector<std::uint32_t> labelFaces(const ConvexPolyhedron& dual, const Vertex
 }  // namespace
 
 DualCubemap3D::DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGraph& graph) {
+  const std::vector<Vec3> scaled = scaledVertices(polyhedron.vertices());
+  // the grid: each cell proposes the vertex farthest along its middle direction, climbing
+  // from the previous cell's proposal (neighbouring cells, neighbouring vertices)
+  side_ = gridSideFor(scaled.size());
+  grid_.resize(6 * std::size_t{side_} * side_);
+  std::uint32_t at = 0;
+  for (std::size_t c = 0; c < grid_.size(); ++c) {
+    at = climbAlong(graph, scaled, gridDirection(c, side_), at);
+    grid_[c] = starOf(at, graph);
+  }
+  stars_.reserve(polyhedron.vertexCount() + graph.neighbours.size());
+  const auto v = polyhedron.vertices();
+  for (std::uint32_t k = 0; k < polyhedron.vertexCount(); ++k) {
+    stars_.push_back(v[k]);
+    for (const std::uint32_t n : graph.of(k)) stars_.push_back(v[n]);
+  }
   const std::vector<Vec3> normals = unitNormals(polyhedron);
   try {
     const ConvexPolyhedron dual = ConvexPolyhedron::hullOf(normals);
     dualVertices_ = dual.vertexCount();
-    labels_ = labelFaces(dual, graph, scaledVertices(polyhedron.vertices()));
+    dualFaces_ = dual.faceCount();
+    labels_ = labelFaces(dual, graph, scaled);
     cube_.emplace(dual);
   } catch (const GeometryError&) {
-    labels_.clear();  // no dual: every query climbs from vertex 0
+    dualFaces_ = 0;  // no dual: the grid still proposes, the trace lists no cube-map cells
+    labels_.clear();
   }
 }
 
@@ -159,22 +219,26 @@ Vec3 DualCubemap3D::aim(Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
   return unitCross(scaledDifference(q1, q3), scaledDifference(q1, q2));
 }
 
-bool DualCubemap3D::propose(Vec3 q1, Vec3 q2, Vec3 q3, std::uint32_t& largest,
-                            std::uint32_t& smallest, std::uint32_t& listedLargest,
-                            std::uint32_t& listedSmallest) const noexcept {
+bool DualCubemap3D::cells(Vec3 q1, Vec3 q2, Vec3 q3, std::int64_t& up,
+                          std::int64_t& down) const noexcept {
+  const Vec3 w = aim(q1, q2, q3);
+  up = gridCell(w, side_);
+  down = gridCell({-w.x, -w.y, -w.z}, side_);
+  return up >= 0 && down >= 0;
+}
+
+bool DualCubemap3D::listed(Vec3 q1, Vec3 q2, Vec3 q3, std::uint32_t& largest,
+                           std::uint32_t& smallest) const noexcept {
   if (!cube_) return false;
   const Vec3 w = aim(q1, q2, q3);
-  const auto up = cube_->cellFaces(w), down = cube_->cellFaces({-w.x, -w.y, -w.z});
-  if (up.empty() || down.empty()) return false;
-  largest = labels_[up[up.size() / 2]];
-  smallest = labels_[down[down.size() / 2]];
-  listedLargest = static_cast<std::uint32_t>(up.size());
-  listedSmallest = static_cast<std::uint32_t>(down.size());
+  largest = static_cast<std::uint32_t>(cube_->cellFaces(w).size());
+  smallest = static_cast<std::uint32_t>(cube_->cellFaces({-w.x, -w.y, -w.z}).size());
   return true;
 }
 
 std::size_t DualCubemap3D::bytes() const noexcept {
-  return (cube_ ? cube_->stats().bytes : 0) + bytesOf(labels_);
+  return (cube_ ? cube_->stats().bytes : 0) + bytesOf(grid_) + bytesOf(stars_) +
+         labels_.size() * sizeof(std::uint32_t);
 }
 
 }  // namespace convexloc::detail

@@ -3,6 +3,7 @@
 // Both methods reach a vertex where G is largest and one where it is smallest and read the
 // crossing from their exact signs (crossingOf); the baseline's classify reads every vertex's
 // sign instead, stopping once both sides are seen.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -22,6 +23,9 @@
 namespace convexloc {
 
 namespace {
+
+// planes per block of the dual batch
+constexpr std::size_t kBatchBlock = 16;
 
 // the crossing from every vertex's side: O(V)
 Crossing crossingBySides(std::span<const Vec3> vertices, Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
@@ -75,6 +79,36 @@ PlaneIntersector::~PlaneIntersector() = default;
 PlaneIntersector::PlaneIntersector(PlaneIntersector&&) noexcept = default;
 PlaneIntersector& PlaneIntersector::operator=(PlaneIntersector&&) noexcept = default;
 
+std::uint32_t PlaneIntersector::largestFrom(detail::GridCell from, detail::PlaneProbe& probe,
+                                            Vec3& at, std::uint32_t& steps) const noexcept {
+  for (;;) {
+    const Vec3* star = dual_->star(from);
+    std::uint32_t higher = 0;
+    for (std::uint32_t k = 1; k <= from.degree; ++k)
+      if (probe.rise(star[0], star[k]) > 0) {
+        higher = k;
+        break;
+      }
+    if (higher == 0) {  // no neighbour is strictly larger: a largest vertex
+      at = star[0];
+      return from.vertex;
+    }
+    // the star of vertex v begins at offsets[v] + v, so v's neighbour list at star - v
+    from = dual_->starOf(graph_->neighbours[from.star - from.vertex + higher - 1], *graph_);
+    ++steps;
+  }
+}
+
+Crossing PlaneIntersector::classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const detail::GridCell& up,
+                                        const detail::GridCell& down) const noexcept {
+  detail::PlaneProbe high{q1, q2, q3}, low = high.swapped();
+  Vec3 largest, smallest;
+  std::uint32_t steps = 0;
+  largestFrom(up, high, largest, steps);
+  largestFrom(down, low, smallest, steps);
+  return crossingOf(orient3d(q1, q2, q3, largest), orient3d(q1, q2, q3, smallest));
+}
+
 PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const noexcept {
   PlaneTrace t;
   t.method = method_;
@@ -84,12 +118,17 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
     e.largest = detail::scanLargest<Vec3>(vertices_, up);
     e.smallest = detail::scanLargest<Vec3>(vertices_, down);
   } else {
-    t.proposed = dual_->propose(q1, q2, q3, t.startMax, t.startMin, t.listedMax, t.listedMin);
-    e.largest = t.startMax;
-    e.smallest = t.startMin;
-    constexpr std::uint32_t kNoLimit = std::numeric_limits<std::uint32_t>::max();
-    detail::climbToLargest(*graph_, vertices_, up, e.largest, kNoLimit, t.climbSteps);
-    detail::climbToLargest(*graph_, vertices_, down, e.smallest, kNoLimit, t.climbSteps);
+    std::int64_t cellUp = -1, cellDown = -1;
+    t.proposed = dual_->cells(q1, q2, q3, cellUp, cellDown);
+    const detail::GridCell first = dual_->starOf(0, *graph_);  // where no cell proposes
+    const detail::GridCell high = t.proposed ? dual_->cell(cellUp) : first;
+    const detail::GridCell low = t.proposed ? dual_->cell(cellDown) : first;
+    t.startMax = high.vertex;
+    t.startMin = low.vertex;
+    if (tracing) dual_->listed(q1, q2, q3, t.listedMax, t.listedMin);
+    Vec3 at;
+    e.largest = largestFrom(high, up, at, t.climbSteps);
+    e.smallest = largestFrom(low, down, at, t.climbSteps);
   }
   e.largestSign = orient3d(q1, q2, q3, vertices_[e.largest]);
   e.smallestSign = orient3d(q1, q2, q3, vertices_[e.smallest]);
@@ -101,13 +140,59 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
 
 Crossing PlaneIntersector::classify(Vec3 q1, Vec3 q2, Vec3 q3) const noexcept {
   if (method_ == PlaneMethod::Vertices) return crossingBySides(vertices_, q1, q2, q3);
+  std::int64_t up = -1, down = -1;
+  if (dual_->cells(q1, q2, q3, up, down))
+    return classifyFrom(q1, q2, q3, dual_->cell(up), dual_->cell(down));
   return run(q1, q2, q3, false).crossing;
 }
 
+// The dual batch in blocks of kBatchBlock planes, three blocks in flight: the grid cells of
+// one block are found and prefetched, the stars the previous block's cells propose are
+// prefetched, and the block before that climbs, so each block's loads overlap two blocks'
+// work. Every plane gets what classify(q1, q2, q3) gives it.
 void PlaneIntersector::classify(std::span<const Vec3> planes,
                                 std::span<Crossing> out) const noexcept {
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = classify(planes[3 * i], planes[3 * i + 1], planes[3 * i + 2]);
+  const std::size_t n = std::min(planes.size() / 3, out.size());
+  if (method_ == PlaneMethod::Vertices) {
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = classify(planes[3 * i], planes[3 * i + 1], planes[3 * i + 2]);
+    return;
+  }
+  std::int64_t cells[3][kBatchBlock][2];         // per block: each plane's up and down cells
+  detail::GridCell starts[3][kBatchBlock][2]{};  // and the cells' proposals
+  auto aim = [&](std::size_t first, std::int64_t(*c)[2]) {
+    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
+      const Vec3* q = planes.data() + 3 * (first + j);
+      if (!dual_->cells(q[0], q[1], q[2], c[j][0], c[j][1])) {
+        c[j][0] = -1;
+        continue;
+      }
+      dual_->prefetch(c[j][0]);
+      dual_->prefetch(c[j][1]);
+    }
+  };
+  auto load = [&](std::size_t first, const std::int64_t(*c)[2], detail::GridCell(*s)[2]) {
+    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
+      if (c[j][0] < 0) continue;
+      for (int k = 0; k < 2; ++k) {
+        s[j][k] = dual_->cell(c[j][k]);
+        dual_->prefetchStar(s[j][k]);
+      }
+    }
+  };
+  aim(0, cells[0]);
+  aim(kBatchBlock, cells[1]);
+  load(0, cells[0], starts[0]);
+  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b = (b + 1) % 3) {
+    aim(first + 2 * kBatchBlock, cells[(b + 2) % 3]);
+    load(first + kBatchBlock, cells[(b + 1) % 3], starts[(b + 1) % 3]);
+    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
+      const Vec3* q = planes.data() + 3 * (first + j);
+      out[first + j] = cells[b][j][0] < 0
+                           ? classify(q[0], q[1], q[2])
+                           : classifyFrom(q[0], q[1], q[2], starts[b][j][0], starts[b][j][1]);
+    }
+  }
 }
 
 PlaneTrace PlaneIntersector::trace(Vec3 q1, Vec3 q2, Vec3 q3) const {

@@ -65,6 +65,14 @@ inline bool climbToLargest(std::span<const Vec2> ring, LineProbe& line, std::uin
   }
 }
 
+// Which of window v[1], v[2] (four consecutive ring vertices) is a largest vertex, read
+// from the window alone: 1 or 2 when neither of its ring neighbours is strictly larger, 0
+// when neither is confirmed (one of them still has a larger neighbour).
+inline int largestInWindow(const Vec2 (&v)[4], LineProbe& line) noexcept {
+  if (line.rise(v[1], v[2]) > 0) return line.rise(v[2], v[3]) > 0 ? 0 : 2;
+  return line.rise(v[1], v[0]) > 0 ? 0 : 1;
+}
+
 // a vertex where f is largest, by bisection over the ring: O(log N) exact comparisons
 std::uint32_t bisectLargest(std::span<const Vec2> ring, LineProbe& line) noexcept;
 
