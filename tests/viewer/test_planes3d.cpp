@@ -94,7 +94,7 @@ TEST(Planes3D, TheSectionShowsWhereTheLocatorFindsThePlaneInside) {
   EXPECT_EQ(insideSamples(c.planes.plane()->section), 0u);
 }
 
-TEST(Planes3D, TheDualCellOfYProposesCoresStartingVertex) {
+TEST(Planes3D, TheDualCellOfYListsCoresFacesAndTheProposalsClimbToTheExtremes) {
   CubePlanes c;
   c.ask({0.1, 0.2, 0.3}, {1, 0.5, 0}, {0, 1, 0.25});
   const cv::PlaneProbe3D& p = *c.planes.plane();
@@ -103,9 +103,19 @@ TEST(Planes3D, TheDualCellOfYProposesCoresStartingVertex) {
   ASSERT_GE(p.cellDown, 0);
   ASSERT_FALSE(p.listedUp.empty());
   EXPECT_EQ(c.planes.dualCells()[static_cast<std::size_t>(p.cellUp)].faces, p.listedUp);
+  EXPECT_EQ(p.listedUp.size(), p.dual.listedMax);
+  EXPECT_EQ(p.listedDown.size(), p.dual.listedMin);
+  // every listed dual face stands for a vertex of the cube
   const auto labels = c.planes.dualIntersector()->dualLabels();
-  EXPECT_EQ(labels[p.listedUp[p.listedUp.size() / 2]], p.dual.startMax);
-  EXPECT_EQ(labels[p.listedDown[p.listedDown.size() / 2]], p.dual.startMin);
+  for (const auto* listed : {&p.listedUp, &p.listedDown})
+    for (const std::uint32_t f : *listed) EXPECT_LT(labels[f], 8u);
+  // the proposals are vertices, and the climb from them ends at the exact extremes
+  EXPECT_LT(p.dual.startMax, 8u);
+  EXPECT_LT(p.dual.startMin, 8u);
+  const PlaneIntersector every(c.scene.polyhedron(), PlaneMethod::Vertices);
+  const convexloc::PlaneTrace e = every.trace(p.q[0], p.q[1], p.q[2]);
+  EXPECT_EQ(p.dual.extremes.largestSign, e.extremes.largestSign);
+  EXPECT_EQ(p.dual.extremes.smallestSign, e.extremes.smallestSign);
 }
 
 TEST(Planes3D, CollinearPointsAreRefusedAndTheLastPlaneStays) {
