@@ -201,3 +201,33 @@ def test_conveniences_equal_locators():
     np.testing.assert_array_equal(convexloc.hull_contains(cloud, q), codes != convexloc.OUTSIDE)
     np.testing.assert_array_equal(convexloc.hull_contains(hull, q, boundary=False),
                                   codes == convexloc.INSIDE)
+
+
+def test_2d_trace_steps_and_paper_mode():
+    """The trace tells the slab search's probes, eq. (4)'s numbers and the polar index; with
+    radii=False the polar cell's edges decide, with the same answer."""
+    vertices = POLYGONS["heptagon"]
+    polygon = convexloc.Polygon(vertices)
+    slab = convexloc.LOCATORS_2D["slab"](polygon)
+    centre = np.mean(vertices, axis=0)
+    t = slab.trace(centre)
+    assert len(t["probes"]) >= 1
+    ys = sorted(set(float(v[1]) for v in vertices))
+    for rank, y, above in t["probes"]:
+        assert ys[rank] == y
+        assert above == (centre[1] >= y)
+    uniform = convexloc.LOCATORS_2D["uniform"](polygon)
+    u = uniform.trace(centre)["uniform"]
+    assert u["slabs"] > 0
+    assert int(u["value"]) == uniform.trace(centre)["cell"]
+    polar = convexloc.LOCATORS_2D["polar"](polygon)
+    points = query_points_2d(vertices, polar)[::53]
+    tested = 0
+    for p in points:
+        fast, paper = polar.trace(p), polar.trace(p, radii=False)
+        assert paper["result"] == fast["result"] == polar.locate([p])[0]
+        assert not paper["radius_filter"] and not paper["by_radius"]
+        if paper["cell"] >= 0:
+            assert paper["polar"]["slabs"] == polar.slabs_per_octant
+            tested += len(paper["edges"]) + len(paper["rays"]) > 0
+    assert tested > 0

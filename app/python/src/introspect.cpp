@@ -82,6 +82,19 @@ py::dict traceToPython(const Trace2D& t) {
   d["apex"] = toPython(t.apex);
   d["rays"] = signs(t.rays, &RayTest::vertex);
   d["edges"] = signs(t.edges, &EdgeTest::edge);
+  d["radius_filter"] = t.radiusFilter;
+  py::list probes;
+  for (const SlabProbe& s : t.probes) probes.append(py::make_tuple(s.rank, s.y, s.above));
+  d["probes"] = probes;
+  py::dict uniform;
+  uniform["y_min"] = t.uniform.yMin, uniform["height"] = t.uniform.height;
+  uniform["value"] = t.uniform.value, uniform["slabs"] = t.uniform.slabs;
+  d["uniform"] = uniform;
+  py::dict polar;
+  polar["direction"] = toPython(t.polar.direction), polar["ratio"] = t.polar.ratio;
+  polar["steep"] = t.polar.steep, polar["slab"] = t.polar.slab, polar["slabs"] = t.polar.slabs;
+  polar["base"] = t.polar.base, polar["step"] = t.polar.step;
+  d["polar"] = polar;
   return d;
 }
 
@@ -119,6 +132,9 @@ py::dict traceToPython(const Trace3D& t) {
   for (const WalkTest& w : t.steps) steps.append(py::make_tuple(w.face, int{w.edge}, w.sign));
   d["steps"] = steps;
   d["faces"] = signs(t.faces, &FaceTest::face);
+  d["radius_filter"] = t.radiusFilter;
+  d["direction"] = toPython(t.direction);
+  d["cells_per_side"] = t.cellsPerSide;
   return d;
 }
 

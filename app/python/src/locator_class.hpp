@@ -111,12 +111,18 @@ void defineIntrospection(py::class_<Locator>& c, Method method) {
   using Point = typename Dimension<Method>::Point;
   c.def(
       "trace",
-      [](const Locator& l, const py::object& point) {
-        return traceToPython(l.trace(onePoint<Point>(point)));
+      [](const Locator& l, const py::object& point, bool radii) {
+        const Point p = onePoint<Point>(point);
+        if constexpr (requires { l.trace(p, TraceOptions{}); })
+          return traceToPython(l.trace(p, TraceOptions{.radii = radii}));
+        else
+          return traceToPython(l.trace(p));
       },
-      py::arg("point"),
+      py::arg("point"), py::kw_only(), py::arg("radii") = true,
       "What locating one point does: a dict of the cell chosen, the tests made with their "
-      "signs, and the result (as a code and as a name).");
+      "signs, and the result (as a code and as a name). radii=False runs the polar and "
+      "cube-map queries without convexloc's radius filter, as the paper describes them (the "
+      "cell's edges or faces decide); the answer is the same.");
   c.def(
       "stats", [](const Locator& l) { return statsToPython(l.stats()); },
       "The size and shape of the subdivision: a dict (cells, entries, max_per_cell, bytes, "
