@@ -80,7 +80,7 @@ void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, flo
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::BeginGroup();
     ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-    textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
+    textAtSpaces(std::to_string(i + 1) + ". " + s.caption, "    ");
     ImGui::PopStyleColor();
     ImGui::EndGroup();
     if (current) {
@@ -107,32 +107,12 @@ void codeList(const StepModel& m, int step, const Palette& pal, bool onlyCurrent
     const bool on = static_cast<int>(i) == line;
     if (onlyCurrent && !on) continue;
     ImGui::PushStyleColor(ImGuiCol_Text, im(on ? pal.hoverEdge : pal.textMuted));
-    textWrappedAtSpaces((on ? "> " : "  ") + m.code[i]);
+    textAtSpaces((on ? "> " : "  ") + m.code[i], "    ");
     ImGui::PopStyleColor();
   }
 }
 
 }  // namespace
-
-void textWrappedAtSpaces(const std::string& text) {
-  const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
-  std::string line;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string wider = line.empty() ? word : line + " " + word;
-    if (!line.empty() && ImGui::CalcTextSize(wider.c_str()).x > width) {
-      ImGui::TextUnformatted(line.c_str());
-      line = "    " + word;  // continued lines indented
-    } else {
-      line = wider;
-    }
-    start = end + 1;
-  }
-  ImGui::TextUnformatted(line.c_str());
-}
 
 void stepsWindow(Model& model, ScreenRect area, double now) {
   const std::optional<StepModel> m = model.steps();

@@ -12,7 +12,4 @@ namespace convexloc::viewer {
 // plays the steps at `now` (seconds).
 void stepsWindow(Model& model, ScreenRect area, double now);
 
-// `text` wrapped to the available width at spaces only, so that no number breaks
-void textWrappedAtSpaces(const std::string& text);
-
 }  // namespace convexloc::viewer

@@ -145,13 +145,13 @@ void gallery(Model& model, bool solid) {
   }
 }
 
-void textAtSpaces(std::string_view text) {
-  const float width = ImGui::GetContentRegionAvail().x;
+void textAtSpaces(std::string_view text, std::string_view indent) {
+  const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
   const auto measure = [](std::string_view t) {
     const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
     return glm::dvec2(v.x, v.y);
   };
-  for (const std::string& line : breakAtSpaces(text, width, measure))
+  for (const std::string& line : breakAtSpaces(text, width, measure, indent))
     ImGui::TextUnformatted(line.c_str());
 }
 
