@@ -300,7 +300,10 @@ void writeLabels(const SvgScene& s, std::string& out) {
       out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
              num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
              paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
-    out += "  " + textSvg(p.place.centre, p.label->text, p.label->colour) + "\n";
+    out += "  " +
+           textSvg(p.place.centre, p.label->text,
+                   readableOn(p.label->colour, s.background, s.text)) +
+           "\n";
   }
   out += "</g>\n";
 }

@@ -324,7 +324,7 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
           packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
     for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
       dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
-    dl->AddText(at, packAbgr(p.label->colour), text);
+    dl->AddText(at, packAbgr(readableOn(p.label->colour, pal.background, pal.text)), text);
   }
 }
 

@@ -149,7 +149,8 @@ void lineInspector(Model& model, bool hints) {
   const Rgba colour = line->hit.crossing == Crossing::Crosses   ? pal.inside
                       : line->hit.crossing == Crossing::Touches ? pal.boundary
                                                                 : pal.outside;
-  ImGui::TextColored(im(colour), "Line: %s", std::string(toString(line->hit.crossing)).c_str());
+  ImGui::TextColored(im(readableOn(colour, pal.background, pal.text)), "Line: %s",
+                     std::string(toString(line->hit.crossing)).c_str());
   traceLines(describeLine(*line, lines.dualVertices(), lines.intersector()->dualLocator()), pal,
              colour);
   if (ImGui::SmallButton("Clear (Esc)")) model.lines2d.clearLine();

@@ -220,7 +220,8 @@ void planeInspector(Model& model) {
   if (!plane) return;
   const Crossing c = plane->chosen(planes.method()).crossing;
   const Rgba colour = crossingColour(pal, c);
-  ImGui::TextColored(im(colour), "Plane: %s", std::string(toString(c)).c_str());
+  ImGui::TextColored(im(readableOn(colour, pal.background, pal.text)), "Plane: %s",
+                     std::string(toString(c)).c_str());
   const CubemapLocator* cube = planes.dualIntersector()->dualLocator();
   traceLines(
       describePlane(*plane, planes.method(), cube ? cube->vertices() : std::span<const Vec3>{}),

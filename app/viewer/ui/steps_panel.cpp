@@ -17,7 +17,7 @@ Rgba stepColour(const Step& s, const Palette& pal, Rgba result) {
   switch (s.kind) {
     case TraceLine::Positive: return pal.positive;
     case TraceLine::Negative: return pal.negative;
-    case TraceLine::Zero: return pal.zero;
+    case TraceLine::Zero: return readableOn(pal.zero, pal.background, pal.text);
     case TraceLine::Result: return result;
     default: return pal.text;
   }

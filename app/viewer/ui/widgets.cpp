@@ -170,7 +170,7 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
       c = resultColour;
     else if (l.kind == TraceLine::Heading)
       c = pal.textMuted;
-    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    ImGui::PushStyleColor(ImGuiCol_Text, im(readableOn(c, pal.background, pal.text)));
     textAtSpaces(l.text);
     ImGui::PopStyleColor();
   }
