@@ -350,6 +350,27 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
+namespace {
+
+// The Steps window over the lower left corner of `full` costs the fitted area `a` a strip:
+// the bottom one up to the window's top or the left one up to its right edge, whichever
+// leaves the scene more of its size.
+void leaveRoomForSteps(ScreenRect& a, const UiState& ui, const ScreenRect& full) {
+  if (ui.stepsSize[0] <= 0.0f) return;
+  const double top = full.hi.y - ui.captionHeight - 10.0 - ui.stepsSize[1] - 10.0;
+  const double right = full.lo.x + 10.0 + ui.stepsSize[0] + 10.0;
+  if (top >= a.hi.y || right <= a.lo.x) return;
+  const glm::dvec2 s = a.size();
+  const double keepHigh = (top - a.lo.y) / s.y, keepWide = (a.hi.x - right) / s.x;
+  if (std::max(keepHigh, keepWide) < 0.4) return;  // no strip worth it: the window floats
+  if (keepHigh >= keepWide)
+    a.hi.y = top;
+  else
+    a.lo.x = right;
+}
+
+}  // namespace
+
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   ScreenRect a = sceneArea(model, window);
   a.hi.y -= ui.captionHeight;
@@ -365,6 +386,7 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
         a.hi.y -= lh;
     }
   }
+  leaveRoomForSteps(a, ui, sceneArea(model, window));
   model.fit(a);
   ui.refitUntil = now + 1.5;
 }
@@ -467,7 +489,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  stepsWindow(model, area, now);  // also with the panels hidden
+  stepsWindow(model, ui, area, now);  // also with the panels hidden
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "logic/label_layout.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -114,8 +115,51 @@ void codeList(const StepModel& m, int step, const Palette& pal, bool onlyCurrent
 
 }  // namespace
 
-void stepsWindow(Model& model, ScreenRect area, double now) {
+namespace {
+
+// the heading: the method and point, the note, and the pseudo-code's fold (`whole`: the
+// code is shown whole now)
+void stepsHeading(UiState& ui, const StepModel& m, const Palette& pal, bool whole) {
+  ImGui::TextColored(im(pal.textMuted), "%s", m.title.c_str());
+  if (!m.note.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(im(pal.hoverEdge), "(%s)", m.note.c_str());
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton(whole ? "code -" : "code +")) ui.stepsCode = whole ? 0 : 1;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(whole ? "show the current line of pseudo-code alone"
+                            : "show the method's whole pseudo-code");
+}
+
+// the Steps window's width: at most half the scene (and 46 em), at least 16 em where the
+// scene has them
+float stepsWidth(ScreenRect area, float font) {
+  const float half = static_cast<float>(area.size().x) * 0.5f;
+  return std::max(std::min(half, font * 46.0f), std::min(font * 16.0f, half * 1.6f));
+}
+
+// the height the step list takes at `width` pixels, its captions broken as stepList breaks
+// them
+float stepListHeight(const StepModel& m, float width) {
+  const auto measure = [](std::string_view t) {
+    const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
+    return glm::dvec2(v.x, v.y);
+  };
+  std::size_t lines = 0;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    lines +=
+        breakAtSpaces(std::to_string(i + 1) + ". " + m.steps[i].caption, width, measure, "    ")
+            .size();
+  return static_cast<float>(lines) * ImGui::GetTextLineHeightWithSpacing();
+}
+
+}  // namespace
+
+void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   const std::optional<StepModel> m = model.steps();
+  const float before[2] = {ui.stepsSize[0], ui.stepsSize[1]};
+  ui.stepsSize[0] = ui.stepsSize[1] = 0.0f;
   if (!model.settings.stepBoxVisible || !m || m->steps.empty()) return;
   int step = model.step();
   if (model.stepPlayer.playing) {
@@ -129,33 +173,32 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
                                                     : model.scene3d().probe()->trace.result)
           : pal.text;
   const float font = ImGui::GetFontSize();
-  // at most 62% of the scene's width: the legend keeps the lower right corner
-  const float w = std::min(static_cast<float>(area.size().x) * 0.62f, font * 50.0f);
-  const bool sideBySide = w > font * 40.0f;
-  ImGui::SetNextWindowPos(
-      ImVec2(static_cast<float>(area.lo.x) + 10.0f, static_cast<float>(area.hi.y) - 10.0f),
-      ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  const float w = stepsWidth(area, font);
+  const bool wide = w > font * 40.0f;
+  const bool whole = ui.stepsCode < 0 ? wide : ui.stepsCode == 1;
+  const bool sideBySide = whole && wide;
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 10.0f,
+                                 static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
+                          ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("Steps", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  ImGui::TextColored(im(pal.textMuted), "%s", m->title.c_str());
-  if (!m->note.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(im(pal.hoverEdge), "(%s)", m->note.c_str());
-  }
+  stepsHeading(ui, *m, pal, whole);
   stepControls(model, *m, step, now);
   ImGui::Separator();
-  // at most about a third of the scene's height for the list
+  // at most about a fifth of the scene's height (3 to 8 lines) for the list; a longer one
+  // scrolls
   const float line = ImGui::GetTextLineHeightWithSpacing();
-  const float most = std::max(3.0f, std::floor(static_cast<float>(area.size().y) * 0.3f / line));
-  const float rows = std::min(static_cast<float>(m->steps.size()), std::min(most, 9.0f));
-  // a few steps show whole, more scroll in a list `rows` high
-  const float listHeight = static_cast<float>(m->steps.size()) <= rows
-                               ? 0.0f
-                               : rows * line + ImGui::GetStyle().WindowPadding.y;
+  const float most =
+      line * std::clamp(std::floor(static_cast<float>(area.size().y) * 0.2f / line), 3.0f, 8.0f);
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float listWidth =
+      sideBySide ? 0.5f * (avail - ImGui::GetStyle().CellPadding.x * 4.0f) : avail;
+  const float listHeight =
+      stepListHeight(*m, listWidth) <= most ? 0.0f : most + ImGui::GetStyle().WindowPadding.y;
   if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
@@ -165,12 +208,19 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
     codeList(*m, step, pal, false);
     ImGui::EndTable();
   } else {
-    // narrow: the current step's pseudo-code line alone
+    // narrow, or the code folded: the current step's pseudo-code line alone, or all below
     stepList(*m, step, pal, result, listHeight);
     ImGui::Separator();
-    codeList(*m, step, pal, true);
+    codeList(*m, step, pal, !whole);
   }
+  const ImVec2 size = ImGui::GetWindowSize();
   ImGui::End();
+  ui.stepsSize[0] = size.x;
+  ui.stepsSize[1] = size.y;
+  // fitted a moment ago for another size (or none): fit again
+  if ((std::abs(size.x - before[0]) > 2.0f || std::abs(size.y - before[1]) > 2.0f) &&
+      now < ui.refitUntil)
+    model.requestFit();
 }
 
 }  // namespace convexloc::viewer
