@@ -160,7 +160,9 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   const std::optional<StepModel> m = model.steps();
   const float before[2] = {ui.stepsSize[0], ui.stepsSize[1]};
   ui.stepsSize[0] = ui.stepsSize[1] = 0.0f;
-  if (!model.settings.stepBoxVisible || !m || m->steps.empty()) return;
+  // the Lines and Planes modes draw no placed point: no steps of it either
+  const bool dualMode = model.dim == Dim::Two ? model.lines2d.enabled() : model.planes3d.enabled();
+  if (!model.settings.stepBoxVisible || !m || m->steps.empty() || dualMode) return;
   int step = model.step();
   if (model.stepPlayer.playing) {
     step = model.stepPlayer.tick(step, m->steps.size(), now);
