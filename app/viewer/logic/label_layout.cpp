@@ -19,6 +19,8 @@ constexpr double kGap = 5.0;
 constexpr double kRingStep = 9.0;
 // labels keep this many pixels apart
 constexpr double kPad = 3.0;
+// what a candidate one ring farther out costs, in line cells covered
+constexpr int kRingCost = 3;
 
 // the box of `size` put in direction `d` from the anchor, `gap` pixels clear of it
 LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double gap) {
@@ -129,14 +131,20 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
     asked.size = size;
     asked.centre = l.anchor + l.offset * scale;
     std::vector<LabelPlacement> candidates{asked};
+    std::vector<int> rings{0};
     for (int ring = 0; ring < kRings; ++ring)
-      for (glm::dvec2 d : kDirections)
+      for (glm::dvec2 d : kDirections) {
         candidates.push_back(around(l.anchor, size, d, (kGap + kRingStep * ring) * scale));
-    // the free candidate over the fewest line cells; the first free one without lines
+        rings.push_back(ring);
+      }
+    // the free candidate over the fewest line cells, a farther ring costing a few cells so
+    // that a label leaves its anchor only for clearly freer room; the first free one
+    // without lines
     int fewest = std::numeric_limits<int>::max();
-    for (const LabelPlacement& c : candidates) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const LabelPlacement& c = candidates[k];
       if (conflicts(c, placed, markers, area, true) != 0) continue;
-      const int over = lines ? lines->covered(c) : 0;
+      const int over = lines ? lines->covered(c) + kRingCost * rings[k] : 0;
       if (over < fewest) {
         fewest = over;
         placed[i] = c;

@@ -312,6 +312,7 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
   const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
+  const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
   for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, project, {area.lo, area.hi},
                                                      measureText, model.settings.drawScale())) {
     const char* text = p.label->text.c_str();
@@ -322,8 +323,10 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
           ImVec2(static_cast<float>(p.anchor.x), static_cast<float>(p.anchor.y)),
           ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
           packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
-    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
-      dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
+    // a halo of the background all round, as thick as the lines are scaled
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1),
+                           ImVec2(-1, -1), ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
+      dl->AddText(ImVec2(at.x + d.x * halo, at.y + d.y * halo), shadow, text);
     dl->AddText(at, packAbgr(readableOn(p.label->colour, pal.background, pal.text)), text);
   }
 }
