@@ -182,7 +182,9 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 10.0f,
                                  static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
                           ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-  ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
+  // exactly `w` wide (auto-resizing would grow it to its widest row), as high as it needs
+  ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0.0f),
+                                      ImVec2(w, static_cast<float>(area.size().y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("Steps", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
