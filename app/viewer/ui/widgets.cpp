@@ -64,9 +64,7 @@ void help(const char* text) {
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text);
-    ImGui::PopTextWrapPos();
+    textAtSpaces(text, {}, ImGui::GetFontSize() * 28.0f);
     ImGui::EndTooltip();
   }
 }
@@ -137,16 +135,16 @@ void gallery(Model& model, bool solid) {
     if (ImGui::Button(title.c_str(), ImVec2(fits ? half : -1.0f, 0.0f))) model.applyPreset(p.name);
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
-      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
-      ImGui::TextUnformatted(std::string(p.about).c_str());
-      ImGui::PopTextWrapPos();
+      textAtSpaces(p.about, {}, ImGui::GetFontSize() * 24.0f);
       ImGui::EndTooltip();
     }
   }
 }
 
-void textAtSpaces(std::string_view text, std::string_view indent) {
-  const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
+void textAtSpaces(std::string_view text, std::string_view indent, float asked) {
+  const float width = asked > 0.0f
+                          ? asked
+                          : std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
   const auto measure = [](std::string_view t) {
     const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
     return glm::dvec2(v.x, v.y);
