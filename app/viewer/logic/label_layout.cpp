@@ -21,6 +21,8 @@ constexpr double kRingStep = 9.0;
 constexpr double kPad = 3.0;
 // what a candidate one ring farther out costs, in line cells covered
 constexpr int kRingCost = 3;
+// the cells a SegmentGrid walks at most (well under a millisecond)
+constexpr std::size_t kWalkBudget = 300000;
 
 // the box of `size` put in direction `d` from the anchor, `gap` pixels clear of it
 LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double gap) {
@@ -72,7 +74,7 @@ SegmentGrid::SegmentGrid(PixelBox area, double cell) : area_(area), cell_(std::m
 }
 
 void SegmentGrid::add(glm::dvec2 a, glm::dvec2 b) {
-  if (cells_.empty()) return;
+  if (cells_.empty() || walked_ > kWalkBudget) return;
   // clipped to the area (Liang-Barsky), then walked in steps of half a cell
   double t0 = 0.0, t1 = 1.0;
   const glm::dvec2 d = b - a;
@@ -92,6 +94,7 @@ void SegmentGrid::add(glm::dvec2 a, glm::dvec2 b) {
   }
   const glm::dvec2 from = a + d * t0, to = a + d * t1;
   const int steps = 1 + static_cast<int>(glm::length(to - from) / (0.5 * cell_));
+  walked_ += static_cast<std::size_t>(steps);
   for (int s = 0; s <= steps; ++s) {
     const glm::dvec2 at = from + (to - from) * (static_cast<double>(s) / steps) - area_.lo;
     const int cx = std::clamp(static_cast<int>(at.x / cell_), 0, cols_ - 1);

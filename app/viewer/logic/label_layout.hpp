@@ -52,7 +52,9 @@ class SegmentGrid {
  public:
   // an empty grid over `area` with square cells `cell` pixels wide
   explicit SegmentGrid(PixelBox area = {}, double cell = 4.0);
-  // marks the cells the segment from `a` to `b` (window pixels) crosses, inside the area
+  // marks the cells the segment from `a` to `b` (window pixels) crosses, inside the area;
+  // past a fixed budget of cells walked (a dense wireframe) further segments are left out,
+  // so that a frame's labels stay cheap
   void add(glm::dvec2 a, glm::dvec2 b);
   // how many marked cells the placed box covers (its outer cells half-covered count too)
   int covered(const LabelPlacement& box) const;
@@ -63,6 +65,7 @@ class SegmentGrid {
   double cell_;
   int cols_ = 0, rows_ = 0;
   std::size_t marked_ = 0;
+  std::size_t walked_ = 0;
   std::vector<unsigned char> cells_;
 };
 
