@@ -132,10 +132,10 @@ void stepsHeading(UiState& ui, const StepModel& m, const Palette& pal, bool whol
                             : "show the method's whole pseudo-code");
 }
 
-// the Steps window's width: at most half the scene (and 46 em), at least 16 em where the
-// scene has them
+// the Steps window's width: at most half the scene, clear of its middle where the split
+// view divides it (and 46 em), at least 16 em where the scene has them
 float stepsWidth(ScreenRect area, float font) {
-  const float half = static_cast<float>(area.size().x) * 0.5f;
+  const float half = static_cast<float>(area.size().x) * 0.5f - 20.0f;
   return std::max(std::min(half, font * 46.0f), std::min(font * 16.0f, half * 1.6f));
 }
 
