@@ -357,19 +357,29 @@ namespace {
 
 // The Steps window over the lower left corner of `full` costs the fitted area `a` a strip:
 // the bottom one up to the window's top or the left one up to its right edge, whichever
-// leaves the scene more of its size.
-void leaveRoomForSteps(ScreenRect& a, const UiState& ui, const ScreenRect& full) {
+// leaves the larger drawing of a scene `aspect` times as wide as high.
+void leaveRoomForSteps(ScreenRect& a, const UiState& ui, const ScreenRect& full, double aspect) {
   if (ui.stepsSize[0] <= 0.0f) return;
   const double top = full.hi.y - ui.captionHeight - 10.0 - ui.stepsSize[1] - 10.0;
   const double right = full.lo.x + 10.0 + ui.stepsSize[0] + 10.0;
   if (top >= a.hi.y || right <= a.lo.x) return;
   const glm::dvec2 s = a.size();
-  const double keepHigh = (top - a.lo.y) / s.y, keepWide = (a.hi.x - right) / s.x;
-  if (std::max(keepHigh, keepWide) < 0.4) return;  // no strip worth it: the window floats
-  if (keepHigh >= keepWide)
+  // the scene's drawn height in each strip's rest, and with the window left floating
+  const double below = std::min(s.x / aspect, top - a.lo.y);
+  const double beside = std::min((a.hi.x - right) / aspect, s.y);
+  if (std::max(below, beside) < 0.4 * std::min(s.x / aspect, s.y)) return;  // it floats
+  if (below >= beside)
     a.hi.y = top;
   else
     a.lo.x = right;
+}
+
+// how many times as wide as high the fitted scene is (the polygon's box; 1 in 3D)
+double sceneAspect(const Model& model) {
+  if (model.dim != Dim::Two || model.lines2d.enabled()) return 1.0;
+  const Box2 b = model.scene2d.polygon().bounds();
+  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+  return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
 }
 
 }  // namespace
@@ -389,7 +399,7 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
         a.hi.y -= lh;
     }
   }
-  leaveRoomForSteps(a, ui, sceneArea(model, window));
+  leaveRoomForSteps(a, ui, sceneArea(model, window), sceneAspect(model));
   model.fit(a);
   ui.refitUntil = now + 1.5;
 }

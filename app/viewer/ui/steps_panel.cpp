@@ -139,6 +139,18 @@ float stepsWidth(ScreenRect area, float font) {
   return std::max(std::min(half, font * 46.0f), std::min(font * 16.0f, half * 1.6f));
 }
 
+// the width the window's longest lines need unbroken (the steps, and the code beside them
+// when `withCode`), at least the controls' row
+float neededWidth(const StepModel& m, bool withCode, float font) {
+  float steps = 0.0f, code = 0.0f;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    steps = std::max(
+        steps, ImGui::CalcTextSize((std::to_string(i + 1) + ". " + m.steps[i].caption).c_str()).x);
+  for (const std::string& c : m.code) code = std::max(code, ImGui::CalcTextSize(c.c_str()).x);
+  const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x + font * 2.0f;
+  return std::max(font * 24.0f, (withCode ? steps + code + font * 2.0f : steps) + pad);
+}
+
 // the height the step list takes at `width` pixels, its captions broken as stepList breaks
 // them
 float stepListHeight(const StepModel& m, float width) {
@@ -175,10 +187,11 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
                                                     : model.scene3d().probe()->trace.result)
           : pal.text;
   const float font = ImGui::GetFontSize();
-  const float w = stepsWidth(area, font);
-  const bool wide = w > font * 40.0f;
+  const float room = stepsWidth(area, font);
+  const bool wide = room > font * 40.0f;
   const bool whole = ui.stepsCode < 0 ? wide : ui.stepsCode == 1;
   const bool sideBySide = whole && wide;
+  const float w = std::min(room, neededWidth(*m, sideBySide, font));
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 10.0f,
                                  static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
                           ImGuiCond_Always, ImVec2(0.0f, 1.0f));
@@ -193,11 +206,11 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   stepsHeading(ui, *m, pal, whole);
   stepControls(model, *m, step, now);
   ImGui::Separator();
-  // at most about a fifth of the scene's height (3 to 8 lines) for the list; a longer one
+  // at most about a quarter of the scene's height (3 to 9 lines) for the list; a longer one
   // scrolls
   const float line = ImGui::GetTextLineHeightWithSpacing();
   const float most =
-      line * std::clamp(std::floor(static_cast<float>(area.size().y) * 0.2f / line), 3.0f, 8.0f);
+      line * std::clamp(std::floor(static_cast<float>(area.size().y) * 0.25f / line), 3.0f, 9.0f);
   const float avail = ImGui::GetContentRegionAvail().x;
   const float listWidth =
       sideBySide ? 0.5f * (avail - ImGui::GetStyle().CellPadding.x * 4.0f) : avail;
