@@ -191,7 +191,9 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   const bool wide = room > font * 40.0f;
   const bool whole = ui.stepsCode < 0 ? wide : ui.stepsCode == 1;
   const bool sideBySide = whole && wide;
-  const float w = std::min(room, neededWidth(*m, sideBySide, font));
+  // the list alone reads in 34 em, its longer steps wrapped
+  const float w =
+      std::min({room, neededWidth(*m, sideBySide, font), sideBySide ? room : font * 34.0f});
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 10.0f,
                                  static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
                           ImGuiCond_Always, ImVec2(0.0f, 1.0f));
