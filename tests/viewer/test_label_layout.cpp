@@ -105,3 +105,76 @@ TEST(LabelLayout, LabelsStayInsideTheWindow) {
   EXPECT_GE(placed[0].centre.x - 0.5 * placed[0].size.x, 0.0);
   EXPECT_LE(placed[0].centre.x + 0.5 * placed[0].size.x, 200.0);
 }
+
+namespace {
+
+// true when the segment from `a` to `b` passes through the placed box
+bool crosses(const cv::LabelPlacement& box, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 lo = box.centre - 0.5 * box.size, hi = box.centre + 0.5 * box.size;
+  for (int i = 0; i <= 200; ++i) {
+    const glm::dvec2 p = a + (b - a) * (i / 200.0);
+    if (p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(LabelLayout, ALabelIsNotPlacedAcrossASegmentWhenAFreeSpotExists) {
+  // "octant 1" asked right onto a line through its spot; the spots above the line are free
+  const cv::PixelBox area{{0.0, 0.0}, {400.0, 300.0}};
+  const glm::dvec2 a(0.0, 152.0), b(400.0, 152.0);
+  cv::SegmentGrid lines(area, 4.0);
+  lines.add(a, b);
+  const std::vector<cv::LabelRequest> labels{{{200.0, 160.0}, {0.0, -8.0}, "octant 1", false}};
+  const auto without = cv::placeLabels(labels, {}, mono, 1.0, area);
+  ASSERT_TRUE(without[0].shown);
+  EXPECT_TRUE(crosses(without[0], a, b));  // the asked spot is across the line
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, area, &lines);
+  ASSERT_TRUE(placed[0].shown);
+  EXPECT_FALSE(crosses(placed[0], a, b));
+  EXPECT_EQ(lines.covered(placed[0]), 0);
+}
+
+TEST(LabelLayout, LinesNeverMakeLabelsOverlapOrDropThem) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(0.0, 600.0), y(0.0, 400.0);
+  const cv::PixelBox area{{0.0, 0.0}, {600.0, 400.0}};
+  cv::SegmentGrid lines(area, 4.0);
+  for (int i = 0; i < 60; ++i) lines.add({x(rng), y(rng)}, {x(rng), y(rng)});
+  // a segment far outside the area is clipped away, not drawn along the border
+  lines.add({-500.0, -50.0}, {1200.0, -40.0});
+  std::vector<std::string> texts;
+  for (int i = 0; i < 120; ++i) texts.push_back(std::to_string(i * 7 + 100));
+  std::vector<cv::LabelRequest> labels;
+  for (int i = 0; i < 120; ++i) labels.push_back({{x(rng), y(rng)}, {8.0, -8.0}, texts[i], false});
+  const auto plain = cv::placeLabels(labels, {}, mono, 1.0, area);
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, area, &lines);
+  std::size_t shownPlain = 0, shown = 0, overPlain = 0, over = 0;
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    shownPlain += plain[i].shown;
+    shown += placed[i].shown;
+    if (plain[i].shown) overPlain += lines.covered(plain[i]) > 0;
+    if (!placed[i].shown) continue;
+    over += lines.covered(placed[i]) > 0;
+    for (std::size_t j = i + 1; j < placed.size(); ++j)
+      EXPECT_FALSE(placed[j].shown && cv::boxesOverlap(placed[i], placed[j])) << i << " " << j;
+  }
+  EXPECT_GT(shown, 0.9 * static_cast<double>(shownPlain));
+  EXPECT_LT(over, overPlain);
+  // the top border row stays free: the far segment was clipped away
+  EXPECT_EQ(lines.covered({true, {300.0, 1.0}, {500.0, 2.0}, false}), 0);
+}
+
+TEST(LabelLayout, ContinuedLinesAreIndented) {
+  const auto lines = cv::breakAtSpaces("1. k = floor(8*0.386316) = 3 -> cell 12", 7.0 * 16, mono, "  ");
+  ASSERT_GT(lines.size(), 1u);
+  EXPECT_EQ(lines[0].rfind("1. ", 0), 0u);
+  for (std::size_t i = 1; i < lines.size(); ++i) EXPECT_EQ(lines[i].rfind("  ", 0), 0u) << lines[i];
+  // every word of the text stands whole on some line
+  for (const char* word : {"floor(8*0.386316)", "->", "12"}) {
+    bool whole = false;
+    for (const std::string& l : lines) whole |= l.find(word) != std::string::npos;
+    EXPECT_TRUE(whole) << word;
+  }
+}

@@ -326,3 +326,22 @@ TEST(Interaction, DraggingAVertexHandleEditsThePolygon) {
   for (Vec2 q : v) moved |= std::abs(q.x - 5.0) < 1e-9 && std::abs(q.y - 4.0) < 1e-9;
   EXPECT_TRUE(moved);
 }
+
+TEST(Colour, LabelsOnTheLightThemeReadWhileMarkersKeepTheLegendsYellow) {
+  const cv::Palette& light = cv::paletteFor(cv::Theme::Light);
+  const cv::Palette& dark = cv::paletteFor(cv::Theme::Dark);
+  // the bright yellow on the light background is unreadable as text ...
+  EXPECT_LT(cv::contrastRatio(light.boundary, light.background), 2.0f);
+  // ... and reads once made readable, still a yellow (red and green over blue)
+  const cv::Rgba text = cv::readableOn(light.boundary, light.background, light.text);
+  EXPECT_GE(cv::contrastRatio(text, light.background), 4.0f);
+  EXPECT_GT(text.r, text.b + 0.15f);
+  EXPECT_GT(text.g, text.b + 0.15f);
+  EXPECT_EQ(cv::textColourOf(light, Location::Boundary),
+            cv::readableOn(light.zero, light.background, light.text));
+  EXPECT_GE(cv::contrastRatio(cv::textColourOf(light, Location::Boundary), light.background), 4.0f);
+  // the marker colour itself is left as the legend shows it
+  EXPECT_EQ(cv::colourOf(light, Location::Boundary), light.boundary);
+  // a colour that already reads is left alone (the dark theme's yellow)
+  EXPECT_EQ(cv::readableOn(dark.boundary, dark.background, dark.text), dark.boundary);
+}

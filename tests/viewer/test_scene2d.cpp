@@ -294,3 +294,25 @@ TEST(Model, AskedViewReplacesTheFitOnce) {
   m.fit(area);  // the next fit is the shape's again
   EXPECT_LT(m.camera2d.scale(), 1e6);
 }
+
+TEST(Model, TheFitHoldsAPlacedPointNearThePolygon) {
+  cv::Model m;
+  m.camera2d.setViewport({1000.0, 800.0});
+  const cv::ScreenRect area{{200.0, 0.0}, {1000.0, 800.0}};
+  const convexloc::Box2 b = m.scene2d.polygon().bounds();
+  // a point half a polygon above it (a slide's probe): in view after the fit
+  const convexloc::Vec2 near{0.5 * (b.lo.x + b.hi.x), b.hi.y + 0.5 * (b.hi.y - b.lo.y)};
+  m.scene2d.place(near);
+  m.fit(area);
+  const glm::dvec2 s = m.camera2d.toScreen({near.x, near.y});
+  EXPECT_GE(s.x, area.lo.x);
+  EXPECT_LE(s.x, area.hi.x);
+  EXPECT_GE(s.y, area.lo.y);
+  EXPECT_LE(s.y, area.hi.y);
+  // one far away does not shrink the polygon to a dot
+  m.scene2d.place({b.hi.x + 1e6, b.hi.y});
+  m.fit(area);
+  const glm::dvec2 lo = m.camera2d.toScreen({b.lo.x, b.lo.y});
+  const glm::dvec2 hi = m.camera2d.toScreen({b.hi.x, b.hi.y});
+  EXPECT_GT(std::abs(hi.x - lo.x), 300.0);
+}

@@ -252,3 +252,44 @@ TEST(Interaction3D, ClickOnThePlanePlacesAPointDragOrbits) {
   ia.update(in, m);
   EXPECT_NE(m.camera3d.yaw(), yaw);
 }
+
+namespace {
+
+// a click (press and release without moving) at `at`
+void clickAt(cv::Interaction& ia, cv::Model& m, glm::dvec2 at) {
+  cv::PointerInput in;
+  in.pos = at;
+  in.pressed[0] = in.down[0] = true;
+  ia.update(in, m);
+  in = {};
+  in.pos = at;
+  in.released[0] = true;
+  ia.update(in, m);
+}
+
+}  // namespace
+
+TEST(Interaction3D, AClickPlacesNoPointOnAHiddenPlane) {
+  cv::Model m;
+  m.show(cv::Dim::Three);
+  m.camera3d.setViewport({1000.0, 800.0});
+  m.fit({{0.0, 0.0}, {1000.0, 800.0}});
+  cv::Scene3D& s = m.scene3d();
+  s.setSlice({2, 0.0});
+  const cv::Projected p = m.camera3d.toScreen({0.1, 0.1, 0.0});
+  ASSERT_TRUE(p.visible());
+  cv::Interaction ia;
+  // the Planes mode hides the slicing plane: no point lands on it
+  m.planes3d.setEnabled(true);
+  clickAt(ia, m, p.screen);
+  EXPECT_FALSE(s.probe());
+  // the slicing plane hidden by the View panel (--slice none): no point either
+  m.planes3d.setEnabled(false);
+  m.settings.view3d.showSlice = false;
+  clickAt(ia, m, p.screen);
+  EXPECT_FALSE(s.probe());
+  // shown again: the same click places it
+  m.settings.view3d.showSlice = true;
+  clickAt(ia, m, p.screen);
+  EXPECT_TRUE(s.probe());
+}

@@ -87,7 +87,27 @@ Rgba colourOf(const Palette& p, Location l) {
 }
 
 Rgba textColourOf(const Palette& p, Location l) {
-  return l == Location::Boundary ? p.zero : colourOf(p, l);
+  return readableOn(l == Location::Boundary ? p.zero : colourOf(p, l), p.background, p.text);
+}
+
+float contrastRatio(Rgba a, Rgba b) {
+  // relative luminance of sRGB
+  auto luminance = [](Rgba c) {
+    auto lin = [](float v) {
+      return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    };
+    return 0.2126f * lin(c.r) + 0.7152f * lin(c.g) + 0.0722f * lin(c.b);
+  };
+  const float la = luminance(a), lb = luminance(b);
+  return (std::max(la, lb) + 0.05f) / (std::min(la, lb) + 0.05f);
+}
+
+Rgba readableOn(Rgba c, Rgba background, Rgba toward, float ratio) {
+  Rgba out = c;
+  for (int step = 1; step <= 10 && contrastRatio(out, background) < ratio; ++step)
+    out = mix(c, toward, 0.1f * static_cast<float>(step));
+  out.a = c.a;
+  return out;
 }
 
 Rgba cellTint(const Palette& p, std::size_t edges, std::size_t base, bool crowded) {

@@ -60,6 +60,14 @@ Rgba colourOf(const Palette& p, Location l);
 // the colour of a class for text: the boundary's yellow darkened on a light background
 Rgba textColourOf(const Palette& p, Location l);
 
+// the WCAG contrast ratio of two opaque colours, 1 (same luminance) .. 21 (black on white)
+float contrastRatio(Rgba a, Rgba b);
+// `c` for text on `background`: mixed toward `toward` (the theme's text colour) just enough
+// that its contrast ratio reaches `ratio`, so that the light theme's yellow labels turn a
+// readable dark gold while its markers keep the legend's yellow; `c` itself where it already
+// reads
+Rgba readableOn(Rgba c, Rgba background, Rgba toward, float ratio = 4.0f);
+
 // How a cell listing `edges` edges is tinted, where `base` is the fewest edges a cell of
 // the method lists (1 for polar and wedge cells, 2 for slabs): transparent at or below the
 // base, then the extra-edges colour growing stronger with each extra edge, and the crowded

@@ -101,8 +101,11 @@ void primalLine(const LineProbe2D& line, const DualInset& in, const Palette& pal
   }
   if (line.hit.crossing == Crossing::Misses || !line.entry || !line.exit) return;
   const bool one = *line.entry == *line.exit;
-  out.marker(at2(toGlm(*line.entry)), pal.boundary, 12.0f, MarkerShape::Square);
-  out.marker(at2(toGlm(*line.exit)), pal.boundary, 12.0f, MarkerShape::Square);
+  // yellow squares in a dark rim, as boundary points are drawn, readable on both themes
+  for (const Vec2& q : {*line.entry, *line.exit}) {
+    out.marker(at2(toGlm(q)), pal.rim, 14.0f, MarkerShape::Square);
+    out.marker(at2(toGlm(q)), pal.boundary, 11.0f, MarkerShape::Square);
+  }
   if (!labels) return;
   out.label(at2(toGlm(*line.entry)), one ? "entry = exit" : "entry", pal.boundary, {-20.0f, 16.0f});
   if (!one) out.label(at2(toGlm(*line.exit)), "exit", pal.boundary, {20.0f, 16.0f});

@@ -141,10 +141,14 @@ void Interaction::update3d(const PointerInput& in, Model& model) {
 
 void Interaction::click3d(const PointerInput& in, Model& model) {
   // Shift pins the cell under the cursor; else a point on the slicing plane, or, off the
-  // plane, the cell under the cursor is pinned
+  // plane, the cell under the cursor is pinned. A hidden slicing plane takes no point, and
+  // the Planes mode, which draws neither the method's cells nor the placed point, takes
+  // no click at all (its plane moves with the panel's sliders).
+  if (model.planes3d.enabled()) return;
   Scene3D& scene = model.scene3d();
   const Ray3 ray = model.camera3d.rayThrough(in.pos);
-  const auto hit = in.shift ? std::nullopt : scene.hitSlice(ray);
+  const bool onSlice = !in.shift && model.settings.view3d.showSlice;
+  const auto hit = onSlice ? scene.hitSlice(ray) : std::nullopt;
   if (hit)
     scene.place(toVec3(*hit));
   else

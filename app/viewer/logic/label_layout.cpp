@@ -19,6 +19,10 @@ constexpr double kGap = 5.0;
 constexpr double kRingStep = 9.0;
 // labels keep this many pixels apart
 constexpr double kPad = 3.0;
+// what a candidate one ring farther out costs, in line cells covered
+constexpr int kRingCost = 3;
+// the cells a SegmentGrid walks at most (well under a millisecond)
+constexpr std::size_t kWalkBudget = 300000;
 
 // the box of `size` put in direction `d` from the anchor, `gap` pixels clear of it
 LabelPlacement around(glm::dvec2 anchor, glm::dvec2 size, glm::dvec2 d, double gap) {
@@ -62,9 +66,66 @@ bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc) {
   return glm::dot(d, d) < disc.radius * disc.radius;
 }
 
+SegmentGrid::SegmentGrid(PixelBox area, double cell) : area_(area), cell_(std::max(cell, 1.0)) {
+  if (area.empty()) return;
+  cols_ = static_cast<int>(std::ceil((area.hi.x - area.lo.x) / cell_));
+  rows_ = static_cast<int>(std::ceil((area.hi.y - area.lo.y) / cell_));
+  cells_.assign(static_cast<std::size_t>(cols_) * static_cast<std::size_t>(rows_), 0);
+}
+
+void SegmentGrid::add(glm::dvec2 a, glm::dvec2 b) {
+  if (cells_.empty() || walked_ > kWalkBudget) return;
+  // clipped to the area (Liang-Barsky), then walked in steps of half a cell
+  double t0 = 0.0, t1 = 1.0;
+  const glm::dvec2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x - area_.lo.x, area_.hi.x - a.x, a.y - area_.lo.y, area_.hi.y - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return;
+  }
+  const glm::dvec2 from = a + d * t0, to = a + d * t1;
+  const int steps = 1 + static_cast<int>(glm::length(to - from) / (0.5 * cell_));
+  walked_ += static_cast<std::size_t>(steps);
+  for (int s = 0; s <= steps; ++s) {
+    const glm::dvec2 at = from + (to - from) * (static_cast<double>(s) / steps) - area_.lo;
+    const int cx = std::clamp(static_cast<int>(at.x / cell_), 0, cols_ - 1);
+    const int cy = std::clamp(static_cast<int>(at.y / cell_), 0, rows_ - 1);
+    unsigned char& c = cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols_) +
+                              static_cast<std::size_t>(cx)];
+    marked_ += c == 0;
+    c = 1;
+  }
+}
+
+int SegmentGrid::covered(const LabelPlacement& box) const {
+  if (marked_ == 0) return 0;
+  const glm::dvec2 lo = (box.centre - 0.5 * box.size - area_.lo) / cell_;
+  const glm::dvec2 hi = (box.centre + 0.5 * box.size - area_.lo) / cell_;
+  const int x0 = std::max(0, static_cast<int>(std::floor(lo.x)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(lo.y)));
+  const int x1 = std::min(cols_ - 1, static_cast<int>(std::ceil(hi.x)) - 1);
+  const int y1 = std::min(rows_ - 1, static_cast<int>(std::ceil(hi.y)) - 1);
+  int n = 0;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      n += cells_[static_cast<std::size_t>(y) * static_cast<std::size_t>(cols_) +
+                  static_cast<std::size_t>(x)];
+  return n;
+}
+
 std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
                                         std::span<const PixelDisc> markers,
-                                        const MeasureText& measure, double scale, PixelBox area) {
+                                        const MeasureText& measure, double scale, PixelBox area,
+                                        const SegmentGrid* lines) {
   std::vector<LabelPlacement> placed(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) {
     const LabelRequest& l = labels[i];
@@ -73,15 +134,27 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
     asked.size = size;
     asked.centre = l.anchor + l.offset * scale;
     std::vector<LabelPlacement> candidates{asked};
+    std::vector<int> rings{0};
     for (int ring = 0; ring < kRings; ++ring)
-      for (glm::dvec2 d : kDirections)
+      for (glm::dvec2 d : kDirections) {
         candidates.push_back(around(l.anchor, size, d, (kGap + kRingStep * ring) * scale));
-    for (const LabelPlacement& c : candidates)
-      if (conflicts(c, placed, markers, area, true) == 0) {
+        rings.push_back(ring);
+      }
+    // the free candidate over the fewest line cells, a farther ring costing a few cells so
+    // that a label leaves its anchor only for clearly freer room; the first free one
+    // without lines
+    int fewest = std::numeric_limits<int>::max();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const LabelPlacement& c = candidates[k];
+      if (conflicts(c, placed, markers, area, true) != 0) continue;
+      const int over = lines ? lines->covered(c) + kRingCost * rings[k] : 0;
+      if (over < fewest) {
+        fewest = over;
         placed[i] = c;
         placed[i].shown = true;
-        break;
       }
+      if (fewest == 0) break;
+    }
     if (placed[i].shown || !l.essential) continue;
     // essential: the farther candidate with the fewest conflicts, joined by a leader line
     int best = std::numeric_limits<int>::max();
@@ -101,7 +174,7 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
 }
 
 std::vector<std::string> breakAtSpaces(std::string_view text, double width,
-                                       const MeasureText& measure) {
+                                       const MeasureText& measure, std::string_view indent) {
   std::vector<std::string> lines;
   std::size_t start = 0;
   while (start <= text.size()) {
@@ -116,7 +189,7 @@ std::vector<std::string> breakAtSpaces(std::string_view text, double width,
       const std::string joined = line.empty() ? std::string(word) : line + " " + std::string(word);
       if (!line.empty() && measure(joined).x > width) {
         lines.push_back(line);
-        line = std::string(word);
+        line = std::string(indent) + std::string(word);
       } else {
         line = joined;
       }

@@ -46,6 +46,29 @@ struct PixelBox {
   bool empty() const { return hi.x <= lo.x || hi.y <= lo.y; }
 };
 
+// Which cells of a coarse pixel grid over an area the drawn segments cross, so that a label
+// can be kept off the lines where a free spot exists; cheap to build and to ask.
+class SegmentGrid {
+ public:
+  // an empty grid over `area` with square cells `cell` pixels wide
+  explicit SegmentGrid(PixelBox area = {}, double cell = 4.0);
+  // marks the cells the segment from `a` to `b` (window pixels) crosses, inside the area;
+  // past a fixed budget of cells walked (a dense wireframe) further segments are left out,
+  // so that a frame's labels stay cheap
+  void add(glm::dvec2 a, glm::dvec2 b);
+  // how many marked cells the placed box covers (its outer cells half-covered count too)
+  int covered(const LabelPlacement& box) const;
+  bool empty() const { return marked_ == 0; }
+
+ private:
+  PixelBox area_;
+  double cell_;
+  int cols_ = 0, rows_ = 0;
+  std::size_t marked_ = 0;
+  std::size_t walked_ = 0;
+  std::vector<unsigned char> cells_;
+};
+
 // the size of a text in window pixels
 using MeasureText = std::function<glm::dvec2(std::string_view)>;
 
@@ -53,12 +76,14 @@ using MeasureText = std::function<glm::dvec2(std::string_view)>;
 // `scale` first, then 8 directions around the anchor at growing distances. A label whose
 // every candidate overlaps a placed label or a marker is dropped, unless essential: then
 // it goes to the least crowded candidate farther out with a leader line. A candidate
-// reaching out of `area` (when not empty) is not taken. Returns one placement per request,
-// in order.
+// reaching out of `area` (when not empty) is not taken. Among the free candidates, the
+// first covering the fewest cells of `lines` (when given) wins, so that a label sits off
+// the drawn segments wherever a free spot allows. Returns one placement per request, in
+// order.
 std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
                                         std::span<const PixelDisc> markers,
                                         const MeasureText& measure, double scale = 1.0,
-                                        PixelBox area = {});
+                                        PixelBox area = {}, const SegmentGrid* lines = nullptr);
 
 // true when the two placed boxes overlap (the gap between them below `pad` pixels)
 bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad = 0.0);
@@ -67,7 +92,9 @@ bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc);
 
 // Breaks `text` into lines no wider than `width` pixels at spaces only, so that a number
 // ("-0.2791048542272344") is never split; a word wider than the line gets a line alone.
+// Lines continuing a paragraph start with `indent`. Every wrapped text of the viewer with
+// numbers in it (trace, inspector, steps, toasts, notes) is broken by this rule.
 std::vector<std::string> breakAtSpaces(std::string_view text, double width,
-                                       const MeasureText& measure);
+                                       const MeasureText& measure, std::string_view indent = {});
 
 }  // namespace convexloc::viewer

@@ -38,7 +38,7 @@ Legend linesLegend(const Palette& pal) {
   g.title = "Lines: the dual problem";
   g.rows = {line(pal.text, false, 1.5f, "the line through p1, p2"),
             line(pal.inside, false, 4.0f, "segment p1-p2 clipped"),
-            box(pal.boundary, pal.boundary, "entry and exit"),
+            box(pal.boundary, pal.rim, "entry and exit"),
             box(pal.positive, pal.negative, "extreme vertices (sign of f)"),
             box(withAlpha(pal.hoverEdge, 0.28f), pal.hoverEdge, "b's dual cell, its proposals"),
             line(pal.structure, false, 1.0f, "polar slabs of P*")};

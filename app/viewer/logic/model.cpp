@@ -367,7 +367,16 @@ void Model::fit(ScreenRect area) {
   }
   if (dim == Dim::Two) {
     lines2d.sync(scene2d);
-    camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : scene2d.polygon().bounds(), area);
+    // a placed point up to one polygon size off it (a slide's probe) is fitted in view too
+    Box2 box = scene2d.polygon().bounds();
+    if (const auto& p = scene2d.probe(); p && !lines2d.enabled()) {
+      const double w = box.hi.x - box.lo.x, h = box.hi.y - box.lo.y;
+      const Vec2 q = p->point;
+      if (q.x >= box.lo.x - w && q.x <= box.hi.x + w && q.y >= box.lo.y - h && q.y <= box.hi.y + h)
+        box = {{std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)},
+               {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
+    }
+    camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : box, area);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
       const double scale = area.size().x / pendingView->z;

@@ -300,7 +300,10 @@ void writeLabels(const SvgScene& s, std::string& out) {
       out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
              num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
              paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
-    out += "  " + textSvg(p.place.centre, p.label->text, p.label->colour) + "\n";
+    out += "  " +
+           textSvg(p.place.centre, p.label->text,
+                   readableOn(p.label->colour, s.background, s.text)) +
+           "\n";
   }
   out += "</g>\n";
 }
@@ -424,7 +427,15 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
     for (const Marker& m : list->markers)
       if (const std::optional<glm::dvec3> s = project(m.p))
         markers.push_back({glm::dvec2(*s), 0.5 * m.size * scale});
-  const std::vector<LabelPlacement> placed = placeLabels(requests, markers, measure, scale, area);
+  // the drawn segments, so that labels keep off the lines where they can
+  SegmentGrid lines(area, 4.0 * std::max(scale, 1.0));
+  for (const DrawList* list : lists)
+    for (const Segment& g : list->segments) {
+      const std::optional<glm::dvec3> a = project(g.a), b = project(g.b);
+      if (a && b) lines.add(glm::dvec2(*a), glm::dvec2(*b));
+    }
+  const std::vector<LabelPlacement> placed =
+      placeLabels(requests, markers, measure, scale, area, &lines);
   std::vector<PlacedSceneLabel> out;
   for (std::size_t i = 0; i < shown.size(); ++i)
     if (placed[i].shown) out.push_back({shown[i].label, shown[i].anchor, placed[i]});

@@ -312,6 +312,7 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
   const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
+  const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
   for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, project, {area.lo, area.hi},
                                                      measureText, model.settings.drawScale())) {
     const char* text = p.label->text.c_str();
@@ -322,9 +323,11 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
           ImVec2(static_cast<float>(p.anchor.x), static_cast<float>(p.anchor.y)),
           ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
           packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
-    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
-      dl->AddText(ImVec2(at.x + d.x, at.y + d.y), shadow, text);
-    dl->AddText(at, packAbgr(p.label->colour), text);
+    // a halo of the background all round, as thick as the lines are scaled
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1),
+                           ImVec2(-1, -1), ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
+      dl->AddText(ImVec2(at.x + d.x * halo, at.y + d.y * halo), shadow, text);
+    dl->AddText(at, packAbgr(readableOn(p.label->colour, pal.background, pal.text)), text);
   }
 }
 
@@ -350,6 +353,54 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
+namespace {
+
+// The Steps window over the lower left corner of the scene area `full` (less the caption)
+// costs the fitted area `a` a strip: the bottom one up to its top or the left one up to
+// its right edge; with the legend's strip (right or bottom, already taken from `a`), the
+// pair of strips leaving the largest drawing of a scene `aspect` times as wide as high.
+// The window floats over the scene where no strip keeps 40% of the drawing.
+void leaveRoomForSteps(ScreenRect& a, const UiState& ui, ScreenRect full, double aspect) {
+  if (ui.stepsSize[0] <= 0.0f) return;
+  full.hi.y -= ui.captionHeight;
+  const double top = full.hi.y - 20.0 - ui.stepsSize[1];
+  const double right = full.lo.x + 20.0 + ui.stepsSize[0];
+  if (top >= a.hi.y || right <= a.lo.x) return;
+  const bool legend = a.hi.x < full.hi.x || a.hi.y < full.hi.y;
+  const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
+  const auto drawn = [aspect](const ScreenRect& r) {
+    const glm::dvec2 s = r.size();
+    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
+  };
+  ScreenRect best = a;
+  double most = 0.4 * drawn(a);
+  for (int legendRight = 0; legendRight < (legend ? 2 : 1); ++legendRight)
+    for (int stepsLeft = 0; stepsLeft < 2; ++stepsLeft) {
+      ScreenRect r = full;
+      if (legend && legendRight) r.hi.x -= lw;
+      if (legend && !legendRight) r.hi.y -= lh;
+      if (stepsLeft)
+        r.lo.x = std::max(r.lo.x, right);
+      else
+        r.hi.y = std::min(r.hi.y, top);
+      if (drawn(r) > most) {
+        best = r;
+        most = drawn(r);
+      }
+    }
+  a = best;
+}
+
+// how many times as wide as high the fitted scene is (the polygon's box; 1 in 3D)
+double sceneAspect(const Model& model) {
+  if (model.dim != Dim::Two || model.lines2d.enabled()) return 1.0;
+  const Box2 b = model.scene2d.polygon().bounds();
+  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+  return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
+}
+
+}  // namespace
+
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   ScreenRect a = sceneArea(model, window);
   a.hi.y -= ui.captionHeight;
@@ -365,6 +416,7 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
         a.hi.y -= lh;
     }
   }
+  leaveRoomForSteps(a, ui, sceneArea(model, window), sceneAspect(model));
   model.fit(a);
   ui.refitUntil = now + 1.5;
 }
@@ -467,7 +519,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  stepsWindow(model, area, now);  // also with the panels hidden
+  stepsWindow(model, ui, area, now);  // also with the panels hidden
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)

@@ -44,19 +44,19 @@ void hoveredCellText(const Scene2D& scene, const Cell2D& c) {
   if (c.octant >= 0) what += ", octant " + std::to_string(c.octant);
   if (scene.method() == Method2D::Slab || scene.method() == Method2D::Uniform)
     what += ", y in [" + approx(c.y0, 6) + ", " + approx(c.y1, 6) + ")";
-  ImGui::TextWrapped("%s", what.c_str());
+  textAtSpaces(what);
   std::string edges;
   for (std::size_t i = 0; i < c.edges.size() && i < 24; ++i)
     edges += (i ? ", " : "") + std::to_string(c.edges[i]);
   if (c.edges.size() > 24) edges += ", ...";
-  ImGui::TextWrapped("lists %zu edge%s: %s", c.edges.size(), c.edges.size() == 1 ? "" : "s",
-                     edges.c_str());
+  textAtSpaces("lists " + std::to_string(c.edges.size()) +
+               (c.edges.size() == 1 ? " edge: " : " edges: ") + edges);
 }
 
 void shapePanel2D(Model& model, UiState& ui) {
   Scene2D& scene = model.scene2d;
   const ConvexPolygon& poly = scene.polygon();
-  ImGui::TextWrapped("%s", scene.label().c_str());
+  textAtSpaces(scene.label());
   ImGui::TextDisabled("%s vertices", grouped(poly.size()).c_str());
   if (poly.droppedCount() > 0) {
     ImGui::SameLine();
@@ -92,7 +92,7 @@ void methodPanel2D(Model& model, UiState& ui) {
                                grouped(s.cells) + " polar cells, at most " +
                                std::to_string(s.maxPerCell) + " edges per cell";
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-      ImGui::TextWrapped("%s", text.c_str());
+      textAtSpaces(text);
       ImGui::PopStyleColor();
     }
     return;
@@ -149,7 +149,8 @@ void lineInspector(Model& model, bool hints) {
   const Rgba colour = line->hit.crossing == Crossing::Crosses   ? pal.inside
                       : line->hit.crossing == Crossing::Touches ? pal.boundary
                                                                 : pal.outside;
-  ImGui::TextColored(im(colour), "Line: %s", std::string(toString(line->hit.crossing)).c_str());
+  ImGui::TextColored(im(readableOn(colour, pal.background, pal.text)), "Line: %s",
+                     std::string(toString(line->hit.crossing)).c_str());
   traceLines(describeLine(*line, lines.dualVertices(), lines.intersector()->dualLocator()), pal,
              colour);
   if (ImGui::SmallButton("Clear (Esc)")) model.lines2d.clearLine();

@@ -40,9 +40,9 @@ void cellText(const Cell3D& c) {
   std::string what = "cell " + std::to_string(c.index) + " on cube face " + kCubeFaces[c.cubeFace] +
                      ", (" + std::to_string(c.i) + ", " + std::to_string(c.j) + ")";
   if (c.level > 0) what += ", quadtree level " + std::to_string(c.level);
-  ImGui::TextWrapped("%s", what.c_str());
-  ImGui::TextWrapped("lists %zu face%s: %s", c.faces.size(), c.faces.size() == 1 ? "" : "s",
-                     listOf(c.faces, 24).c_str());
+  textAtSpaces(what);
+  textAtSpaces("lists " + std::to_string(c.faces.size()) +
+               (c.faces.size() == 1 ? " face: " : " faces: ") + listOf(c.faces, 24));
 }
 
 // the statistics of the 3D locator
@@ -71,7 +71,7 @@ std::vector<StatLine> statLines(const Scene3D& scene) {
 void shapePanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   const ConvexPolyhedron& p = scene.polyhedron();
-  ImGui::TextWrapped("%s", scene.label().c_str());
+  textAtSpaces(scene.label());
   ImGui::TextDisabled("%s triangles, %s vertices", grouped(p.faceCount()).c_str(),
                       grouped(p.vertexCount()).c_str());
   std::string notes;
@@ -128,7 +128,7 @@ void planesControls(Model& model) {
                              grouped(st.dualFaces) + " faces, " + grouped(st.cells) +
                              " cube-map cells";
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%s", text.c_str());
+    textAtSpaces(text);
     ImGui::PopStyleColor();
   }
 }
@@ -220,7 +220,8 @@ void planeInspector(Model& model) {
   if (!plane) return;
   const Crossing c = plane->chosen(planes.method()).crossing;
   const Rgba colour = crossingColour(pal, c);
-  ImGui::TextColored(im(colour), "Plane: %s", std::string(toString(c)).c_str());
+  ImGui::TextColored(im(readableOn(colour, pal.background, pal.text)), "Plane: %s",
+                     std::string(toString(c)).c_str());
   const CubemapLocator* cube = planes.dualIntersector()->dualLocator();
   traceLines(
       describePlane(*plane, planes.method(), cube ? cube->vertices() : std::span<const Vec3>{}),

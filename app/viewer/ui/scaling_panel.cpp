@@ -37,15 +37,16 @@ void drawPath(ImDrawList* dl, const PlotPath& p, ImVec2 o) {
   }
 }
 
-// a laid-out plot on ImGui's draw list, `o` its origin in window pixels
-void drawPlot(ImDrawList* dl, const PlotDrawing& d, ImVec2 o) {
+// a laid-out plot on ImGui's draw list, `o` its origin in window pixels; series-coloured
+// text darkened where it would not read on the background (the light theme)
+void drawPlot(ImDrawList* dl, const PlotDrawing& d, ImVec2 o, const PlotStyle& style) {
   for (const PlotPath& p : d.paths) drawPath(dl, p, o);
   for (const PlotMark& m : d.marks) dl->AddCircleFilled(at(m.p, o), m.radius, packAbgr(m.colour));
   for (const PlotText& t : d.texts) {
     const ImVec2 size = ImGui::CalcTextSize(t.text.c_str());
     const ImVec2 p = at(t.p, o);
     dl->AddText(ImVec2(std::round(p.x - t.anchor * size.x), std::round(p.y - 0.5f * size.y)),
-                packAbgr(t.colour), t.text.c_str());
+                packAbgr(readableOn(t.colour, style.background, style.text)), t.text.c_str());
   }
 }
 
@@ -90,19 +91,25 @@ void controls(Model& model, UiState& ui, const ScalingProgress& p) {
       "stay flat.");
 }
 
-// one page of plots in the rest of the window
+// One page of plots filling the rest of the window, as a slide: its text shrinks with the
+// window (a page reads at about 60 x 44 em) down to 45% of the panels' text; the window
+// scrolls only where the page would be smaller than 40 x 30 em of that text.
 void plots(const Model& model, const ScalingProgress& p, bool solid) {
-  // never smaller than the plots stay readable at: the window scrolls instead
   const float font = ImGui::GetFontSize();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const ImVec2 size(std::max(avail.x, 64.0f * font), std::max(avail.y, 48.0f * font));
+  const float fit = std::min(avail.x / (60.0f * font), avail.y / (44.0f * font));
+  const float scale = std::clamp(fit, 0.45f, 1.0f);
+  const float plotFont = font * scale;
+  const ImVec2 size(std::max(avail.x, 40.0f * plotFont), std::max(avail.y, 30.0f * plotFont));
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImGui::Dummy(size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const PlotStyle style = plotStyle(model.settings.theme, font);
+  const PlotStyle style = plotStyle(model.settings.theme, plotFont);
+  ImGui::SetWindowFontScale(scale);
   for (const PlotDrawing& d :
        scalingDrawings(p.result, model.scaling->config(), style, {size.x, size.y}, solid))
-    drawPlot(dl, d, o);
+    drawPlot(dl, d, o, style);
+  ImGui::SetWindowFontScale(1.0f);
 }
 
 }  // namespace
@@ -110,7 +117,8 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
 void scalingWindow(Model& model, UiState& ui) {
   if (!model.whyOpen) return;
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * 0.8f, io.DisplaySize.y * 0.88f),
+  // nearly the whole window, as a slide
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * 0.94f, io.DisplaySize.y * 0.94f),
                            ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
@@ -128,6 +136,10 @@ void scalingWindow(Model& model, UiState& ui) {
                            : !p.error.empty() ? p.error
                            : p.finished       ? "done"
                                               : "press Measure";
+  // the progress on the controls' row where it has room, so that the plots get the height
+  if (ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x >
+      ImGui::GetFontSize() * 12.0f)
+    ImGui::SameLine();
   ImGui::ProgressBar(share, ImVec2(-1.0f, 0.0f), what.c_str());
   // the window opens on the tab of the scene shown
   const bool appearing = ImGui::IsWindowAppearing();

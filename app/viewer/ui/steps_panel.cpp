@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "logic/label_layout.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -17,7 +18,7 @@ Rgba stepColour(const Step& s, const Palette& pal, Rgba result) {
   switch (s.kind) {
     case TraceLine::Positive: return pal.positive;
     case TraceLine::Negative: return pal.negative;
-    case TraceLine::Zero: return pal.zero;
+    case TraceLine::Zero: return readableOn(pal.zero, pal.background, pal.text);
     case TraceLine::Result: return result;
     default: return pal.text;
   }
@@ -80,7 +81,7 @@ void stepList(const StepModel& m, int step, const Palette& pal, Rgba result, flo
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::BeginGroup();
     ImGui::PushStyleColor(ImGuiCol_Text, im(c));
-    textWrappedAtSpaces(std::to_string(i + 1) + ". " + s.caption);
+    textAtSpaces(std::to_string(i + 1) + ". " + s.caption, "    ");
     ImGui::PopStyleColor();
     ImGui::EndGroup();
     if (current) {
@@ -107,36 +108,73 @@ void codeList(const StepModel& m, int step, const Palette& pal, bool onlyCurrent
     const bool on = static_cast<int>(i) == line;
     if (onlyCurrent && !on) continue;
     ImGui::PushStyleColor(ImGuiCol_Text, im(on ? pal.hoverEdge : pal.textMuted));
-    textWrappedAtSpaces((on ? "> " : "  ") + m.code[i]);
+    textAtSpaces((on ? "> " : "  ") + m.code[i], "    ");
     ImGui::PopStyleColor();
   }
 }
 
 }  // namespace
 
-void textWrappedAtSpaces(const std::string& text) {
-  const float width = std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
-  std::string line;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string wider = line.empty() ? word : line + " " + word;
-    if (!line.empty() && ImGui::CalcTextSize(wider.c_str()).x > width) {
-      ImGui::TextUnformatted(line.c_str());
-      line = "    " + word;  // continued lines indented
-    } else {
-      line = wider;
-    }
-    start = end + 1;
+namespace {
+
+// the heading: the method and point, the note, and the pseudo-code's fold (`whole`: the
+// code is shown whole now)
+void stepsHeading(UiState& ui, const StepModel& m, const Palette& pal, bool whole) {
+  ImGui::TextColored(im(pal.textMuted), "%s", m.title.c_str());
+  if (!m.note.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(im(pal.hoverEdge), "(%s)", m.note.c_str());
   }
-  ImGui::TextUnformatted(line.c_str());
+  ImGui::SameLine();
+  if (ImGui::SmallButton(whole ? "code -" : "code +")) ui.stepsCode = whole ? 0 : 1;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(whole ? "show the current line of pseudo-code alone"
+                            : "show the method's whole pseudo-code");
 }
 
-void stepsWindow(Model& model, ScreenRect area, double now) {
+// the Steps window's width: at most half the scene, clear of its middle where the split
+// view divides it (and 46 em), at least 16 em where the scene has them
+float stepsWidth(ScreenRect area, float font) {
+  const float half = static_cast<float>(area.size().x) * 0.5f - 20.0f;
+  return std::max(std::min(half, font * 46.0f), std::min(font * 16.0f, half * 1.6f));
+}
+
+// the width the window's longest lines need unbroken (the steps, and the code beside them
+// when `withCode`), at least the controls' row
+float neededWidth(const StepModel& m, bool withCode, float font) {
+  float steps = 0.0f, code = 0.0f;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    steps = std::max(
+        steps, ImGui::CalcTextSize((std::to_string(i + 1) + ". " + m.steps[i].caption).c_str()).x);
+  for (const std::string& c : m.code) code = std::max(code, ImGui::CalcTextSize(c.c_str()).x);
+  const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x + font * 2.0f;
+  return std::max(font * 24.0f, (withCode ? steps + code + font * 2.0f : steps) + pad);
+}
+
+// the height the step list takes at `width` pixels, its captions broken as stepList breaks
+// them
+float stepListHeight(const StepModel& m, float width) {
+  const auto measure = [](std::string_view t) {
+    const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
+    return glm::dvec2(v.x, v.y);
+  };
+  std::size_t lines = 0;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    lines +=
+        breakAtSpaces(std::to_string(i + 1) + ". " + m.steps[i].caption, width, measure, "    ")
+            .size();
+  return static_cast<float>(lines) * ImGui::GetTextLineHeightWithSpacing();
+}
+
+}  // namespace
+
+void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   const std::optional<StepModel> m = model.steps();
-  if (!model.settings.stepBoxVisible || !m || m->steps.empty()) return;
+  const float before[2] = {ui.stepsSize[0], ui.stepsSize[1]};
+  ui.stepsSize[0] = ui.stepsSize[1] = 0.0f;
+  // the Lines and Planes modes draw no placed point: no steps of it either
+  const bool dualMode = model.dim == Dim::Two ? model.lines2d.enabled() : model.planes3d.enabled();
+  if (!model.settings.stepBoxVisible || !m || m->steps.empty() || dualMode) return;
   int step = model.step();
   if (model.stepPlayer.playing) {
     step = model.stepPlayer.tick(step, m->steps.size(), now);
@@ -149,33 +187,37 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
                                                     : model.scene3d().probe()->trace.result)
           : pal.text;
   const float font = ImGui::GetFontSize();
-  // at most 62% of the scene's width: the legend keeps the lower right corner
-  const float w = std::min(static_cast<float>(area.size().x) * 0.62f, font * 50.0f);
-  const bool sideBySide = w > font * 40.0f;
-  ImGui::SetNextWindowPos(
-      ImVec2(static_cast<float>(area.lo.x) + 10.0f, static_cast<float>(area.hi.y) - 10.0f),
-      ImGuiCond_Always, ImVec2(0.0f, 1.0f));
-  ImGui::SetNextWindowSize(ImVec2(w, 0.0f));
+  const float room = stepsWidth(area, font);
+  const bool wide = room > font * 40.0f;
+  const bool whole = ui.stepsCode < 0 ? wide : ui.stepsCode == 1;
+  const bool sideBySide = whole && wide;
+  // the list alone reads in 34 em, its longer steps wrapped
+  const float w =
+      std::min({room, neededWidth(*m, sideBySide, font), sideBySide ? room : font * 34.0f});
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 10.0f,
+                                 static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
+                          ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  // exactly `w` wide (auto-resizing would grow it to its widest row), as high as it needs
+  ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0.0f),
+                                      ImVec2(w, static_cast<float>(area.size().y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
   ImGui::Begin("Steps", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  ImGui::TextColored(im(pal.textMuted), "%s", m->title.c_str());
-  if (!m->note.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(im(pal.hoverEdge), "(%s)", m->note.c_str());
-  }
+  stepsHeading(ui, *m, pal, whole);
   stepControls(model, *m, step, now);
   ImGui::Separator();
-  // at most about a third of the scene's height for the list
+  // at most about a quarter of the scene's height (3 to 9 lines) for the list; a longer one
+  // scrolls
   const float line = ImGui::GetTextLineHeightWithSpacing();
-  const float most = std::max(3.0f, std::floor(static_cast<float>(area.size().y) * 0.3f / line));
-  const float rows = std::min(static_cast<float>(m->steps.size()), std::min(most, 9.0f));
-  // a few steps show whole, more scroll in a list `rows` high
-  const float listHeight = static_cast<float>(m->steps.size()) <= rows
-                               ? 0.0f
-                               : rows * line + ImGui::GetStyle().WindowPadding.y;
+  const float most =
+      line * std::clamp(std::floor(static_cast<float>(area.size().y) * 0.25f / line), 3.0f, 9.0f);
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float listWidth =
+      sideBySide ? 0.5f * (avail - ImGui::GetStyle().CellPadding.x * 4.0f) : avail;
+  const float listHeight =
+      stepListHeight(*m, listWidth) <= most ? 0.0f : most + ImGui::GetStyle().WindowPadding.y;
   if (sideBySide && ImGui::BeginTable("##steps", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("steps", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("code", ImGuiTableColumnFlags_WidthStretch, 1.0f);
@@ -185,12 +227,19 @@ void stepsWindow(Model& model, ScreenRect area, double now) {
     codeList(*m, step, pal, false);
     ImGui::EndTable();
   } else {
-    // narrow: the current step's pseudo-code line alone
+    // narrow, or the code folded: the current step's pseudo-code line alone, or all below
     stepList(*m, step, pal, result, listHeight);
     ImGui::Separator();
-    codeList(*m, step, pal, true);
+    codeList(*m, step, pal, !whole);
   }
+  const ImVec2 size = ImGui::GetWindowSize();
   ImGui::End();
+  ui.stepsSize[0] = size.x;
+  ui.stepsSize[1] = size.y;
+  // fitted a moment ago for another size (or none): fit again
+  if ((std::abs(size.x - before[0]) > 2.0f || std::abs(size.y - before[1]) > 2.0f) &&
+      now < ui.refitUntil)
+    model.requestFit();
 }
 
 }  // namespace convexloc::viewer

@@ -4,15 +4,15 @@
 #pragma once
 
 #include "logic/model.hpp"
+#include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {
 
 // The Steps window over the lower left corner of `area` (the scene's part of the window),
-// while Settings::stepBoxVisible and a point is placed, with the panels shown or hidden;
-// plays the steps at `now` (seconds).
-void stepsWindow(Model& model, ScreenRect area, double now);
-
-// `text` wrapped to the available width at spaces only, so that no number breaks
-void textWrappedAtSpaces(const std::string& text);
+// above the caption, while Settings::stepBoxVisible and a point is placed, with the panels
+// shown or hidden; plays the steps at `now` (seconds). Compact: at most half the scene's
+// width, the list scrolling past a quarter of its height, the pseudo-code foldable to the
+// current line. Its size goes to `ui.stepsSize`, for the fit to leave it room.
+void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now);
 
 }  // namespace convexloc::viewer

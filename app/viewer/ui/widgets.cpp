@@ -64,9 +64,7 @@ void help(const char* text) {
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
-    ImGui::TextUnformatted(text);
-    ImGui::PopTextWrapPos();
+    textAtSpaces(text, {}, ImGui::GetFontSize() * 28.0f);
     ImGui::EndTooltip();
   }
 }
@@ -137,21 +135,21 @@ void gallery(Model& model, bool solid) {
     if (ImGui::Button(title.c_str(), ImVec2(fits ? half : -1.0f, 0.0f))) model.applyPreset(p.name);
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
-      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
-      ImGui::TextUnformatted(std::string(p.about).c_str());
-      ImGui::PopTextWrapPos();
+      textAtSpaces(p.about, {}, ImGui::GetFontSize() * 24.0f);
       ImGui::EndTooltip();
     }
   }
 }
 
-void textAtSpaces(std::string_view text) {
-  const float width = ImGui::GetContentRegionAvail().x;
+void textAtSpaces(std::string_view text, std::string_view indent, float asked) {
+  const float width = asked > 0.0f
+                          ? asked
+                          : std::max(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 4.0f);
   const auto measure = [](std::string_view t) {
     const ImVec2 v = ImGui::CalcTextSize(t.data(), t.data() + t.size());
     return glm::dvec2(v.x, v.y);
   };
-  for (const std::string& line : breakAtSpaces(text, width, measure))
+  for (const std::string& line : breakAtSpaces(text, width, measure, indent))
     ImGui::TextUnformatted(line.c_str());
 }
 
@@ -170,7 +168,7 @@ void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba re
       c = resultColour;
     else if (l.kind == TraceLine::Heading)
       c = pal.textMuted;
-    ImGui::PushStyleColor(ImGuiCol_Text, im(c));
+    ImGui::PushStyleColor(ImGuiCol_Text, im(readableOn(c, pal.background, pal.text)));
     textAtSpaces(l.text);
     ImGui::PopStyleColor();
   }

@@ -44,8 +44,10 @@ void toggleGrid(std::string_view labels, std::initializer_list<bool*> values);
 void fileOpen(Model& model, UiState& ui, const char* hint);
 // the degenerate gallery's buttons for polygons or for polyhedra
 void gallery(Model& model, bool solid);
-// text wrapped to the panel at spaces only, so that a number never splits across lines
-void textAtSpaces(std::string_view text);
+// text wrapped at spaces only (breakAtSpaces), so that a number never splits across lines
+// (ImGui's own wrapping breaks after a '.'): to the panel, or to `width` pixels when given
+// (tooltips); continued lines start with `indent`
+void textAtSpaces(std::string_view text, std::string_view indent = {}, float width = 0.0f);
 // a trace, one coloured line per step
 void traceLines(const std::vector<TraceLine>& lines, const Palette& pal, Rgba resultColour);
 // a legend: its title, the class rows, a swatch and a line of text per mark
