@@ -237,6 +237,11 @@ Options slideOptions(const Slide& slide, const Model& model) {
   if (!slide.gives("font-scale")) o.fontScale = model.settings.fontScale;
   if (!slide.gives("hide-ui")) o.hideUi = !model.settings.showUi;
   if (!slide.gives("present")) o.present = model.settings.present;
+  // a slide with a table to read shows the panels, whatever the lecture hides
+  if (slide.gives("show-ui")) {
+    o.hideUi = false;
+    o.present = false;
+  }
   return o;
 }
 
@@ -249,8 +254,16 @@ std::string showSlide(Model& model, const Lecture& lecture, std::size_t k) {
 
 std::string SlideShow::go(Model& model, std::ptrdiff_t k) {
   if (!active()) return {};
+  // the panels as they were before a slide that showed them
+  if (panelsBefore) {
+    model.settings.showUi = panelsBefore->showUi;
+    model.settings.present = panelsBefore->present;
+    panelsBefore.reset();
+  }
   const std::ptrdiff_t last = static_cast<std::ptrdiff_t>(lecture.slides.size()) - 1;
   current = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, last));
+  if (slide().gives("show-ui"))
+    panelsBefore = Panels{model.settings.showUi, model.settings.present};
   return showSlide(model, lecture, current);
 }
 

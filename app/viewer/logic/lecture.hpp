@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,13 +54,20 @@ ParsedLecture loadLecture(const std::string& path);
 Lecture figureLecture(int n, const Options& options);
 
 // The options a slide is shown with: its own, with the viewer's current theme, text size
-// and panels kept where the slide gives none of its own.
+// and panels kept where the slide gives none of its own; a slide giving `show-ui` shows
+// the panels (and leaves presentation mode) for itself alone.
 Options slideOptions(const Slide& slide, const Model& model);
 
 // a lecture being shown and its current slide
 struct SlideShow {
+  // the panels' state a `show-ui` slide found, given back when the show leaves it
+  struct Panels {
+    bool showUi = false;
+    bool present = false;
+  };
   Lecture lecture;
   std::size_t current = 0;
+  std::optional<Panels> panelsBefore;
   bool active() const { return !lecture.slides.empty(); }
   const Slide& slide() const { return lecture.slides[current]; }
   // Shows slide k, clamped to the lecture (nothing without slides); the first problem.

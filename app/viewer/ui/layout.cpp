@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "logic/label_layout.hpp"
 #include "logic/text.hpp"
@@ -162,6 +163,18 @@ void captionBox(Model& model, UiState& ui, ScreenRect area) {
     ImGui::TextUnformatted(line.c_str());
   ui.captionHeight = ImGui::GetWindowHeight() + 8.0f;
   ImGui::End();
+}
+
+// the Steps window's size in this frame (zero where it is not shown); a change while the
+// last fit is fresh fits again, as the legend's does
+void keepStepsSize(Model& model, UiState& ui, double now) {
+  const ImGuiWindow* w = ImGui::FindWindowByName("Steps");
+  const ImVec2 size = w && w->Active ? w->Size : ImVec2(0.0f, 0.0f);
+  if ((std::abs(size.x - ui.stepsSize[0]) > 2.0f || std::abs(size.y - ui.stepsSize[1]) > 2.0f) &&
+      now < ui.refitUntil)
+    model.requestFit();
+  ui.stepsSize[0] = size.x;
+  ui.stepsSize[1] = size.y;
 }
 
 // === Toast
@@ -328,6 +341,49 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
   }
 }
 
+// === Fitting beside the Steps window
+
+// the drawn shape's width over its height, about (the 3D scenes as a square)
+double shapeAspect(const Model& model) {
+  if (model.dim == Dim::Three) return model.planes3d.enabled() ? 2.0 : 1.0;
+  const Box2 b = model.scene2d.polygon().bounds();
+  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+  const double aspect = w > 0.0 && h > 0.0 ? w / h : 1.0;
+  return model.split.enabled() ? 2.0 * aspect : aspect;
+}
+
+// Of the rectangles of `a` that leave free the Steps window (`steps`, its lower left corner)
+// and the legend (`legend`, its lower right corner; zero for none), the one where a shape of
+// `aspect` (width over height) is drawn largest: above both, right of the Steps window
+// (above the legend or left of it), or above it with the legend's strip at the right.
+ScreenRect besideSteps(ScreenRect a, glm::dvec2 steps, glm::dvec2 legend, double aspect) {
+  constexpr double kGap = 20.0;
+  const double sw = steps.x + kGap, sh = steps.y + kGap;
+  const double lw = legend.x > 0.0 ? legend.x + kGap : 0.0;
+  const double lh = legend.y > 0.0 ? legend.y + kGap : 0.0;
+  ScreenRect above = a, right = a, between = a, aboveStrip = a;
+  // the legend shares the bottom band with the Steps window where both fit across
+  above.hi.y -= a.size().x > sw + lw ? std::max(sh, lh) : sh + lh;
+  right.lo.x += sw;
+  right.hi.y -= lh;
+  between.lo.x += sw;
+  between.hi.x -= lw;
+  aboveStrip.hi.y -= sh;
+  aboveStrip.hi.x -= lw;
+  const auto drawn = [aspect](const ScreenRect& r) {
+    const glm::dvec2 s = r.size();
+    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
+  };
+  ScreenRect best = a;
+  double most = 0.0;
+  for (const ScreenRect& r : {above, right, between, aboveStrip})
+    if (const double d = drawn(r); d > most) {
+      most = d;
+      best = r;
+    }
+  return most > 0.0 ? best : a;
+}
+
 // a rectangle of the window as ImGui's clip rectangle
 void pushClip(ImDrawList* dl, const ScreenRect& r) {
   dl->PushClipRect(ImVec2(static_cast<float>(r.lo.x), static_cast<float>(r.lo.y)),
@@ -354,7 +410,13 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   ScreenRect a = sceneArea(model, window);
   a.hi.y -= ui.captionHeight;
   const bool floatingLegend = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
-  if (floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f) {
+  const bool cornerLegend = floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f;
+  if (!model.settings.showUi && ui.stepsSize[0] > 0.0f) {
+    // a slide's Steps window keeps the lower left corner: the shape fits beside it
+    const glm::dvec2 legend =
+        cornerLegend ? glm::dvec2(ui.legendSize[0], ui.legendSize[1]) : glm::dvec2(0.0);
+    a = besideSteps(a, {ui.stepsSize[0], ui.stepsSize[1]}, legend, shapeAspect(model));
+  } else if (cornerLegend) {
     // give up the strip, right or bottom, that costs the scene less
     const glm::dvec2 s = a.size();
     const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
@@ -467,7 +529,13 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  stepsWindow(model, area, now);  // also with the panels hidden
+  // also with the panels hidden; above the caption, its size kept for the next fit; on a
+  // slide given the left 60% only, so that it keeps to a column and the shape fits beside
+  ScreenRect stepsArea = area;
+  stepsArea.hi.y -= ui.captionHeight;
+  if (!model.settings.showUi) stepsArea.hi.x = area.lo.x + 0.6 * area.size().x;
+  stepsWindow(model, stepsArea, now);
+  keepStepsSize(model, ui, now);
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)

@@ -40,6 +40,8 @@ struct UiState {
   float captionHeight = 0.0f;          // the caption box's height in the last frame
   std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
   double refitUntil = 0.0;             // until then a change of the legend's size refits the scene
+  // the fit beside the Steps window
+  float stepsSize[2] = {0.0f, 0.0f};  // the Steps window's size in the last frame (0: none)
 
   // widget state
   char path[1024] = "";
