@@ -7,7 +7,8 @@ namespace convexloc::viewer {
 namespace {
 
 // Every figure is a clean slide: the light theme, no panels, no spray, one probe whose
-// trace shows the method's steps; the shape is the same random octagon where the figure
+// trace shows the method's steps (polar's as the paper runs it, without the radius filter,
+// in four slabs an octant so that each cell reads); the shape is the same random octagon where the figure
 // compares methods, so that the slides read as one story.
 constexpr Figure kFigures[kFigureCount] = {
     {"Fig. 1  Half-planes: O(N)",
@@ -30,14 +31,14 @@ constexpr Figure kFigures[kFigureCount] = {
      "--generate random --n 8 --seed 3 --method uniform --probe -0.3,-0.45 --spray 0 "
      "--theme light --font-scale 2 --hide-ui"},
     {"Fig. 5  The slab thickness is set by the smallest y-gap",
-     "The paper's uniform slabs must be as thin as the smallest y-gap between vertices: "
-     "(ymax - ymin) / gap slabs. convexloc bounds the count and lists extra edges instead.",
+     "The paper's slabs are as thin as the smallest y-gap: (ymax - ymin) / gap of them. "
+     "convexloc bounds the count; crowded slabs list extra edges.",
      "--preset small-gap --method uniform --y-gap --spray 0 --theme light --font-scale 2 "
      "--hide-ui"},
     {"Fig. 6  Polar slabs: O(1)",
      "From x_T the octant and the slab follow from the direction to x; one edge test decides.",
-     "--generate random --n 8 --seed 3 --method polar --probe 0.0,-0.45 --spray 0 "
-     "--theme light --font-scale 2 --hide-ui"},
+     "--generate random --n 8 --seed 3 --method polar --resolution 4 --probe -0.05,-0.47 "
+     "--paper --spray 0 --theme light --font-scale 2 --hide-ui"},
     {"Fig. 7  Spherical subdivision of a polyhedron",
      "Cells around x_T on the bounding cube: a typical cell lists one face, a cell where "
      "edges meet lists several.",

@@ -316,6 +316,8 @@ bool presentOption(std::string_view a, ArgReader& in, Options& o) {
     // the panels shown, over a figure's own --hide-ui given before it
     o.showUi = true;
     o.hideUi = false;
+  } else if (a == "--no-steps") {
+    o.noSteps = true;
   } else {
     return false;
   }
@@ -471,6 +473,7 @@ View:
                         with the text, the legend movable (drag it)
   --caption TEXT        a caption written large under the scene
   --no-legend           hide the legend (G)
+  --no-steps            hide the Steps window (the drawing still shows the step)
   --size WxH            window size in pixels (default 1440x900)
   --shaders DIR         load the GLSL shaders from DIR
   --samples N           multisampling (default 4 on a GPU, 0 on a software renderer,

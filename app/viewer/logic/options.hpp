@@ -76,6 +76,7 @@ struct Options {
   std::optional<std::size_t> buildStep;      // 2D: the build animation at this step
   // a lecture's slide with the panels shown (a table to read); excludes --hide-ui, --present
   bool showUi = false;
+  bool noSteps = false;  // the Steps window hidden (the drawing still shows the step)
 };
 
 // the result of parsing: options, or the reason they are wrong

@@ -348,38 +348,43 @@ double shapeAspect(const Model& model) {
   if (model.dim == Dim::Three) return model.planes3d.enabled() ? 2.0 : 1.0;
   const Box2 b = model.scene2d.polygon().bounds();
   const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
-  const double aspect = w > 0.0 && h > 0.0 ? w / h : 1.0;
-  return model.split.enabled() ? 2.0 * aspect : aspect;
+  return w > 0.0 && h > 0.0 ? w / h : 1.0;
 }
 
 // Of the rectangles of `a` that leave free the Steps window (`steps`, its lower left corner)
 // and the legend (`legend`, its lower right corner; zero for none), the one where a shape of
 // `aspect` (width over height) is drawn largest: above both, right of the Steps window
 // (above the legend or left of it), or above it with the legend's strip at the right.
-ScreenRect besideSteps(ScreenRect a, glm::dvec2 steps, glm::dvec2 legend, double aspect) {
+// `gap`: the room kept beside the Steps window and the legend for
+// the labels of lines that reach past the shape.
+ScreenRect besideSteps(ScreenRect a, glm::dvec2 steps, glm::dvec2 legend, double aspect,
+                       double gap) {
   constexpr double kGap = 20.0;
-  const double sw = steps.x + kGap, sh = steps.y + kGap;
-  const double lw = legend.x > 0.0 ? legend.x + kGap : 0.0;
+  const double sw = steps.x + gap, sh = steps.y + kGap;
+  const double lw = legend.x > 0.0 ? legend.x + gap : 0.0;
   const double lh = legend.y > 0.0 ? legend.y + kGap : 0.0;
-  ScreenRect above = a, right = a, between = a, aboveStrip = a;
-  // the legend shares the bottom band with the Steps window where both fit across
-  above.hi.y -= a.size().x > sw + lw ? std::max(sh, lh) : sh + lh;
-  right.lo.x += sw;
-  right.hi.y -= lh;
-  between.lo.x += sw;
-  between.hi.x -= lw;
-  aboveStrip.hi.y -= sh;
-  aboveStrip.hi.x -= lw;
+  ScreenRect choices[4] = {a, a, a, a};
+  // above both: the legend shares the bottom band with the Steps window where both fit across
+  choices[0].hi.y -= a.size().x > sw + lw ? std::max(sh, lh) : sh + lh;
+  // right of the Steps window, above the legend
+  choices[1].lo.x += sw;
+  choices[1].hi.y -= lh;
+  // right of the Steps window, left of the legend
+  choices[2].lo.x += sw;
+  choices[2].hi.x -= lw;
+  // above the Steps window, left of the legend
+  choices[3].hi.y -= sh;
+  choices[3].hi.x -= lw;
   const auto drawn = [aspect](const ScreenRect& r) {
     const glm::dvec2 s = r.size();
     return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
   };
   ScreenRect best = a;
   double most = 0.0;
-  for (const ScreenRect& r : {above, right, between, aboveStrip})
-    if (const double d = drawn(r); d > most) {
+  for (std::size_t k = 0; k < 4; ++k)
+    if (const double d = drawn(choices[k]); d > most) {
       most = d;
-      best = r;
+      best = choices[k];
     }
   return most > 0.0 ? best : a;
 }
@@ -411,11 +416,14 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   a.hi.y -= ui.captionHeight;
   const bool floatingLegend = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
   const bool cornerLegend = floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f;
-  if (!model.settings.showUi && ui.stepsSize[0] > 0.0f) {
+  // (the split view's halves share the whole area: its Steps window stays over it)
+  const bool split = model.dim == Dim::Two && model.split.enabled();
+  if (!model.settings.showUi && ui.stepsSize[0] > 0.0f && !split) {
     // a slide's Steps window keeps the lower left corner: the shape fits beside it
     const glm::dvec2 legend =
         cornerLegend ? glm::dvec2(ui.legendSize[0], ui.legendSize[1]) : glm::dvec2(0.0);
-    a = besideSteps(a, {ui.stepsSize[0], ui.stepsSize[1]}, legend, shapeAspect(model));
+    const double gap = 20.0 + 40.0 * model.settings.drawScale();
+    a = besideSteps(a, {ui.stepsSize[0], ui.stepsSize[1]}, legend, shapeAspect(model), gap);
   } else if (cornerLegend) {
     // give up the strip, right or bottom, that costs the scene less
     const glm::dvec2 s = a.size();
