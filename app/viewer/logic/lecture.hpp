@@ -55,19 +55,22 @@ Lecture figureLecture(int n, const Options& options);
 
 // The options a slide is shown with: its own, with the viewer's current theme, text size
 // and panels kept where the slide gives none of its own; a slide giving `show-ui` shows
-// the panels (and leaves presentation mode) for itself alone.
+// the panels (and leaves presentation mode).
 Options slideOptions(const Slide& slide, const Model& model);
 
 // a lecture being shown and its current slide
 struct SlideShow {
-  // the panels' state a `show-ui` slide found, given back when the show leaves it
-  struct Panels {
+  // The look a slide after the first found before it set its own theme, text size or
+  // panels, given back when the show leaves it: the first slide's look is the lecture's.
+  struct Look {
+    Theme theme = Theme::Dark;
+    float fontScale = 1.0f;
     bool showUi = false;
     bool present = false;
   };
   Lecture lecture;
   std::size_t current = 0;
-  std::optional<Panels> panelsBefore;
+  std::optional<Look> lookBefore;
   bool active() const { return !lecture.slides.empty(); }
   const Slide& slide() const { return lecture.slides[current]; }
   // Shows slide k, clamped to the lecture (nothing without slides); the first problem.
