@@ -178,7 +178,11 @@ int main(int argc, char** argv) {
     const bool dropped = openDropped(model, ui);
     if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
     if (!headless) {
-      interaction.update(model.split.toLeft(cv::pointerInput(window.hovered())), model);
+      cv::PointerInput pointer = cv::pointerInput(window.hovered());
+      // after a clicker's slide change the resting pointer hovers nothing until it moves
+      if (pointer.delta != glm::dvec2(0.0)) ui.pointerStill = false;
+      if (ui.pointerStill) pointer.hovering = false;
+      interaction.update(model.split.toLeft(pointer), model);
       for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
     }
     if (options.animate && stats.frames() > 0) nudgeCamera(model);

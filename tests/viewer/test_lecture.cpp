@@ -10,6 +10,7 @@
 #include "logic/lecture.hpp"
 #include "logic/model.hpp"
 #include "logic/options.hpp"
+#include "logic/steps.hpp"
 #include "logic/y_gap.hpp"
 #include "ui/ui_state.hpp"
 
@@ -32,11 +33,28 @@ cv::Options parsed(std::vector<std::string_view> args) {
 
 }  // namespace
 
+// the shipped lecture, read
+cv::Lecture shippedLecture() {
+  const cv::ParsedLecture p =
+      cv::loadLecture(std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/paper.lecture");
+  EXPECT_EQ(p.error, "");
+  return p.lecture;
+}
+
+// the caption of the step a slide shows ("" without one)
+std::string shownStep(const cv::Model& m) {
+  const std::optional<cv::StepModel> steps = m.steps();
+  if (!steps || m.step() < 0 || static_cast<std::size_t>(m.step()) >= steps->steps.size())
+    return {};
+  return steps->steps[static_cast<std::size_t>(m.step())].caption;
+}
+
 TEST(Lecture, ShippedLectureParsesWithEveryFigure) {
   const cv::ParsedLecture p =
       cv::loadLecture(std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/paper.lecture");
   ASSERT_EQ(p.error, "");
-  EXPECT_GE(p.lecture.slides.size(), 15u);
+  EXPECT_GE(p.lecture.slides.size(), 20u);
+  EXPECT_LE(p.lecture.slides.size(), 28u);
   std::vector<bool> seen(cv::kFigureCount + 1, false);
   for (const cv::Slide& s : p.lecture.slides) {
     EXPECT_FALSE(s.title.empty());
@@ -141,7 +159,8 @@ TEST(Lecture, ASlideResetsWhatThePreviousOneSet) {
       "t.lecture");
   ASSERT_EQ(p.error, "");
   cv::Model m;
-  cv::SlideShow show{p.lecture, 0};
+  cv::SlideShow show;
+  show.lecture = p.lecture;
   ASSERT_EQ(show.go(m, 0), "");
   EXPECT_TRUE(m.scene2d.probe());
   EXPECT_EQ(m.scene2d.points().size(), 500u);
@@ -226,4 +245,135 @@ TEST(Lecture, AFigureSlideWithoutCaptionSaysWhatTheFigureShows) {
   const cv::ParsedLecture q = cv::parseLecture("slide A\ncaption first\nfigure 2\n", "t.lecture");
   ASSERT_EQ(q.error, "");
   EXPECT_EQ(q.lecture.slides[0].options.caption, "first");
+}
+
+TEST(Lecture, ShippedLectureStepsThroughEachMethodsQuery) {
+  // each method's query shown a step at a time, the polar one as the paper runs it
+  const cv::Lecture l = shippedLecture();
+  std::vector<std::string> stepped;
+  bool polarRadii = false, cubemapStep = false;
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = l;
+  for (std::size_t k = 0; k < l.slides.size(); ++k) {
+    const cv::Options& o = l.slides[k].options;
+    if (o.why) continue;  // measured in a worker thread: the smoke test shows it
+    ASSERT_EQ(show.go(m, static_cast<std::ptrdiff_t>(k)), "") << l.slides[k].title;
+    if (o.step < 1) continue;
+    const std::string step = shownStep(m);
+    EXPECT_FALSE(step.empty()) << l.slides[k].title;
+    if (m.dim == cv::Dim::Three) {
+      cubemapStep = cubemapStep || o.paper;
+      continue;
+    }
+    const std::string method(convexloc::toString(m.scene2d.method()));
+    if (method == "polar" && !o.paper) {
+      polarRadii = step.find("radii") != std::string::npos;
+      continue;
+    }
+    stepped.push_back(method + ": " + step.substr(0, step.find(':')));
+  }
+  const auto seen = [&](std::string_view prefix) {
+    return std::any_of(stepped.begin(), stepped.end(),
+                       [&](const std::string& s) { return s.starts_with(prefix); });
+  };
+  for (const char* prefix : {"wedge: ray", "slab: probe", "uniform: eq. (4)", "polar: octant",
+                             "polar: ratio", "polar: edge"})
+    EXPECT_TRUE(seen(prefix)) << prefix;
+  EXPECT_TRUE(polarRadii) << "a slide shows convexloc's radius filter deciding";
+  EXPECT_TRUE(cubemapStep) << "a slide steps through the cube map's query";
+}
+
+TEST(Lecture, ShippedLectureHasTheTeachingViews) {
+  const cv::Lecture l = shippedLecture();
+  const auto any = [&](auto pred) { return std::any_of(l.slides.begin(), l.slides.end(), pred); };
+  EXPECT_TRUE(any([](const cv::Slide& s) { return s.options.split.has_value(); }));
+  EXPECT_TRUE(any([](const cv::Slide& s) { return s.options.buildStep.has_value(); }));
+  EXPECT_TRUE(any([](const cv::Slide& s) { return s.options.why; }));
+  EXPECT_TRUE(any([](const cv::Slide& s) { return s.options.line.has_value(); }));
+  EXPECT_TRUE(any([](const cv::Slide& s) { return s.options.plane.has_value(); }));
+  // the 3D dual right after the 2D one
+  for (std::size_t k = 0; k + 1 < l.slides.size(); ++k)
+    if (l.slides[k].options.line) {
+      EXPECT_TRUE(l.slides[k + 1].options.plane.has_value());
+    }
+  // every caption short enough for two lines at text scale 2
+  for (const cv::Slide& s : l.slides) EXPECT_LE(s.caption.size(), 150u) << s.title;
+}
+
+TEST(Lecture, ShowUiParsesAndExcludesHidingThePanels) {
+  const cv::Options o = parsed({"--show-ui"});
+  EXPECT_TRUE(o.showUi);
+  EXPECT_FALSE(o.hideUi);
+  // over a figure's own --hide-ui
+  const cv::Options f = parsed({"--figure", "3", "--show-ui"});
+  EXPECT_TRUE(f.showUi);
+  EXPECT_FALSE(f.hideUi);
+  using Args = std::vector<std::string_view>;
+  EXPECT_NE(cv::parseOptions(Args{"--show-ui", "--hide-ui"}).error, "");
+  EXPECT_NE(cv::parseOptions(Args{"--present", "--show-ui"}).error, "");
+  EXPECT_NE(cv::usageText().find("--show-ui"), std::string::npos);
+  EXPECT_NE(cv::usageText().find("--no-steps"), std::string::npos);
+}
+
+TEST(Lecture, AShowUiSlideShowsThePanelsForItselfAlone) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide A\nhide-ui\nslide B\nshow-ui\ncompare\nslide C\nmethod wedge\n", "t.lecture");
+  ASSERT_EQ(p.error, "");
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  ASSERT_EQ(show.go(m, 0), "");
+  EXPECT_FALSE(m.settings.showUi);
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_TRUE(m.settings.showUi);
+  EXPECT_FALSE(m.settings.present);
+  ASSERT_EQ(show.go(m, 2), "");
+  EXPECT_FALSE(m.settings.showUi);
+  // back and forth: the lecture's look stays the first slide's
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_TRUE(m.settings.showUi);
+  ASSERT_EQ(show.go(m, 0), "");
+  EXPECT_FALSE(m.settings.showUi);
+}
+
+TEST(Lecture, ALaterSlidesTextSizeIsItsOwn) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide A\nfont-scale 2\ntheme light\nslide B\nfont-scale 1.25\nslide C\n", "t.lecture");
+  ASSERT_EQ(p.error, "");
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  ASSERT_EQ(show.go(m, 0), "");
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_EQ(m.settings.fontScale, 1.25f);
+  ASSERT_EQ(show.go(m, 2), "");
+  EXPECT_EQ(m.settings.fontScale, 2.0f);
+  EXPECT_EQ(m.settings.theme, cv::Theme::Light);
+}
+
+TEST(Lecture, TeachingViewsDoNotLeakIntoTheNextSlide) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide Split\nmethod halfplane\nsplit polar\nprobe 0.1,0.1\nno-steps\n"
+      "slide Build\nmethod polar\nbuild-step 3\n"
+      "slide Planes\nplane -1 0 0.35 1 -0.5 0.1 0 1 0.45\n"
+      "slide Plain\n3d\n",
+      "t.lecture");
+  ASSERT_EQ(p.error, "");
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  ASSERT_EQ(show.go(m, 0), "");
+  EXPECT_TRUE(m.split.enabled());
+  EXPECT_FALSE(m.settings.stepBoxVisible);
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_FALSE(m.split.enabled());
+  EXPECT_TRUE(m.settings.stepBoxVisible);
+  EXPECT_TRUE(m.build.active);
+  ASSERT_EQ(show.go(m, 2), "");
+  EXPECT_FALSE(m.build.active);
+  EXPECT_TRUE(m.planes3d.enabled());
+  ASSERT_EQ(show.go(m, 3), "");
+  EXPECT_FALSE(m.planes3d.enabled());
+  EXPECT_EQ(m.dim, cv::Dim::Three);
 }

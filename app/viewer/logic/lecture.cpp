@@ -18,6 +18,11 @@ constexpr std::string_view kNotSlideKeys[] = {"screenshot", "frames",  "size",  
                                               "samples",    "no-xvfb", "animate", "help",
                                               "version",    "lecture", "export",  "svg"};
 
+// the keys that set a slide's look: the first slide's are the lecture's, a later one's
+// its own
+constexpr std::string_view kLookKeys[] = {"theme", "font-scale", "hide-ui", "show-ui",
+                                          "present"};
+
 // the line without the blanks around it
 std::string_view trimmed(std::string_view s) {
   const std::size_t a = s.find_first_not_of(" \t\r");
@@ -237,6 +242,11 @@ Options slideOptions(const Slide& slide, const Model& model) {
   if (!slide.gives("font-scale")) o.fontScale = model.settings.fontScale;
   if (!slide.gives("hide-ui")) o.hideUi = !model.settings.showUi;
   if (!slide.gives("present")) o.present = model.settings.present;
+  // a slide with a table to read shows the panels, whatever the lecture hides
+  if (slide.gives("show-ui")) {
+    o.hideUi = false;
+    o.present = false;
+  }
   return o;
 }
 
@@ -249,8 +259,20 @@ std::string showSlide(Model& model, const Lecture& lecture, std::size_t k) {
 
 std::string SlideShow::go(Model& model, std::ptrdiff_t k) {
   if (!active()) return {};
+  // the look as it was before a slide that set its own
+  if (lookBefore) {
+    model.settings.theme = lookBefore->theme;
+    model.settings.fontScale = lookBefore->fontScale;
+    model.settings.showUi = lookBefore->showUi;
+    model.settings.present = lookBefore->present;
+    lookBefore.reset();
+  }
   const std::ptrdiff_t last = static_cast<std::ptrdiff_t>(lecture.slides.size()) - 1;
   current = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, last));
+  if (current > 0 && std::any_of(std::begin(kLookKeys), std::end(kLookKeys),
+                                 [this](std::string_view key) { return slide().gives(key); }))
+    lookBefore = Look{model.settings.theme, model.settings.fontScale, model.settings.showUi,
+                      model.settings.present};
   return showSlide(model, lecture, current);
 }
 

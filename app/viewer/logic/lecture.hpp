@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,13 +54,23 @@ ParsedLecture loadLecture(const std::string& path);
 Lecture figureLecture(int n, const Options& options);
 
 // The options a slide is shown with: its own, with the viewer's current theme, text size
-// and panels kept where the slide gives none of its own.
+// and panels kept where the slide gives none of its own; a slide giving `show-ui` shows
+// the panels (and leaves presentation mode).
 Options slideOptions(const Slide& slide, const Model& model);
 
 // a lecture being shown and its current slide
 struct SlideShow {
+  // The look a slide after the first found before it set its own theme, text size or
+  // panels, given back when the show leaves it: the first slide's look is the lecture's.
+  struct Look {
+    Theme theme = Theme::Dark;
+    float fontScale = 1.0f;
+    bool showUi = false;
+    bool present = false;
+  };
   Lecture lecture;
   std::size_t current = 0;
+  std::optional<Look> lookBefore;
   bool active() const { return !lecture.slides.empty(); }
   const Slide& slide() const { return lecture.slides[current]; }
   // Shows slide k, clamped to the lecture (nothing without slides); the first problem.

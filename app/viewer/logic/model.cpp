@@ -139,6 +139,8 @@ std::string Model::apply(const Options& o) {
   settings.showUi = settings.showUi && !o.present;
   settings.showLegend = !o.noLegend;
   settings.caption = o.caption;
+  // a slide whose drawing tells the steps (the split view's captions) without the window
+  settings.stepBoxVisible = !o.noSteps;
   // a 3D method, --3d or a polyhedron kind ask for the 3D scene
   const bool method3d = o.method && parseMethod3D(*o.method).has_value();
   if (o.method && !method3d && !parseMethod2D(*o.method))
@@ -319,6 +321,13 @@ void Model::reset() {
   settings.paperMode = false;  // the new scenes trace with the radius filter
   settings.caption.clear();
   pendingView.reset();
+  // the teaching views a slide opened: the split, the build, Why O(1), the Planes mode
+  split.setEnabled(false);
+  build.active = build.playing = false;
+  ++build.version;
+  if (whyOpen) scaling->cancel();
+  whyOpen = false;
+  planes3d.setEnabled(false);
   requestFit();
 }
 

@@ -312,6 +312,12 @@ bool presentOption(std::string_view a, ArgReader& in, Options& o) {
     o.present = true;
   } else if (a == "--no-legend") {
     o.noLegend = true;
+  } else if (a == "--show-ui") {
+    // the panels shown, over a figure's own --hide-ui given before it
+    o.showUi = true;
+    o.hideUi = false;
+  } else if (a == "--no-steps") {
+    o.noSteps = true;
   } else {
     return false;
   }
@@ -356,6 +362,8 @@ std::string conflicts(const Options& o) {
   if (o.preset && o.generate) return "give --preset or --generate, not both";
   if (!o.exportDir.empty() && o.lecture.empty() && !o.figure)
     return "--export needs --lecture FILE or --figure N";
+  if (o.showUi && (o.hideUi || o.present))
+    return "--show-ui shows the panels: give it or --hide-ui / --present, not both";
   return {};
 }
 
@@ -459,10 +467,13 @@ View:
   --theme dark|light    colours (default dark)
   --font-scale F        text size, 0.5 .. 4 (default 1)
   --hide-ui             only the scene and its legend
+  --show-ui             the panels shown (the default; a lecture's slide with a table to
+                        read shows them, over a figure's own --hide-ui)
   --present             presentation mode (P): panels hidden, lines and labels sized
                         with the text, the legend movable (drag it)
   --caption TEXT        a caption written large under the scene
   --no-legend           hide the legend (G)
+  --no-steps            hide the Steps window (the drawing still shows the step)
   --size WxH            window size in pixels (default 1440x900)
   --shaders DIR         load the GLSL shaders from DIR
   --samples N           multisampling (default 4 on a GPU, 0 on a software renderer,

@@ -74,6 +74,9 @@ struct Options {
   std::size_t whyMost = 1000000;             // the largest N measured
   std::optional<std::string> split;          // 2D: this method beside the current one
   std::optional<std::size_t> buildStep;      // 2D: the build animation at this step
+  // a lecture's slide with the panels shown (a table to read); excludes --hide-ui, --present
+  bool showUi = false;
+  bool noSteps = false;  // the Steps window hidden (the drawing still shows the step)
 };
 
 // the result of parsing: options, or the reason they are wrong

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "logic/label_layout.hpp"
 #include "logic/text.hpp"
@@ -331,6 +332,56 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
   }
 }
 
+// === Fitting beside the Steps window
+
+// the drawn shape's width over its height, about (the 3D scenes as a square)
+double shapeAspect(const Model& model) {
+  if (model.dim == Dim::Three) return model.planes3d.enabled() ? 2.0 : 1.0;
+  if (model.lines2d.enabled()) return 2.0;  // the dual view sits beside
+  const Box2 b = model.scene2d.polygon().bounds();
+  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+  return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
+}
+
+// Of the rectangles of `a` that leave free the Steps window (`steps`, its lower left corner)
+// and the legend (`legend`, its lower right corner; zero for none), the one where a shape of
+// `aspect` (width over height) is drawn largest: above both, right of the Steps window
+// (above the legend or left of it), or above it with the legend's strip at the right.
+// `gap`: the room kept beside the Steps window and the legend for
+// the labels of lines that reach past the shape. Where none keeps 40% of the drawing
+// without them, the Steps window floats over the scene (all of `a`).
+ScreenRect besideSteps(ScreenRect a, glm::dvec2 steps, glm::dvec2 legend, double aspect,
+                       double gap) {
+  constexpr double kGap = 20.0;
+  const double sw = steps.x + gap, sh = steps.y + kGap;
+  const double lw = legend.x > 0.0 ? legend.x + gap : 0.0;
+  const double lh = legend.y > 0.0 ? legend.y + kGap : 0.0;
+  ScreenRect choices[4] = {a, a, a, a};
+  // above both: the legend shares the bottom band with the Steps window where both fit across
+  choices[0].hi.y -= a.size().x > sw + lw ? std::max(sh, lh) : sh + lh;
+  // right of the Steps window, above the legend
+  choices[1].lo.x += sw;
+  choices[1].hi.y -= lh;
+  // right of the Steps window, left of the legend
+  choices[2].lo.x += sw;
+  choices[2].hi.x -= lw;
+  // above the Steps window, left of the legend
+  choices[3].hi.y -= sh;
+  choices[3].hi.x -= lw;
+  const auto drawn = [aspect](const ScreenRect& r) {
+    const glm::dvec2 s = r.size();
+    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
+  };
+  ScreenRect best = a;
+  double most = 0.4 * drawn(a);
+  for (std::size_t k = 0; k < 4; ++k)
+    if (const double d = drawn(choices[k]); d > most) {
+      most = d;
+      best = choices[k];
+    }
+  return best;
+}
+
 // a rectangle of the window as ImGui's clip rectangle
 void pushClip(ImDrawList* dl, const ScreenRect& r) {
   dl->PushClipRect(ImVec2(static_cast<float>(r.lo.x), static_cast<float>(r.lo.y)),
@@ -355,57 +406,22 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
 
 namespace {
 
-// The Steps window over the lower left corner of the scene area `full` (less the caption)
-// costs the fitted area `a` a strip: the bottom one up to its top or the left one up to
-// its right edge; with the legend's strip (right or bottom, already taken from `a`), the
-// pair of strips leaving the largest drawing of a scene `aspect` times as wide as high.
-// The window floats over the scene where no strip keeps 40% of the drawing.
-void leaveRoomForSteps(ScreenRect& a, const UiState& ui, ScreenRect full, double aspect) {
-  if (ui.stepsSize[0] <= 0.0f) return;
-  full.hi.y -= ui.captionHeight;
-  const double top = full.hi.y - 20.0 - ui.stepsSize[1];
-  const double right = full.lo.x + 20.0 + ui.stepsSize[0];
-  if (top >= a.hi.y || right <= a.lo.x) return;
-  const bool legend = a.hi.x < full.hi.x || a.hi.y < full.hi.y;
-  const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
-  const auto drawn = [aspect](const ScreenRect& r) {
-    const glm::dvec2 s = r.size();
-    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
-  };
-  ScreenRect best = a;
-  double most = 0.4 * drawn(a);
-  for (int legendRight = 0; legendRight < (legend ? 2 : 1); ++legendRight)
-    for (int stepsLeft = 0; stepsLeft < 2; ++stepsLeft) {
-      ScreenRect r = full;
-      if (legend && legendRight) r.hi.x -= lw;
-      if (legend && !legendRight) r.hi.y -= lh;
-      if (stepsLeft)
-        r.lo.x = std::max(r.lo.x, right);
-      else
-        r.hi.y = std::min(r.hi.y, top);
-      if (drawn(r) > most) {
-        best = r;
-        most = drawn(r);
-      }
-    }
-  a = best;
-}
-
-// how many times as wide as high the fitted scene is (the polygon's box; 1 in 3D)
-double sceneAspect(const Model& model) {
-  if (model.dim != Dim::Two || model.lines2d.enabled()) return 1.0;
-  const Box2 b = model.scene2d.polygon().bounds();
-  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
-  return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
-}
-
 }  // namespace
 
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   ScreenRect a = sceneArea(model, window);
   a.hi.y -= ui.captionHeight;
   const bool floatingLegend = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
-  if (floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f) {
+  const bool cornerLegend = floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f;
+  // (the split view's halves share the whole area: its Steps window stays over it)
+  const bool split = model.dim == Dim::Two && model.split.enabled();
+  if (ui.stepsSize[0] > 0.0f && !split) {
+    // the Steps window keeps the lower left corner: the shape fits beside it
+    const glm::dvec2 legend =
+        cornerLegend ? glm::dvec2(ui.legendSize[0], ui.legendSize[1]) : glm::dvec2(0.0);
+    const double gap = 20.0 + 40.0 * model.settings.drawScale();
+    a = besideSteps(a, {ui.stepsSize[0], ui.stepsSize[1]}, legend, shapeAspect(model), gap);
+  } else if (cornerLegend) {
     // give up the strip, right or bottom, that costs the scene less
     const glm::dvec2 s = a.size();
     const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
@@ -416,7 +432,6 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
         a.hi.y -= lh;
     }
   }
-  leaveRoomForSteps(a, ui, sceneArea(model, window), sceneAspect(model));
   model.fit(a);
   ui.refitUntil = now + 1.5;
 }
@@ -519,7 +534,10 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  stepsWindow(model, ui, area, now);  // also with the panels hidden
+  // also with the panels hidden, above the caption (the fit leaves it room)
+  ScreenRect stepsArea = area;
+  stepsArea.hi.y -= ui.captionHeight;
+  stepsWindow(model, ui, stepsArea, now);
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)

@@ -121,6 +121,7 @@ void moveSlide(ActionKind kind, Model& model, UiState& ui) {
                             : kind == ActionKind::FirstSlide    ? 0
                                                                 : last;
   if (to != at && to >= 0 && to <= last) goToSlide(model, ui, to);
+  ui.pointerStill = true;
 }
 
 void slideCard(Model& model, UiState& ui, ScreenRect area) {

@@ -117,11 +117,16 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
 void scalingWindow(Model& model, UiState& ui) {
   if (!model.whyOpen) return;
   const ImGuiIO& io = ImGui::GetIO();
-  // nearly the whole window, as a slide
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * 0.94f, io.DisplaySize.y * 0.94f),
-                           ImGuiCond_Appearing);
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
-                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  // between a slide's card and its caption, where a lecture shows them (kept there while
+  // the panels are hidden)
+  const ImGuiCond cond = model.settings.showUi ? ImGuiCond_Appearing : ImGuiCond_Always;
+  const float top = model.settings.slideCardHeight, bottom = io.DisplaySize.y - ui.captionHeight;
+  ImGui::SetNextWindowSize(
+      ImVec2(io.DisplaySize.x * (model.settings.showUi ? 0.8f : 0.96f),
+             std::min(io.DisplaySize.y * 0.88f, bottom - top - 8.0f)),
+      cond);
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, 0.5f * (top + bottom)), cond,
+                          ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);
   if (!ImGui::Begin("Why O(1): cost against N", &model.whyOpen,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_HorizontalScrollbar)) {

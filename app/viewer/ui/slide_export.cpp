@@ -13,7 +13,10 @@ namespace convexloc::viewer {
 
 bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui, int width,
                                int height) {
-  if (!active() || finished_ || ++frames_ < kFramesPerSlide) return true;
+  if (!active() || finished_) return true;
+  // a slide measuring Why O(1) is written with its plots finished
+  if (model.whyOpen && model.scaling->running()) return true;
+  if (++frames_ < kFramesPerSlide) return true;
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   char name[32];
