@@ -534,10 +534,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  // also with the panels hidden, above the caption (the fit leaves it room)
-  ScreenRect stepsArea = area;
-  stepsArea.hi.y -= ui.captionHeight;
-  stepsWindow(model, ui, stepsArea, now);
+  stepsWindow(model, ui, area, now);  // also with the panels hidden; the fit leaves it room
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
