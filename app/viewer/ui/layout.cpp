@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "logic/fit_room.hpp"
 #include "logic/label_layout.hpp"
 #include "logic/text.hpp"
 #include "ui/lecture_panel.hpp"
@@ -355,40 +356,14 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
 
 namespace {
 
-// The Steps window over the lower left corner of the scene area `full` (less the caption)
-// costs the fitted area `a` a strip: the bottom one up to its top or the left one up to
-// its right edge; with the legend's strip (right or bottom, already taken from `a`), the
-// pair of strips leaving the largest drawing of a scene `aspect` times as wide as high.
-// The window floats over the scene where no strip keeps 40% of the drawing.
+// the Steps window's strip, and the legend's with it (logic/fit_room.hpp)
 void leaveRoomForSteps(ScreenRect& a, const UiState& ui, ScreenRect full, double aspect) {
-  if (ui.stepsSize[0] <= 0.0f) return;
   full.hi.y -= ui.captionHeight;
-  const double top = full.hi.y - 20.0 - ui.stepsSize[1];
-  const double right = full.lo.x + 20.0 + ui.stepsSize[0];
-  if (top >= a.hi.y || right <= a.lo.x) return;
-  const bool legend = a.hi.x < full.hi.x || a.hi.y < full.hi.y;
-  const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
-  const auto drawn = [aspect](const ScreenRect& r) {
-    const glm::dvec2 s = r.size();
-    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
-  };
-  ScreenRect best = a;
-  double most = 0.4 * drawn(a);
-  for (int legendRight = 0; legendRight < (legend ? 2 : 1); ++legendRight)
-    for (int stepsLeft = 0; stepsLeft < 2; ++stepsLeft) {
-      ScreenRect r = full;
-      if (legend && legendRight) r.hi.x -= lw;
-      if (legend && !legendRight) r.hi.y -= lh;
-      if (stepsLeft)
-        r.lo.x = std::max(r.lo.x, right);
-      else
-        r.hi.y = std::min(r.hi.y, top);
-      if (drawn(r) > most) {
-        best = r;
-        most = drawn(r);
-      }
-    }
-  a = best;
+  CornerBoxes boxes;
+  boxes.steps = {ui.stepsSize[0], ui.stepsSize[1]};
+  if (a.hi.x < full.hi.x || a.hi.y < full.hi.y)  // the fit gave the legend a strip
+    boxes.legend = {ui.legendSize[0] + 20.0, ui.legendSize[1] + 20.0};
+  a = roomBesideCorners(a, full, boxes, aspect);
 }
 
 // how many times as wide as high the fitted scene is (the polygon's box; 1 in 3D)
