@@ -168,6 +168,24 @@ TEST(LabelLayout, LinesNeverMakeLabelsOverlapOrDropThem) {
   EXPECT_EQ(lines.covered({true, {300.0, 1.0}, {500.0, 2.0}, false}), 0);
 }
 
+TEST(LabelLayout, ALabelKeepsOffAWindowOverTheSceneWhereItCan) {
+  // "inside" asked to the right of its point, where the legend floats
+  const cv::PixelBox area{{0.0, 0.0}, {400.0, 300.0}};
+  const cv::PixelBox legend{{210.0, 100.0}, {400.0, 300.0}};
+  cv::SegmentGrid lines(area, 4.0);
+  lines.block(legend);
+  const std::vector<cv::LabelRequest> labels{{{200.0, 150.0}, {30.0, 0.0}, "inside", true}};
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, area, &lines);
+  ASSERT_TRUE(placed[0].shown);
+  const glm::dvec2 lo = placed[0].centre - 0.5 * placed[0].size;
+  const glm::dvec2 hi = placed[0].centre + 0.5 * placed[0].size;
+  EXPECT_TRUE(hi.x <= legend.lo.x || lo.y >= legend.hi.y || hi.y <= legend.lo.y);
+  // a window over every candidate: the label is still shown (the windows only steer)
+  cv::SegmentGrid all(area, 4.0);
+  all.block(area);
+  EXPECT_TRUE(cv::placeLabels(labels, {}, mono, 1.0, area, &all)[0].shown);
+}
+
 TEST(LabelLayout, ContinuedLinesAreIndented) {
   const auto lines =
       cv::breakAtSpaces("1. k = floor(8*0.386316) = 3 -> cell 12", 7.0 * 16, mono, "  ");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 
 #include <imgui.h>
 
@@ -130,6 +131,9 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
     model.requestFit();  // fitted a moment ago for another size: fit again
   ui.legendSize[0] = size.x;
   ui.legendSize[1] = size.y;
+  // where it is, for the labels to keep off
+  ui.legendRect[0] = pos.x, ui.legendRect[1] = pos.y;
+  ui.legendRect[2] = pos.x + size.x, ui.legendRect[3] = pos.y + size.y;
   ImGui::End();
 }
 
@@ -307,15 +311,16 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
 // the labels of `lists` over the scene, placed as the SVG places them: no two overlap, none
 // sits on a marker
 void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& project,
-                 std::span<const DrawList* const> lists) {
+                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows) {
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
   const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
-  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, project, {area.lo, area.hi},
-                                                     measureText, model.settings.drawScale())) {
+  for (const PlacedSceneLabel& p :
+       layoutSceneLabels(lists, 1, project, {area.lo, area.hi}, measureText,
+                         model.settings.drawScale(), 400, windows)) {
     const char* text = p.label->text.c_str();
     const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
                     std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));
@@ -325,8 +330,8 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
           ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
           packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
     // a halo of the background all round, as thick as the lines are scaled
-    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1),
-                           ImVec2(-1, -1), ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1), ImVec2(-1, -1),
+                           ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
       dl->AddText(ImVec2(at.x + d.x * halo, at.y + d.y * halo), shadow, text);
     dl->AddText(at, packAbgr(readableOn(p.label->colour, pal.background, pal.text)), text);
   }
@@ -487,6 +492,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   if (model.settings.showUi) leftPanel(model, renderer, ui, window);
   const float rw = rightPanelWidth(model, window);
   captionBox(model, ui, area);
+  std::fill(std::begin(ui.legendRect), std::end(ui.legendRect), 0.0f);  // until drawn again
   if (rw > 0.0f) {
     rightPanel(model, window, rw);
   } else {
@@ -506,26 +512,31 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   scalingWindow(model, ui);
 }
 
-void drawLabels(Model& model, const SceneView& view) {
+void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  // the windows floating over the scene, which labels keep off where they can
+  std::vector<PixelBox> windows;
+  for (const float* w : {ui.legendRect, ui.stepsRect})
+    if (w[2] > w[0]) windows.push_back({{w[0], w[1]}, {w[2], w[3]}});
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   if (!split) {
-    writeLabels(model, dl, sceneProjection(model), lists);
+    writeLabels(model, dl, sceneProjection(model), lists, windows);
     return;
   }
   // each half's labels, clipped to it, the right half's through its own camera
   pushClip(dl, model.split.left());
-  writeLabels(model, dl, sceneProjection(model), lists);
+  writeLabels(model, dl, sceneProjection(model), lists, windows);
   dl->PopClipRect();
   pushClip(dl, model.split.right());
   const Camera2D right = model.split.rightCamera(model.camera2d);
   const DrawList* rightLists[] = {&view.splitStructure(), &view.splitOverlay()};
-  writeLabels(model, dl,
-              [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
-                return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
-              },
-              rightLists);
+  writeLabels(
+      model, dl,
+      [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
+        return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
+      },
+      rightLists, windows);
   dl->PopClipRect();
   splitDecorations(model);
 }
