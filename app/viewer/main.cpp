@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
 
     cv::drawUi(model, renderer, ui, stats.seconds());
     view.sync(model, renderer);
-    cv::drawLabels(model, view);
+    cv::drawLabels(model, ui, view);
     ImGui::Render();
 
     drawScene(model, renderer, view, size, samples, ui);

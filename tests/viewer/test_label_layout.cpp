@@ -1,10 +1,12 @@
-// Label placement: placed labels never overlap each other or a marker; text breaks at spaces.
+// Label placement: placed labels never overlap each other or a marker, keep off drawn lines
+// where they can; text breaks at spaces; the fit leaves room beside the corner windows.
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
 #include <vector>
 
+#include "logic/fit_room.hpp"
 #include "logic/label_layout.hpp"
 
 namespace cv = convexloc::viewer;
@@ -166,8 +168,27 @@ TEST(LabelLayout, LinesNeverMakeLabelsOverlapOrDropThem) {
   EXPECT_EQ(lines.covered({true, {300.0, 1.0}, {500.0, 2.0}, false}), 0);
 }
 
+TEST(LabelLayout, ALabelKeepsOffAWindowOverTheSceneWhereItCan) {
+  // "inside" asked to the right of its point, where the legend floats
+  const cv::PixelBox area{{0.0, 0.0}, {400.0, 300.0}};
+  const cv::PixelBox legend{{210.0, 100.0}, {400.0, 300.0}};
+  cv::SegmentGrid lines(area, 4.0);
+  lines.block(legend);
+  const std::vector<cv::LabelRequest> labels{{{200.0, 150.0}, {30.0, 0.0}, "inside", true}};
+  const auto placed = cv::placeLabels(labels, {}, mono, 1.0, area, &lines);
+  ASSERT_TRUE(placed[0].shown);
+  const glm::dvec2 lo = placed[0].centre - 0.5 * placed[0].size;
+  const glm::dvec2 hi = placed[0].centre + 0.5 * placed[0].size;
+  EXPECT_TRUE(hi.x <= legend.lo.x || lo.y >= legend.hi.y || hi.y <= legend.lo.y);
+  // a window over every candidate: the label is still shown (the windows only steer)
+  cv::SegmentGrid all(area, 4.0);
+  all.block(area);
+  EXPECT_TRUE(cv::placeLabels(labels, {}, mono, 1.0, area, &all)[0].shown);
+}
+
 TEST(LabelLayout, ContinuedLinesAreIndented) {
-  const auto lines = cv::breakAtSpaces("1. k = floor(8*0.386316) = 3 -> cell 12", 7.0 * 16, mono, "  ");
+  const auto lines =
+      cv::breakAtSpaces("1. k = floor(8*0.386316) = 3 -> cell 12", 7.0 * 16, mono, "  ");
   ASSERT_GT(lines.size(), 1u);
   EXPECT_EQ(lines[0].rfind("1. ", 0), 0u);
   for (std::size_t i = 1; i < lines.size(); ++i) EXPECT_EQ(lines[i].rfind("  ", 0), 0u) << lines[i];
@@ -177,4 +198,61 @@ TEST(LabelLayout, ContinuedLinesAreIndented) {
     for (const std::string& l : lines) whole |= l.find(word) != std::string::npos;
     EXPECT_TRUE(whole) << word;
   }
+}
+
+// === the fit's room beside the Steps window and the legend
+
+namespace {
+
+// true when the two rectangles share area
+bool overlap(const cv::ScreenRect& a, const cv::ScreenRect& b) {
+  return a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
+}
+
+}  // namespace
+
+TEST(FitRoom, TheStepsWindowGetsTheStripThatLeavesTheLargerDrawing) {
+  const cv::ScreenRect full{{0.0, 0.0}, {1600.0, 900.0}};
+  cv::CornerBoxes boxes;
+  boxes.steps = {700.0, 300.0};
+  const cv::ScreenRect steps{{10.0, 590.0}, {710.0, 890.0}};
+  // a square scene: the left strip keeps 880 x 900, the bottom one 1600 x 580
+  const cv::ScreenRect square = cv::roomBesideCorners(full, full, boxes, 1.0);
+  EXPECT_FALSE(overlap(square, steps));
+  EXPECT_GE(square.lo.x, 720.0);
+  EXPECT_EQ(square.hi.y, 900.0);
+  // a wide one (4:1): the bottom strip
+  const cv::ScreenRect wide = cv::roomBesideCorners(full, full, boxes, 4.0);
+  EXPECT_FALSE(overlap(wide, steps));
+  EXPECT_EQ(wide.lo.x, 0.0);
+  EXPECT_LE(wide.hi.y, 580.0);
+  // no Steps window, or one clear of the fitted area: the fit is left as it was
+  const cv::ScreenRect fitted{{800.0, 0.0}, {1600.0, 900.0}};
+  EXPECT_EQ(cv::roomBesideCorners(fitted, full, {}, 1.0).lo, fitted.lo);
+  EXPECT_EQ(cv::roomBesideCorners(fitted, full, boxes, 1.0).lo, fitted.lo);
+}
+
+TEST(FitRoom, TheLegendsStripIsChosenWithTheStepsWindows) {
+  const cv::ScreenRect full{{0.0, 0.0}, {1920.0, 900.0}};
+  cv::CornerBoxes boxes;
+  boxes.steps = {900.0, 400.0};
+  boxes.legend = {440.0, 300.0};
+  const cv::ScreenRect steps{{10.0, 490.0}, {910.0, 890.0}};
+  const cv::ScreenRect legend{{1490.0, 610.0}, {1910.0, 890.0}};
+  // what the fit had: the legend's strip on the right
+  const cv::ScreenRect fitted{{0.0, 0.0}, {1480.0, 900.0}};
+  for (const double aspect : {0.5, 1.0, 2.0, 4.0}) {
+    const cv::ScreenRect r = cv::roomBesideCorners(fitted, full, boxes, aspect);
+    EXPECT_FALSE(overlap(r, steps)) << aspect;
+    EXPECT_FALSE(overlap(r, legend)) << aspect;
+    // as large a drawing as any of the four pairs of strips leaves
+    const double h = std::min(r.size().x / aspect, r.size().y);
+    EXPECT_GE(h, std::min((1480.0 - 920.0) / aspect, 900.0) - 1e-9) << aspect;
+    EXPECT_GE(h, std::min(1920.0 / aspect, 480.0) - 1e-9) << aspect;
+  }
+  // a boxed-in scene: no strip keeps 40% of the drawing, the window floats
+  boxes.steps = {1800.0, 800.0};
+  const cv::ScreenRect kept = cv::roomBesideCorners(fitted, full, boxes, 1.0);
+  EXPECT_EQ(kept.lo, fitted.lo);
+  EXPECT_EQ(kept.hi, fitted.hi);
 }

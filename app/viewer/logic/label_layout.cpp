@@ -21,6 +21,8 @@ constexpr double kRingStep = 9.0;
 constexpr double kPad = 3.0;
 // what a candidate one ring farther out costs, in line cells covered
 constexpr int kRingCost = 3;
+// what a cell under a window counts: more than a label's worth of line cells
+constexpr unsigned char kBlocked = 200;
 // the cells a SegmentGrid walks at most (well under a millisecond)
 constexpr std::size_t kWalkBudget = 300000;
 
@@ -99,26 +101,39 @@ void SegmentGrid::add(glm::dvec2 a, glm::dvec2 b) {
     const glm::dvec2 at = from + (to - from) * (static_cast<double>(s) / steps) - area_.lo;
     const int cx = std::clamp(static_cast<int>(at.x / cell_), 0, cols_ - 1);
     const int cy = std::clamp(static_cast<int>(at.y / cell_), 0, rows_ - 1);
-    unsigned char& c = cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols_) +
-                              static_cast<std::size_t>(cx)];
-    marked_ += c == 0;
-    c = 1;
+    unsigned char& c = cells_[index(cx, cy)];
+    if (c == 0) {
+      ++marked_;
+      c = 1;
+    }
   }
+}
+
+SegmentGrid::Span SegmentGrid::span(glm::dvec2 lo, glm::dvec2 hi) const {
+  const glm::dvec2 a = (lo - area_.lo) / cell_, b = (hi - area_.lo) / cell_;
+  return {std::max(0, static_cast<int>(std::floor(a.x))),
+          std::max(0, static_cast<int>(std::floor(a.y))),
+          std::min(cols_ - 1, static_cast<int>(std::ceil(b.x)) - 1),
+          std::min(rows_ - 1, static_cast<int>(std::ceil(b.y)) - 1)};
+}
+
+void SegmentGrid::block(const PixelBox& box) {
+  if (cells_.empty() || box.empty()) return;
+  const Span r = span(box.lo, box.hi);
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) {
+      unsigned char& c = cells_[index(x, y)];
+      marked_ += c == 0;
+      c = kBlocked;
+    }
 }
 
 int SegmentGrid::covered(const LabelPlacement& box) const {
   if (marked_ == 0) return 0;
-  const glm::dvec2 lo = (box.centre - 0.5 * box.size - area_.lo) / cell_;
-  const glm::dvec2 hi = (box.centre + 0.5 * box.size - area_.lo) / cell_;
-  const int x0 = std::max(0, static_cast<int>(std::floor(lo.x)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(lo.y)));
-  const int x1 = std::min(cols_ - 1, static_cast<int>(std::ceil(hi.x)) - 1);
-  const int y1 = std::min(rows_ - 1, static_cast<int>(std::ceil(hi.y)) - 1);
+  const Span r = span(box.centre - 0.5 * box.size, box.centre + 0.5 * box.size);
   int n = 0;
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x)
-      n += cells_[static_cast<std::size_t>(y) * static_cast<std::size_t>(cols_) +
-                  static_cast<std::size_t>(x)];
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) n += cells_[index(x, y)];
   return n;
 }
 

@@ -56,11 +56,25 @@ class SegmentGrid {
   // past a fixed budget of cells walked (a dense wireframe) further segments are left out,
   // so that a frame's labels stay cheap
   void add(glm::dvec2 a, glm::dvec2 b);
-  // how many marked cells the placed box covers (its outer cells half-covered count too)
+  // marks a window over the scene (the legend, the Steps window): a label covering any of
+  // it counts far more cells than any line, so it goes there only where nothing else is free
+  void block(const PixelBox& box);
+  // how many line cells the placed box covers (its outer cells half-covered count too), a
+  // window's cells counted many times over
   int covered(const LabelPlacement& box) const;
   bool empty() const { return marked_ == 0; }
 
  private:
+  // the cells a pixel rectangle touches, clamped to the grid
+  struct Span {
+    int x0, y0, x1, y1;
+  };
+  Span span(glm::dvec2 lo, glm::dvec2 hi) const;
+  std::size_t index(int x, int y) const {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(cols_) +
+           static_cast<std::size_t>(x);
+  }
+
   PixelBox area_;
   double cell_;
   int cols_ = 0, rows_ = 0;

@@ -300,10 +300,10 @@ void writeLabels(const SvgScene& s, std::string& out) {
       out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
              num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
              paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
-    out += "  " +
-           textSvg(p.place.centre, p.label->text,
-                   readableOn(p.label->colour, s.background, s.text)) +
-           "\n";
+    out +=
+        "  " +
+        textSvg(p.place.centre, p.label->text, readableOn(p.label->colour, s.background, s.text)) +
+        "\n";
   }
   out += "</g>\n";
 }
@@ -403,7 +403,8 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
                                                 const PixelBox& area, const MeasureText& measure,
-                                                double scale, std::size_t budget) {
+                                                double scale, std::size_t budget,
+                                                std::span<const PixelBox> windows) {
   std::vector<PlacedSceneLabel> shown;
   std::vector<LabelRequest> requests;
   std::vector<PixelDisc> markers;
@@ -434,6 +435,7 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
       const std::optional<glm::dvec3> a = project(g.a), b = project(g.b);
       if (a && b) lines.add(glm::dvec2(*a), glm::dvec2(*b));
     }
+  for (const PixelBox& w : windows) lines.block(w);
   const std::vector<LabelPlacement> placed =
       placeLabels(requests, markers, measure, scale, area, &lines);
   std::vector<PlacedSceneLabel> out;

@@ -72,13 +72,15 @@ struct PlacedSceneLabel {
   LabelPlacement place;
 };
 // Projects the labels of `lists` (at most `budget`, those far off `area` skipped) and
-// places them in `area` around the markers of the same lists; overlay labels
-// (`essentialFrom` and later lists) are essential.
+// places them in `area` around the markers of the same lists, off their segments and off
+// the `windows` over the scene where free room allows; overlay labels (`essentialFrom` and
+// later lists) are essential.
 std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const> lists,
                                                 std::size_t essentialFrom,
                                                 const ScreenProjection& project,
                                                 const PixelBox& area, const MeasureText& measure,
-                                                double scale, std::size_t budget = 400);
+                                                double scale, std::size_t budget = 400,
+                                                std::span<const PixelBox> windows = {});
 
 // the whole SVG document
 std::string sceneSvg(const SvgScene& scene);

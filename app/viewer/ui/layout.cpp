@@ -7,10 +7,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "logic/fit_room.hpp"
 #include "logic/label_layout.hpp"
 #include "logic/text.hpp"
 #include "ui/lecture_panel.hpp"
@@ -130,6 +132,9 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
     model.requestFit();  // fitted a moment ago for another size: fit again
   ui.legendSize[0] = size.x;
   ui.legendSize[1] = size.y;
+  // where it is, for the labels to keep off
+  ui.legendRect[0] = pos.x, ui.legendRect[1] = pos.y;
+  ui.legendRect[2] = pos.x + size.x, ui.legendRect[3] = pos.y + size.y;
   ImGui::End();
 }
 
@@ -307,15 +312,16 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
 // the labels of `lists` over the scene, placed as the SVG places them: no two overlap, none
 // sits on a marker
 void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& project,
-                 std::span<const DrawList* const> lists) {
+                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows) {
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
   const ScreenRect area = sceneArea(model, vp);
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
-  for (const PlacedSceneLabel& p : layoutSceneLabels(lists, 1, project, {area.lo, area.hi},
-                                                     measureText, model.settings.drawScale())) {
+  for (const PlacedSceneLabel& p :
+       layoutSceneLabels(lists, 1, project, {area.lo, area.hi}, measureText,
+                         model.settings.drawScale(), 400, windows)) {
     const char* text = p.label->text.c_str();
     const ImVec2 at(std::round(static_cast<float>(p.place.centre.x - 0.5 * p.place.size.x)),
                     std::round(static_cast<float>(p.place.centre.y - 0.5 * p.place.size.y)));
@@ -325,8 +331,8 @@ void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& pro
           ImVec2(static_cast<float>(p.place.centre.x), static_cast<float>(p.place.centre.y)),
           packAbgr(withAlpha(p.label->colour, 0.6f)), 1.0f);
     // a halo of the background all round, as thick as the lines are scaled
-    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1),
-                           ImVec2(-1, -1), ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
+    for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1), ImVec2(-1, -1),
+                           ImVec2(1, -1), ImVec2(-1, 1), ImVec2(1, 1)})
       dl->AddText(ImVec2(at.x + d.x * halo, at.y + d.y * halo), shadow, text);
     dl->AddText(at, packAbgr(readableOn(p.label->colour, pal.background, pal.text)), text);
   }
@@ -341,45 +347,6 @@ double shapeAspect(const Model& model) {
   const Box2 b = model.scene2d.polygon().bounds();
   const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
   return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
-}
-
-// Of the rectangles of `a` that leave free the Steps window (`steps`, its lower left corner)
-// and the legend (`legend`, its lower right corner; zero for none), the one where a shape of
-// `aspect` (width over height) is drawn largest: above both, right of the Steps window
-// (above the legend or left of it), or above it with the legend's strip at the right.
-// `gap`: the room kept beside the Steps window and the legend for
-// the labels of lines that reach past the shape. Where none keeps 40% of the drawing
-// without them, the Steps window floats over the scene (all of `a`).
-ScreenRect besideSteps(ScreenRect a, glm::dvec2 steps, glm::dvec2 legend, double aspect,
-                       double gap) {
-  constexpr double kGap = 20.0;
-  const double sw = steps.x + gap, sh = steps.y + kGap;
-  const double lw = legend.x > 0.0 ? legend.x + gap : 0.0;
-  const double lh = legend.y > 0.0 ? legend.y + kGap : 0.0;
-  ScreenRect choices[4] = {a, a, a, a};
-  // above both: the legend shares the bottom band with the Steps window where both fit across
-  choices[0].hi.y -= a.size().x > sw + lw ? std::max(sh, lh) : sh + lh;
-  // right of the Steps window, above the legend
-  choices[1].lo.x += sw;
-  choices[1].hi.y -= lh;
-  // right of the Steps window, left of the legend
-  choices[2].lo.x += sw;
-  choices[2].hi.x -= lw;
-  // above the Steps window, left of the legend
-  choices[3].hi.y -= sh;
-  choices[3].hi.x -= lw;
-  const auto drawn = [aspect](const ScreenRect& r) {
-    const glm::dvec2 s = r.size();
-    return s.x <= 0.0 || s.y <= 0.0 ? 0.0 : std::min(s.x / aspect, s.y);
-  };
-  ScreenRect best = a;
-  double most = 0.4 * drawn(a);
-  for (std::size_t k = 0; k < 4; ++k)
-    if (const double d = drawn(choices[k]); d > most) {
-      most = d;
-      best = choices[k];
-    }
-  return best;
 }
 
 // a rectangle of the window as ImGui's clip rectangle
@@ -406,22 +373,23 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
 
 namespace {
 
+// the Steps window's strip, and the legend's with it (logic/fit_room.hpp)
+void leaveRoomForSteps(ScreenRect& a, const UiState& ui, ScreenRect full, double aspect) {
+  full.hi.y -= ui.captionHeight;
+  CornerBoxes boxes;
+  boxes.steps = {ui.stepsSize[0], ui.stepsSize[1]};
+  if (a.hi.x < full.hi.x || a.hi.y < full.hi.y)  // the fit gave the legend a strip
+    boxes.legend = {ui.legendSize[0] + 20.0, ui.legendSize[1] + 20.0};
+  a = roomBesideCorners(a, full, boxes, aspect);
+}
+
 }  // namespace
 
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   ScreenRect a = sceneArea(model, window);
   a.hi.y -= ui.captionHeight;
   const bool floatingLegend = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
-  const bool cornerLegend = floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f;
-  // (the split view's halves share the whole area: its Steps window stays over it)
-  const bool split = model.dim == Dim::Two && model.split.enabled();
-  if (ui.stepsSize[0] > 0.0f && !split) {
-    // the Steps window keeps the lower left corner: the shape fits beside it
-    const glm::dvec2 legend =
-        cornerLegend ? glm::dvec2(ui.legendSize[0], ui.legendSize[1]) : glm::dvec2(0.0);
-    const double gap = 20.0 + 40.0 * model.settings.drawScale();
-    a = besideSteps(a, {ui.stepsSize[0], ui.stepsSize[1]}, legend, shapeAspect(model), gap);
-  } else if (cornerLegend) {
+  if (floatingLegend && !ui.legendMoved && ui.legendSize[0] > 0.0f) {
     // give up the strip, right or bottom, that costs the scene less
     const glm::dvec2 s = a.size();
     const double lw = ui.legendSize[0] + 20.0, lh = ui.legendSize[1] + 20.0;
@@ -432,6 +400,9 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
         a.hi.y -= lh;
     }
   }
+  // (the split view's halves share the whole area: its Steps window stays over it)
+  if (ui.stepsSize[0] > 0.0f && !(model.dim == Dim::Two && model.split.enabled()))
+    leaveRoomForSteps(a, ui, sceneArea(model, window), shapeAspect(model));
   model.fit(a);
   ui.refitUntil = now + 1.5;
 }
@@ -527,6 +498,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   if (model.settings.showUi) leftPanel(model, renderer, ui, window);
   const float rw = rightPanelWidth(model, window);
   captionBox(model, ui, area);
+  std::fill(std::begin(ui.legendRect), std::end(ui.legendRect), 0.0f);  // until drawn again
   if (rw > 0.0f) {
     rightPanel(model, window, rw);
   } else {
@@ -546,26 +518,31 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   scalingWindow(model, ui);
 }
 
-void drawLabels(Model& model, const SceneView& view) {
+void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  // the windows floating over the scene, which labels keep off where they can
+  std::vector<PixelBox> windows;
+  for (const float* w : {ui.legendRect, ui.stepsRect})
+    if (w[2] > w[0]) windows.push_back({{w[0], w[1]}, {w[2], w[3]}});
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   if (!split) {
-    writeLabels(model, dl, sceneProjection(model), lists);
+    writeLabels(model, dl, sceneProjection(model), lists, windows);
     return;
   }
   // each half's labels, clipped to it, the right half's through its own camera
   pushClip(dl, model.split.left());
-  writeLabels(model, dl, sceneProjection(model), lists);
+  writeLabels(model, dl, sceneProjection(model), lists, windows);
   dl->PopClipRect();
   pushClip(dl, model.split.right());
   const Camera2D right = model.split.rightCamera(model.camera2d);
   const DrawList* rightLists[] = {&view.splitStructure(), &view.splitOverlay()};
-  writeLabels(model, dl,
-              [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
-                return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
-              },
-              rightLists);
+  writeLabels(
+      model, dl,
+      [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
+        return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
+      },
+      rightLists, windows);
   dl->PopClipRect();
   splitDecorations(model);
 }

@@ -33,7 +33,8 @@ void perform(const Action& action, Model& model, UiState& ui);
 // every window of the frame; `now` in seconds
 void drawUi(Model& model, Renderer& renderer, UiState& ui, double now);
 
-// the draw lists' labels, written on ImGui's background draw list over the scene
-void drawLabels(Model& model, const SceneView& view);
+// the draw lists' labels, written on ImGui's background draw list over the scene, kept off
+// the windows floating over it where they can
+void drawLabels(Model& model, const UiState& ui, const SceneView& view);
 
 }  // namespace convexloc::viewer

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 #include <imgui.h>
@@ -172,6 +173,7 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   const std::optional<StepModel> m = model.steps();
   const float before[2] = {ui.stepsSize[0], ui.stepsSize[1]};
   ui.stepsSize[0] = ui.stepsSize[1] = 0.0f;
+  std::fill(std::begin(ui.stepsRect), std::end(ui.stepsRect), 0.0f);
   // the Lines and Planes modes draw no placed point: no steps of it either
   const bool dualMode = model.dim == Dim::Two ? model.lines2d.enabled() : model.planes3d.enabled();
   if (!model.settings.stepBoxVisible || !m || m->steps.empty() || dualMode) return;
@@ -232,10 +234,12 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
     ImGui::Separator();
     codeList(*m, step, pal, !whole);
   }
-  const ImVec2 size = ImGui::GetWindowSize();
+  const ImVec2 size = ImGui::GetWindowSize(), pos = ImGui::GetWindowPos();
   ImGui::End();
   ui.stepsSize[0] = size.x;
   ui.stepsSize[1] = size.y;
+  ui.stepsRect[0] = pos.x, ui.stepsRect[1] = pos.y;
+  ui.stepsRect[2] = pos.x + size.x, ui.stepsRect[3] = pos.y + size.y;
   // fitted a moment ago for another size (or none): fit again
   if ((std::abs(size.x - before[0]) > 2.0f || std::abs(size.y - before[1]) > 2.0f) &&
       now < ui.refitUntil)
