@@ -352,6 +352,23 @@ TEST(Lecture, ALaterSlidesTextSizeIsItsOwn) {
   EXPECT_EQ(m.settings.theme, cv::Theme::Light);
 }
 
+// a lecture that opens on a figure shows it as the figure looks (light, large, no panels)
+TEST(Lecture, AFigureSlideBringsItsOwnLook) {
+  const cv::ParsedLecture p =
+      cv::parseLecture("slide Polar\nfigure 6\nstep 2\nslide After\nmethod wedge\n", "t.lecture");
+  ASSERT_EQ(p.error, "");
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  ASSERT_EQ(show.go(m, 0), "");
+  EXPECT_EQ(m.settings.theme, cv::Theme::Light);
+  EXPECT_FALSE(m.settings.showUi);
+  EXPECT_GT(m.settings.fontScale, 1.0f);
+  // the figure's look is the first slide's, so the lecture's
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_EQ(m.settings.theme, cv::Theme::Light);
+}
+
 TEST(Lecture, TeachingViewsDoNotLeakIntoTheNextSlide) {
   const cv::ParsedLecture p = cv::parseLecture(
       "slide Split\nmethod halfplane\nsplit polar\nprobe 0.1,0.1\nno-steps\n"

@@ -195,7 +195,12 @@ class LectureReader {
 }  // namespace
 
 bool Slide::gives(std::string_view key) const {
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
+  const auto has = [this](std::string_view k) {
+    return std::find(keys.begin(), keys.end(), k) != keys.end();
+  };
+  // a figure brings its own look: the theme, the text size, the panels hidden
+  const bool look = key == "theme" || key == "font-scale" || key == "hide-ui";
+  return has(key) || (look && has("figure"));
 }
 
 ParsedLecture parseLecture(std::string_view text, const std::string& source,

@@ -183,8 +183,9 @@ std::vector<TraceLine> describeTrace(const Trace2D& t, Vec2 p, const ConvexPolyg
         add(TraceLine::Step, "centre x_T = " + compact(t.apex, scaleOf(polygon.bounds())));
         add(TraceLine::Step,
             "octant " + std::to_string(t.octant) + " (signs of dx, dy and |dx| vs |dy|)");
-        if (q > 0)
-          add(TraceLine::Step, "polar slab " + std::to_string(t.cell % q) + " of " +
+        // k counts the slabs by the ratio, as the index computes it (eq. 4's polar form)
+        if (q > 0 && t.polar.slabs > 0)
+          add(TraceLine::Step, "polar slab k = " + std::to_string(t.polar.slab) + " of " +
                                    std::to_string(q) + " in the octant: cell " +
                                    std::to_string(t.cell));
         if (t.outerRadius > 0)
