@@ -1,5 +1,6 @@
-// convexloc — the dual method: the polar locator of the dual polygon proposes the vertices
-// where a line's side function is largest and smallest, an exact climb confirms them.
+// convexloc — the dual method: cells of directions, the dual polygon's polar slabs taken
+// about the origin, propose the vertices where a line's side function is largest and
+// smallest; exact comparisons confirm them.
 //
 // Duality. Let c be strictly inside P = {x : a_i . (x - c) <= 1} (one a_i per edge) and
 // P* = conv{a_i} its polar dual, with the origin strictly inside. Edge i of P is vertex a_i
@@ -14,25 +15,28 @@
 // centrally symmetric, so its centre of area is the origin and the polar locator's centre
 // lies within rounding of it, and every direction's cone is at most half a turn.
 // Q is the strictly convex hull of these 2N points (exact predicates; a normal that rounding
-// leaves on or inside the hull is dropped). Each edge of Q is labelled with the vertex of P
-// farthest along its middle direction (floating point: a label is a proposal, never a
-// decision). The polar locator of Q gets about one cell per vertex of Q (slabsFor), so a
-// cell is about one average cone of directions wide.
+// leaves on or inside the hull is dropped), and its polar locator, about one cell per vertex
+// of Q (slabsFor), is the dual that the trace, `info` and the viewer show.
+//
+// The direction cells. The proposals come from a table of the same shape indexed by w
+// itself, as if from the origin rather than from c* (within rounding of it): a direction's
+// octant (the sign bits of w and whether |w_y| > |w_x|) and its slab floor(q min/max) in it,
+// q = slabsFor(|Q|) slabs per octant, so 8q cells about as many as Q's vertices. A slab is
+// at most 1/q radians wide, against a regular N-gon's cone of 2 pi / N per vertex with
+// 8q about 2N: at most one cone's border falls inside a cell, and the vertices farthest along
+// its directions are at most two consecutive ones. The build finds, for every cell
+// counter-clockwise, the vertex farthest along its first and its last direction (one pointer
+// once around the ring, floating point: a proposal, never a decision); the cell proposes the
+// first where they are at most two consecutive vertices, else the one farthest along its
+// middle direction. Each cell keeps one record of 64 bytes, one cache line: four consecutive
+// vertices of P, from the one before its proposal to two after it (RingWindow); its
+// proposal's index lies in a table of its own, read only where a window does not confirm.
 //
 // The query. For f(x) = w . (x - p1) with w = (p2 - p1) turned a quarter counter-clockwise,
-// f is largest at the vertex farthest along w and smallest at the one farthest along -w. The
-// cells asked for are those of the points c* + w / |w|_max and c* - w / |w|_max, c* the
-// locator's centre (index arithmetic only, no table read). Each cell keeps one record of 64
-// bytes, one cache line: four consecutive vertices of P, from the one before its proposal to
-// two after it (RingWindow), and the proposal's index beside it. Conservative cell: by the
-// polar locator's contract the cell lists every edge of Q through which the ray from c*
-// towards that point leaves Q. That ray differs from the origin's ray along w by |c*| and
-// the rounding of the point, so it leaves through the edge E the origin's ray leaves
-// through, or, when w points within that distance of a vertex of Q, through E's neighbour.
-// E's label is the extreme vertex along w except where w lies within rounding of a normal
-// (the label is then its neighbour) or in the arc of a dropped normal. The cell's edges are
-// a consecutive run, their labels a consecutive run of vertices of P; where that run has at
-// most two vertices the proposal is its first, and the window holds them both.
+// f is largest at the vertex farthest along w and smallest at the one farthest along -w.
+// Negating w flips both sign bits and keeps the slab, so the cells of w and -w are a pair,
+// stored side by side: a line computes one index from its two points (no table read) and
+// reads one aligned 128-byte block.
 //
 // Exactness and cost. The window confirms its second or third vertex when neither of its
 // ring neighbours (both in the window) is strictly larger, with exact comparisons: that is
@@ -40,10 +44,10 @@
 // the two vertices reached, is exact whatever the proposals were. Where the window confirms
 // neither, the climb (ring2d.hpp) goes on over the ring from the proposal and stops only at a
 // largest vertex. A query is O(1) with two cache lines read when both windows confirm, which
-// holds for every line whose cells' label runs have at most two vertices: polygons whose
-// turning angles lie within a modest factor of 2 pi / N (regular, random, elliptic). A cell
-// listing many more (a polygon whose turning angles span many orders of magnitude) may need
-// a longer climb: after kClimbMoves moves, bisection finishes in O(log N).
+// holds for every line whose cells' directions have at most two farthest vertices: polygons
+// whose turning angles lie within a modest factor of 2 pi / N (regular, random, elliptic). A
+// cell spanning many more (a polygon whose turning angles span many orders of magnitude) may
+// need a longer climb: after kClimbMoves moves, bisection finishes in O(log N).
 #include "intersect/dual_polar.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// convexloc (internal) — the polar locator of a polygon's dual, proposing a line's extreme
-// vertices in O(1). The argument heads dual_polar.cpp.
+// convexloc (internal) — a polygon's dual: its polar locator, and the direction cells that
+// propose a line's extreme vertices in O(1). The argument heads dual_polar.cpp.
 #pragma once
 
 #include <cstddef>
