@@ -213,6 +213,58 @@ TEST(Intersect2DDual, UnevenTurningFallsBackExactly) {
   EXPECT_GT(fallbacks, 0u);  // the climb past the windows was exercised
 }
 
+// the crossing from the two extremes' signs, for every pair of signs
+TEST(Intersect2DCrossing, FromSigns) {
+  for (int high = -1; high <= 1; ++high)
+    for (int low = -1; low <= high; ++low) {
+      const Crossing want = (low > 0 || high < 0)   ? Crossing::Misses
+                            : (low < 0 && high > 0) ? Crossing::Crosses
+                                                    : Crossing::Touches;
+      EXPECT_EQ(convexloc::crossingOf(high, low), want) << high << " " << low;
+    }
+}
+
+// Lines at every angle through a vertex of the regular 4096-gon, along its edges, one ulp off
+// both, and through the centre, at three scales: the one-line path (direction cells of w and
+// -w side by side, windows confirmed without branches) agrees with the batch, the trace and
+// the reference, and the trace's proposals come from the cells of w and -w.
+TEST(Intersect2DDual, DirectionCellsAgreeEverywhere) {
+  for (int e : {0, 700, -700}) {
+    std::vector<Vec2> input = shapes::regular(4096);
+    for (Vec2& v : input) v = {std::ldexp(v.x, e), std::ldexp(v.y, e)};
+    const ConvexPolygon polygon(input);
+    const std::vector<Vec2> ring(polygon.vertices().begin(), polygon.vertices().end());
+    const LineIntersector dual(polygon, LineMethod::Dual);
+    std::vector<std::pair<Vec2, Vec2>> lines;
+    for (std::size_t i = 0; i < ring.size(); i += 37) {
+      const std::size_t n = ring.size();
+      const Vec2 a = ring[i], b = ring[(i + 1) % n], c = ring[(i + 5) % n];
+      const Vec2 before = ring[(i + n - 1) % n];
+      const Vec2 off{std::nextafter(a.x, 2 * a.x), a.y};
+      lines.push_back({a, b});    // along an edge
+      lines.push_back({off, b});  // one ulp off it
+      lines.push_back({a, c});    // through two vertices
+      lines.push_back({a, {a.x + (b.x - before.x), a.y + (b.y - before.y)}});  // touching at a
+      lines.push_back({{0, 0}, a});                                            // through the centre
+    }
+    std::vector<Vec2> flat;
+    for (const auto& [p1, p2] : lines) flat.insert(flat.end(), {p1, p2});
+    std::vector<Crossing> batch(lines.size());
+    dual.classify(std::span(flat), std::span(batch));
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const auto& [p1, p2] = lines[k];
+      const LineHit want = referenceHit(ring, p1, p2);
+      ASSERT_EQ(dual.classify(p1, p2), want.crossing) << show(p1) << show(p2);
+      ASSERT_EQ(dual.classify(p2, p1), want.crossing) << show(p2) << show(p1);
+      ASSERT_EQ(batch[k], want.crossing) << show(p1) << show(p2);
+      const convexloc::LineTrace t = dual.trace(p1, p2);
+      ASSERT_EQ(t.crossing, want.crossing) << show(p1) << show(p2);
+      ASSERT_FALSE(t.bisected);
+      ASSERT_LE(t.climbSteps, 2u);  // each proposal is its extreme or next to it
+    }
+  }
+}
+
 // the batch over every length around its blocks, against one line at a time
 TEST(Intersect2DDual, BatchLengthsAgreeWithSingle) {
   const ConvexPolygon polygon(shapes::regular(1000));

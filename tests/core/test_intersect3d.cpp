@@ -249,6 +249,43 @@ TEST(Intersect3DDual, BatchLengthsAgreeWithSingle) {
   }
 }
 
+// A cone over a 48-gon, huge and tiny: its apex and the vertex its base's triangles fan from
+// have degrees far above what a grid cell copies, so cells proposing them reach their
+// records by index. Every plane, one at a time, in a batch and traced, matches the reference,
+// and such a vertex is proposed.
+TEST(Intersect3DDual, HighDegreeVerticesMatchTheReference) {
+  for (int e : {0, 600, -600}) {
+    std::vector<Vec3> points{{0, 0, std::ldexp(1.0, e)}};
+    for (int k = 0; k < 48; ++k) {
+      const double a = 2 * 3.141592653589793 * k / 48;
+      points.push_back(
+          {std::ldexp(std::cos(a), e), std::ldexp(std::sin(a), e), -std::ldexp(0.5, e)});
+    }
+    const ConvexPolyhedron p = ConvexPolyhedron::hullOf(points);
+    std::vector<std::size_t> degree(p.vertexCount(), 0);
+    for (const auto& t : p.triangles())
+      for (const std::uint32_t v : t) ++degree[v];
+    const PlaneIntersector dual(p, PlaneMethod::Dual);
+    const auto planes = planesFor(p, 300, 17);
+    std::vector<Vec3> flat;
+    for (const Plane& pl : planes) flat.insert(flat.end(), {pl.a, pl.b, pl.c});
+    std::vector<Crossing> batch(planes.size());
+    dual.classify(std::span(flat), std::span(batch));
+    std::size_t highProposed = 0;
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      const Plane& pl = planes[k];
+      const Crossing want = referenceCrossing(p.vertices(), pl.a, pl.b, pl.c);
+      const std::string where = "plane " + show(pl.a) + show(pl.b) + show(pl.c);
+      ASSERT_EQ(dual.classify(pl.a, pl.b, pl.c), want) << where;
+      ASSERT_EQ(batch[k], want) << where;
+      const convexloc::PlaneTrace t = dual.trace(pl.a, pl.b, pl.c);
+      ASSERT_EQ(t.crossing, want) << where;
+      highProposed += degree[t.startMax] > 8 || degree[t.startMin] > 8;
+    }
+    EXPECT_GT(highProposed, 0u) << e;
+  }
+}
+
 TEST(Intersect3DNames, RoundTripAndCollinear) {
   for (PlaneMethod m : convexloc::kAllPlaneMethods)
     EXPECT_EQ(convexloc::parsePlaneMethod(convexloc::toString(m)), m);

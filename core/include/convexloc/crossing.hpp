@@ -31,9 +31,10 @@ struct ExtremeVertices {
 // where it is largest and smallest: crosses when they are strictly opposite, touches when
 // one is zero and the other is not strictly opposite, misses otherwise.
 constexpr Crossing crossingOf(int maxSign, int minSign) {
-  if (minSign > 0 || maxSign < 0) return Crossing::Misses;
-  if (minSign < 0 && maxSign > 0) return Crossing::Crosses;
-  return Crossing::Touches;
+  // misses when both signs are on one side, crosses when strictly on both; written without
+  // branches, so a caller's next query is never discarded for a mispredicted one
+  const bool meets = (minSign <= 0) & (maxSign >= 0), both = (minSign < 0) & (maxSign > 0);
+  return static_cast<Crossing>(static_cast<int>(meets) * (1 + static_cast<int>(both)));
 }
 
 }  // namespace convexloc

@@ -79,11 +79,11 @@ struct Segment2D {
 struct LineTrace {
   LineMethod method = LineMethod::Dual;
   Crossing crossing = Crossing::Misses;
-  ExtremeVertices extremes;    // where f is largest and smallest, its exact signs there
-  std::int64_t cell = -1;      // dual: the polar cell of the line's normal w, -1 when none
-  std::int64_t opposite = -1;  // dual: the polar cell of -w
-  std::uint32_t startMax = 0;  // dual: the vertex cell proposed (for the largest f)
-  std::uint32_t startMin = 0;  // dual: the vertex opposite proposed (for the smallest f)
+  ExtremeVertices extremes;       // where f is largest and smallest, its exact signs there
+  std::int64_t cell = -1;         // dual: the polar cell of the line's normal w, -1 when none
+  std::int64_t opposite = -1;     // dual: the polar cell of -w
+  std::uint32_t startMax = 0;     // dual: the vertex w's direction cell proposed (largest f)
+  std::uint32_t startMin = 0;     // dual: the vertex -w's direction cell proposed (smallest f)
   std::uint32_t climbSteps = 0;   // dual: moves from the proposals to the extremes
   bool bisected = false;          // dual: a climb ran long and bisection finished it
   std::uint32_t comparisons = 0;  // exact comparisons of two vertices along the normal

@@ -30,7 +30,6 @@ class CubemapLocator;
 
 namespace detail {
 class DualCubemap3D;
-struct GridCell;
 struct PlaneProbe;
 struct VertexGraph;
 }  // namespace detail
@@ -103,16 +102,16 @@ class PlaneIntersector {
 
  private:
   PlaneTrace run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const noexcept;
-  // dual: a vertex where the probe's G is largest, climbing from grid cell `from`'s star over
-  // the stars of the graph (moves counted in `steps`); its coordinates in `at`
-  std::uint32_t largestFrom(detail::GridCell from, detail::PlaneProbe& probe, Vec3& at,
+  // dual: a vertex where the probe's G is largest, climbing from the star record at `record`
+  // over the records of its neighbours (moves counted in `steps`); its coordinates in `at`
+  std::uint32_t largestFrom(const std::uint64_t* record, detail::PlaneProbe& probe, Vec3& at,
                             std::uint32_t& steps) const noexcept;
-  // dual: the crossing from the grid cells of the plane's w (up) and of -w (down)
-  Crossing classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const detail::GridCell& up,
-                        const detail::GridCell& down) const noexcept;
+  // dual: the crossing from the records the grid cells of the plane's w (up) and of -w
+  // (down) propose
+  Crossing classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const std::uint64_t* up,
+                        const std::uint64_t* down) const noexcept;
   PlaneMethod method_;
   std::vector<Vec3> vertices_;
-  std::unique_ptr<detail::VertexGraph> graph_;
   std::unique_ptr<detail::DualCubemap3D> dual_;
   std::size_t faces_ = 0;
   double buildSeconds_ = 0.0;

@@ -1,5 +1,6 @@
-// convexloc — the dual method: the polar locator of the dual polygon proposes the vertices
-// where a line's side function is largest and smallest, an exact climb confirms them.
+// convexloc — the dual method: cells of directions, the dual polygon's polar slabs taken
+// about the origin, propose the vertices where a line's side function is largest and
+// smallest; exact comparisons confirm them.
 //
 // Duality. Let c be strictly inside P = {x : a_i . (x - c) <= 1} (one a_i per edge) and
 // P* = conv{a_i} its polar dual, with the origin strictly inside. Edge i of P is vertex a_i
@@ -14,25 +15,28 @@
 // centrally symmetric, so its centre of area is the origin and the polar locator's centre
 // lies within rounding of it, and every direction's cone is at most half a turn.
 // Q is the strictly convex hull of these 2N points (exact predicates; a normal that rounding
-// leaves on or inside the hull is dropped). Each edge of Q is labelled with the vertex of P
-// farthest along its middle direction (floating point: a label is a proposal, never a
-// decision). The polar locator of Q gets about one cell per vertex of Q (slabsFor), so a
-// cell is about one average cone of directions wide.
+// leaves on or inside the hull is dropped), and its polar locator, about one cell per vertex
+// of Q (slabsFor), is the dual that the trace, `info` and the viewer show.
+//
+// The direction cells. The proposals come from a table of the same shape indexed by w
+// itself, as if from the origin rather than from c* (within rounding of it): a direction's
+// octant (the sign bits of w and whether |w_y| > |w_x|) and its slab floor(q min/max) in it,
+// q = slabsFor(|Q|) slabs per octant, so 8q cells about as many as Q's vertices. A slab is
+// at most 1/q radians wide, against a regular N-gon's cone of 2 pi / N per vertex with
+// 8q about 2N: at most one cone's border falls inside a cell, and the vertices farthest along
+// its directions are at most two consecutive ones. The build finds, for every cell
+// counter-clockwise, the vertex farthest along its first and its last direction (one pointer
+// once around the ring, floating point: a proposal, never a decision); the cell proposes the
+// first where they are at most two consecutive vertices, else the one farthest along its
+// middle direction. Each cell keeps one record of 64 bytes, one cache line: four consecutive
+// vertices of P, from the one before its proposal to two after it (RingWindow); its
+// proposal's index lies in a table of its own, read only where a window does not confirm.
 //
 // The query. For f(x) = w . (x - p1) with w = (p2 - p1) turned a quarter counter-clockwise,
-// f is largest at the vertex farthest along w and smallest at the one farthest along -w. The
-// cells asked for are those of the points c* + w / |w|_max and c* - w / |w|_max, c* the
-// locator's centre (index arithmetic only, no table read). Each cell keeps one record of 64
-// bytes, one cache line: four consecutive vertices of P, from the one before its proposal to
-// two after it (RingWindow), and the proposal's index beside it. Conservative cell: by the
-// polar locator's contract the cell lists every edge of Q through which the ray from c*
-// towards that point leaves Q. That ray differs from the origin's ray along w by |c*| and
-// the rounding of the point, so it leaves through the edge E the origin's ray leaves
-// through, or, when w points within that distance of a vertex of Q, through E's neighbour.
-// E's label is the extreme vertex along w except where w lies within rounding of a normal
-// (the label is then its neighbour) or in the arc of a dropped normal. The cell's edges are
-// a consecutive run, their labels a consecutive run of vertices of P; where that run has at
-// most two vertices the proposal is its first, and the window holds them both.
+// f is largest at the vertex farthest along w and smallest at the one farthest along -w.
+// Negating w flips both sign bits and keeps the slab, so the cells of w and -w are a pair,
+// stored side by side: a line computes one index from its two points (no table read) and
+// reads one aligned 128-byte block.
 //
 // Exactness and cost. The window confirms its second or third vertex when neither of its
 // ring neighbours (both in the window) is strictly larger, with exact comparisons: that is
@@ -40,10 +44,10 @@
 // the two vertices reached, is exact whatever the proposals were. Where the window confirms
 // neither, the climb (ring2d.hpp) goes on over the ring from the proposal and stops only at a
 // largest vertex. A query is O(1) with two cache lines read when both windows confirm, which
-// holds for every line whose cells' label runs have at most two vertices: polygons whose
-// turning angles lie within a modest factor of 2 pi / N (regular, random, elliptic). A cell
-// listing many more (a polygon whose turning angles span many orders of magnitude) may need
-// a longer climb: after kClimbMoves moves, bisection finishes in O(log N).
+// holds for every line whose cells' directions have at most two farthest vertices: polygons
+// whose turning angles lie within a modest factor of 2 pi / N (regular, random, elliptic). A
+// cell spanning many more (a polygon whose turning angles span many orders of magnitude) may
+// need a longer climb: after kClimbMoves moves, bisection finishes in O(log N).
 #include "intersect/dual_polar.hpp"
 
 #include <algorithm>
@@ -57,6 +61,7 @@
 #include "convexloc/polygon.hpp"
 #include "convexloc/table.hpp"
 #include "intersect/ring2d.hpp"
+#include "polar/index.hpp"
 
 namespace convexloc::detail {
 
@@ -116,20 +121,6 @@ std::uint32_t farthestAlong(const std::vector<Vec2>& ring, Vec2 w) {
   return best;
 }
 
-// For each edge of the dual polygon, counter-clockwise, the vertex of the ring farthest along
-// its middle direction. It turns counter-clockwise with the edges, so one pointer goes once
-// around the ring: O(N + edges).
-std::vector<std::uint32_t> labelEdges(std::span<const Vec2> dual, std::span<const Vec2> ring) {
-  const std::vector<Vec2> scaled = scaledRing(ring);
-  std::vector<std::uint32_t> labels(dual.size());
-  for (std::uint32_t k = 0; k < dual.size(); ++k) {
-    const Vec2 a = dual[k], b = dual[nextOf(k, dual.size())];
-    const Vec2 w{a.x + b.x, a.y + b.y};
-    labels[k] = k == 0 ? farthestAlong(scaled, w) : advanceAlong(scaled, w, labels[k - 1]);
-  }
-  return labels;
-}
-
 // Slabs per octant for a dual of n vertices: 8 q cells, pi / (4 q) radians wide on average and
 // at most 1 / q, against an average cone of 2 pi / n per dual edge. With q = n / 8 a cell is
 // one average cone wide on average and 1.3 at most, so its window (two consecutive
@@ -138,46 +129,100 @@ std::uint32_t slabsFor(std::size_t n) {
   return static_cast<std::uint32_t>(std::clamp<std::size_t>(n / 8, 8, std::size_t{1} << 23));
 }
 
-// The proposal of a cell listing `edges`: the label of its first edge when the labels of
-// its edges span at most two consecutive vertices (the window then holds both), else the
-// label of its middle edge (nearest the extreme whichever edge the ray leaves through).
-std::uint32_t proposalOf(std::span<const std::uint32_t> edges,
-                         const std::vector<std::uint32_t>& labels, std::size_t n) {
-  const std::uint32_t first = labels[edges.front()], last = labels[edges.back()];
-  if ((last + n - first) % n <= 1) return first;
-  return labels[edges[edges.size() / 2]];
+// The direction cell of w and of -w (see the file's head): the octant's sign bits and
+// whether |y| > |x|, with the slab floor(q min/max); -w flips both sign bits and keeps the
+// slab, so its cell is the other of the pair. False when w is zero or not finite.
+[[gnu::always_inline]] inline bool directionCells(double wx, double wy, std::uint32_t q,
+                                                  std::int64_t& up, std::int64_t& down) noexcept {
+  const double ax = std::fabs(wx), ay = std::fabs(wy);
+  const double hi = std::max(ax, ay), lo = std::min(ax, ay);
+  if (!(ax + ay < std::numeric_limits<double>::infinity()) || hi == 0) return false;
+  const std::uint32_t k = std::min(static_cast<std::uint32_t>(lo / hi * q), q - 1);
+  const unsigned sx = std::signbit(wx) ? 1u : 0u, sy = std::signbit(wy) ? 1u : 0u;
+  const std::int64_t pair = (((sx ^ sy) << 1 | (ay > ax ? 1u : 0u)) * std::int64_t{q} + k) * 2;
+  up = pair + sx;
+  down = pair + (sx ^ 1u);
+  return true;
+}
+
+// the direction with sign bits sx, sy, |y| > |x| when `steep`, and min/max = t
+Vec2 directionWith(unsigned sx, unsigned sy, bool steep, double t) {
+  const double ax = steep ? t : 1.0, ay = steep ? 1.0 : t;
+  return {sx ? -ax : ax, sy ? -ay : ay};
+}
+
+// The proposal of a cell whose directions' farthest vertices run from `first` to `last`
+// counter-clockwise: `first` when they are at most two (the window then holds both), else the
+// one farthest along the cell's middle direction.
+std::uint32_t proposalOf(const std::vector<Vec2>& scaled, std::uint32_t first, std::uint32_t last,
+                         Vec2 middle) {
+  if ((last + scaled.size() - first) % scaled.size() <= 1) return first;
+  return advanceAlong(scaled, middle, first);
 }
 
 }  // namespace
 
 DualPolar2D::DualPolar2D(std::span<const Vec2> ring) {
   const std::vector<Vec2> hull = convexHull(normalsAndAntipodes(ring));
-  if (hull.size() < 3) return;  // cannot happen for a polygon; propose() then says no
+  if (hull.size() < 3) return;  // cannot happen for a polygon; cells() then says no
   const ConvexPolygon dual(hull);
   dualVertices_ = dual.size();
   vertices_.assign(dual.vertices().begin(), dual.vertices().end());
-  const std::vector<std::uint32_t> labels = labelEdges(dual.vertices(), ring);
   polar_.emplace(dual, slabsFor(dual.size()));
   const std::optional<Vec2> centre = polar_->centre();
-  if (!centre) {  // no cell to aim from: cells() says no and every query searches
+  if (!centre) {  // no cell to aim from: polarCells() says no
     polar_.reset();
-    return;
+  } else {
+    centre_ = *centre;
+    for (std::uint32_t c = 0; c < polar_->cellCount(); ++c)
+      maxPerCell_ = std::max(maxPerCell_, polar_->cellEdges(c).size());
   }
-  centre_ = *centre;
+  slabs_ = slabsFor(dual.size());
+  buildDirectionCells(ring);
+}
+
+// Every direction cell, counter-clockwise from +x (octant by octant, slab by slab in the
+// order the angle grows), with one pointer going once around the ring: the vertex farthest
+// along each cell's first direction, then along its last. O(N + cells).
+void DualPolar2D::buildDirectionCells(std::span<const Vec2> ring) {
+  const std::vector<Vec2> scaled = scaledRing(ring);
   const std::size_t n = ring.size();
-  windows_.resize(polar_->cellCount());
-  starts_.resize(polar_->cellCount());
-  for (std::uint32_t c = 0; c < windows_.size(); ++c) {
-    const std::span<const std::uint32_t> edges = polar_->cellEdges(c);
-    maxPerCell_ = std::max(maxPerCell_, edges.size());
-    const std::uint32_t s = edges.empty() ? 0 : proposalOf(edges, labels, n);
-    starts_[c] = s;
-    const std::uint32_t before = prevOf(s, n), after = nextOf(s, n);
-    windows_[c] = {{ring[before], ring[s], ring[after], ring[nextOf(after, n)]}};
+  const std::uint32_t q = slabs_;
+  windows_.resize(8 * std::size_t{q});
+  starts_.resize(8 * std::size_t{q});
+  std::uint32_t at = farthestAlong(scaled, {1.0, 0.0});
+  for (std::uint32_t octant = 0; octant < 8; ++octant) {
+    unsigned code = 0;
+    while (polar::kOctantLayout[code].octant != octant) ++code;
+    const bool falling = polar::kOctantLayout[code].falling;
+    const unsigned sx = code >> 2, sy = code >> 1 & 1u;
+    const bool steep = code & 1u;
+    for (std::uint32_t j = 0; j < q; ++j) {
+      const std::uint32_t k = falling ? q - 1 - j : j;
+      const double low = static_cast<double>(k) / q, high = static_cast<double>(k + 1) / q;
+      const std::uint32_t first =
+          advanceAlong(scaled, directionWith(sx, sy, steep, falling ? high : low), at);
+      at = advanceAlong(scaled, directionWith(sx, sy, steep, falling ? low : high), first);
+      const Vec2 middle = directionWith(sx, sy, steep, (low + high) / 2);
+      const std::uint32_t s = proposalOf(scaled, first, at, middle);
+      std::int64_t up = 0, down = 0;
+      directionCells(middle.x, middle.y, q, up, down);
+      const std::uint32_t before = prevOf(s, n), after = nextOf(s, n);
+      windows_[static_cast<std::size_t>(up)] = {
+          {ring[before], ring[s], ring[after], ring[nextOf(after, n)]}};
+      starts_[static_cast<std::size_t>(up)] = s;
+    }
   }
 }
 
 bool DualPolar2D::cells(Vec2 p1, Vec2 p2, std::int64_t& up, std::int64_t& down) const noexcept {
+  if (slabs_ == 0) return false;
+  const Vec2 d = direction(p1, p2);
+  return directionCells(-d.y, d.x, slabs_, up, down);  // w = d turned a quarter
+}
+
+bool DualPolar2D::polarCells(Vec2 p1, Vec2 p2, std::int64_t& up,
+                             std::int64_t& down) const noexcept {
   if (!polar_) return false;
   const Vec2 d = direction(p1, p2);
   const double m = std::max(std::fabs(d.x), std::fabs(d.y));

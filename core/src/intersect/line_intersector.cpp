@@ -95,12 +95,14 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
   if (method_ == LineMethod::Vertices) {
     e.largest = detail::scanLargest<Vec2>(ring_, up);
     e.smallest = detail::scanLargest<Vec2>(ring_, down);
-  } else if (method_ == LineMethod::Dual && dual_->cells(p1, p2, cell, opposite)) {
-    startMax = dual_->proposal(cell);
-    startMin = dual_->proposal(opposite);
+  } else if (std::int64_t high = -1, low = -1;
+             method_ == LineMethod::Dual && dual_->cells(p1, p2, high, low)) {
+    if (trace) dual_->polarCells(p1, p2, cell, opposite);
+    startMax = dual_->proposal(high);
+    startMin = dual_->proposal(low);
     Vec2 at;
-    e.largest = largestFrom(cell, up, at, steps, bisected);
-    e.smallest = largestFrom(opposite, down, at, steps, bisected);
+    e.largest = largestFrom(high, up, at, steps, bisected);
+    e.smallest = largestFrom(low, down, at, steps, bisected);
   } else {
     cell = opposite = -1;
     e.largest = detail::bisectLargest(ring_, up);
@@ -122,22 +124,37 @@ ExtremeVertices LineIntersector::extremes(Vec2 p1, Vec2 p2, LineTrace* trace) co
   return e;
 }
 
+// Both windows confirmed (nearly every line): each extreme's sign read with no branch on the
+// line's data; a window that confirms neither vertex goes the general way (largestFrom).
 Crossing LineIntersector::classifyInCells(Vec2 p1, Vec2 p2, std::int64_t up,
                                           std::int64_t down) const noexcept {
-  detail::LineProbe high{p1, p2}, low = high.reversed();
-  Vec2 largest, smallest;
-  std::uint32_t steps = 0;
-  bool bisected = false;
-  largestFrom(up, high, largest, steps, bisected);
-  largestFrom(down, low, smallest, steps, bisected);
-  return crossingOf(orient2d(p1, p2, largest), orient2d(p1, p2, smallest));
+  const detail::RingWindow& high = dual_->window(up);
+  const detail::RingWindow& low = dual_->window(down);
+  const int kHigh = detail::largestInWindowFlat(high.v, p1, p2);
+  const int kLow = detail::largestInWindowFlat(low.v, p2, p1);
+  if ((kHigh == 0) | (kLow == 0)) [[unlikely]] {
+    detail::LineProbe probeHigh{p1, p2}, probeLow = probeHigh.reversed();
+    Vec2 largest, smallest;
+    std::uint32_t steps = 0;
+    bool bisected = false;
+    largestFrom(up, probeHigh, largest, steps, bisected);
+    largestFrom(down, probeLow, smallest, steps, bisected);
+    return crossingOf(orient2d(p1, p2, largest), orient2d(p1, p2, smallest));
+  }
+  const Vec2 largest = high.v[kHigh], smallest = low.v[kLow];
+  // orient2d(p1, p2, v) is the cross product (p1 - v) x (p2 - v)
+  return crossingOf(detail::crossSign(largest, p1, largest, p2),
+                    detail::crossSign(smallest, p1, smallest, p2));
 }
 
 Crossing LineIntersector::classify(Vec2 p1, Vec2 p2) const noexcept {
   if (method_ == LineMethod::Vertices) return detail::crossingBySides(ring_, p1, p2);
   std::int64_t up = -1, down = -1;
-  if (method_ == LineMethod::Dual && dual_->cells(p1, p2, up, down))
+  if (method_ == LineMethod::Dual && dual_->cells(p1, p2, up, down)) {
+    dual_->prefetch(up);  // both windows requested at once
+    dual_->prefetch(down);
     return classifyInCells(p1, p2, up, down);
+  }
   const ExtremeVertices e = extremes(p1, p2, nullptr);
   return crossingOf(e.largestSign, e.smallestSign);
 }

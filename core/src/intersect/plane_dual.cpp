@@ -12,28 +12,34 @@
 //     which lists per cell the faces of Q the cell's rays may leave through: for `info`, the
 //     viewer and the trace (how many faces a plane's cells list);
 //   - the direction grid, a cube map of directions with side g per cube face and no lists:
-//     each cell holds the vertex of P farthest along the cell's middle direction (the face of
-//     Q that direction's ray leaves through, found at build time by a floating-point climb
-//     from the previous cell's vertex), with where its star begins and its degree. The star
-//     of a vertex (its coordinates, then its neighbours', in one run) is all the climb reads.
+//     each cell proposes the vertex of P farthest along the cell's middle direction (the face
+//     of Q that direction's ray leaves through, found at build time by a floating-point climb
+//     from the previous cell's vertex) and holds a copy of that vertex's star record.
+// A star record (plane_dual.hpp) is all a climb reads of a vertex: the vertex and its
+// neighbours' coordinates, and where each neighbour's own record lies; one per vertex, laid
+// out on cache lines. A cell's copy (four cache lines, degree 8 at most; a vertex of higher
+// degree is found through its index instead) makes the proposal's star the one read that
+// depends on nothing but the plane, and a move one more read.
+//
 // The query. For G(v) = orient3d(q1, q2, q3, v) = (q1 - v) . N, N = (q2 - q1) x (q3 - q1), G
 // is largest at the vertex farthest along w = -N and smallest at the one farthest along N.
 // The grid cells of w and of -w are computed from w alone (no table read), and each proposes
 // its vertex: the extreme for directions near the cell's middle, a neighbour of it or close
-// for the rest of the cell, since a cell is a fraction of a vertex's cone wide on a finely
-// tessellated surface (about 4 cells per vertex).
+// for the rest of the cell, since a cell is about half a vertex's cone wide on a finely
+// tessellated surface (about 2 cells per vertex).
 //
 // Exactness and cost. The climb compares vertices exactly (graph3d.hpp) and stops only at a
 // vertex none of whose neighbours is strictly larger, a largest vertex, so the answer, from
 // the exact signs of G at the two vertices it reaches, is exact whatever the proposals. It
-// reads the proposal's star (one run of memory), and each move one more star and costs a
-// vertex's degree in comparisons. It is O(1) when the proposals are within a few moves of the
-// extremes (fine surfaces, as above); where they are not (a polyhedron whose vertex cones
-// differ in size by orders of magnitude, or with vertices of very high degree) the climb is
-// longer, O(V) at worst.
+// reads the proposal's star (the cell's copy: four cache lines requested at once), and each
+// move one more record and a vertex's degree in comparisons. It is O(1) when the proposals
+// are within a few moves of the extremes (fine surfaces, as above); where they are not (a
+// polyhedron whose vertex cones differ in size by orders of magnitude, or with vertices of
+// very high degree) the climb is longer, O(V) at worst.
 #include "intersect/plane_dual.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -148,11 +154,12 @@ Vec3 gridDirection(std::size_t c, std::uint32_t g) {
   }
 }
 
-// the grid's side for a polyhedron of n vertices: about 4 cells per vertex, so a cell is a
-// fraction of a vertex's cone of directions on a fine surface
+// The grid's side for a polyhedron of n vertices: about 2 cells per vertex, so a cell is about
+// half a vertex's cone of directions on a fine surface; at most 1024 (6 Mi cells of 256 bytes),
+// beyond which cells widen and climbs lengthen.
 std::uint32_t gridSideFor(std::size_t n) {
-  const double side = std::ceil(std::sqrt(4.0 * static_cast<double>(n) / 6.0));
-  return static_cast<std::uint32_t>(std::clamp(side, 1.0, 4096.0));
+  const double side = std::ceil(std::sqrt(2.0 * static_cast<double>(n) / 6.0));
+  return static_cast<std::uint32_t>(std::clamp(side, 1.0, 1024.0));
 }
 
 // For every triangle of the dual, the vertex of P farthest along its middle direction: a
@@ -184,22 +191,65 @@ std::vector<std::uint32_t> labelFaces(const ConvexPolyhedron& dual, const Vertex
 
 }  // namespace
 
+// Each record: a header word (vertex, degree), the star's points, then the neighbours'
+// record indices two to a word, padded to whole cache lines.
+void DualCubemap3D::buildRecords(const ConvexPolyhedron& polyhedron, const VertexGraph& graph,
+                                 std::vector<std::uint32_t>& recordOf) {
+  const std::uint32_t n = static_cast<std::uint32_t>(polyhedron.vertexCount());
+  auto words = [&](std::uint32_t v) {
+    const std::size_t degree = graph.of(v).size();
+    const std::size_t used = 1 + 3 * (degree + 1) + (degree + 1) / 2;
+    return (used + kRecordWords - 1) / kRecordWords;  // in records' units
+  };
+  recordOf.resize(n);
+  std::size_t total = 0;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    recordOf[v] = static_cast<std::uint32_t>(total);
+    total += words(v);
+  }
+  records_.assign(total * kRecordWords, 0);
+  const auto points = polyhedron.vertices();
+  for (std::uint32_t v = 0; v < n; ++v) {
+    std::uint64_t* w = records_.data() + std::size_t{recordOf[v]} * kRecordWords;
+    const auto around = graph.of(v);
+    w[0] = v | std::uint64_t{static_cast<std::uint32_t>(around.size())} << 32;
+    auto put = [&](std::size_t k, Vec3 p) {
+      w[1 + 3 * k] = std::bit_cast<std::uint64_t>(p.x);
+      w[2 + 3 * k] = std::bit_cast<std::uint64_t>(p.y);
+      w[3 + 3 * k] = std::bit_cast<std::uint64_t>(p.z);
+    };
+    put(0, points[v]);
+    std::uint64_t* links = w + 1 + 3 * (around.size() + 1);
+    for (std::size_t k = 0; k < around.size(); ++k) {
+      put(k + 1, points[around[k]]);
+      links[k / 2] |= std::uint64_t{recordOf[around[k]]} << (k % 2 ? 32 : 0);
+    }
+  }
+}
+
 DualCubemap3D::DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGraph& graph) {
   const std::vector<Vec3> scaled = scaledVertices(polyhedron.vertices());
+  std::vector<std::uint32_t> recordOf;
+  buildRecords(polyhedron, graph, recordOf);
   // the grid: each cell proposes the vertex farthest along its middle direction, climbing
   // from the previous cell's proposal (neighbouring cells, neighbouring vertices)
   side_ = gridSideFor(scaled.size());
-  grid_.resize(6 * std::size_t{side_} * side_);
+  const std::size_t cells = 6 * std::size_t{side_} * side_;
+  grid_.assign(cells * kCellWords, 0);
   std::uint32_t at = 0;
-  for (std::size_t c = 0; c < grid_.size(); ++c) {
+  for (std::size_t c = 0; c < cells; ++c) {
     at = climbAlong(graph, scaled, gridDirection(c, side_), at);
-    grid_[c] = starOf(at, graph);
-  }
-  stars_.reserve(polyhedron.vertexCount() + graph.neighbours.size());
-  const auto v = polyhedron.vertices();
-  for (std::uint32_t k = 0; k < polyhedron.vertexCount(); ++k) {
-    stars_.push_back(v[k]);
-    for (const std::uint32_t n : graph.of(k)) stars_.push_back(v[n]);
+    std::uint64_t* cell = grid_.data() + c * kCellWords;
+    const std::uint64_t* from = records_.data() + std::size_t{recordOf[at]} * kRecordWords;
+    const std::size_t words =
+        (at + 1 < recordOf.size() ? recordOf[at + 1] * kRecordWords : records_.size()) -
+        recordOf[at] * kRecordWords;
+    if (words <= kCellWords) {
+      std::copy(from, from + words, cell);
+    } else {
+      cell[0] = at | kElsewhere << 32;
+      cell[1] = recordOf[at];
+    }
   }
   const std::vector<Vec3> normals = unitNormals(polyhedron);
   try {
@@ -237,7 +287,7 @@ bool DualCubemap3D::listed(Vec3 q1, Vec3 q2, Vec3 q3, std::uint32_t& largest,
 }
 
 std::size_t DualCubemap3D::bytes() const noexcept {
-  return (cube_ ? cube_->stats().bytes : 0) + bytesOf(grid_) + bytesOf(stars_) +
+  return (cube_ ? cube_->stats().bytes : 0) + bytesOf(grid_) + bytesOf(records_) +
          labels_.size() * sizeof(std::uint32_t);
 }
 

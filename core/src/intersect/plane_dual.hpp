@@ -2,6 +2,7 @@
 // vertices in O(1). The argument heads plane_dual.cpp.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -15,12 +16,24 @@
 
 namespace convexloc::detail {
 
-// A cell of the direction grid: the vertex it proposes, where that vertex's star begins in
-// stars(), and its degree.
-struct GridCell {
-  std::uint32_t vertex = 0;
-  std::uint32_t star = 0;
-  std::uint32_t degree = 0;
+// A view of one vertex's star record: the vertex and its degree, its coordinates and its
+// neighbours' (in the graph's order), then where each neighbour's own record begins, so a
+// climb's move reads the next record and nothing else. The vertex, its degree and its first
+// neighbour (all the first comparison needs) lie in the record's first cache line.
+struct StarRecord {
+  const std::uint64_t* word;  // the record's first word
+  std::uint32_t vertex() const noexcept { return static_cast<std::uint32_t>(word[0]); }
+  std::uint32_t degree() const noexcept { return static_cast<std::uint32_t>(word[0] >> 32); }
+  // the star's point k: the vertex (k = 0), then its neighbours (1 <= k <= degree)
+  Vec3 point(std::uint32_t k) const noexcept {
+    const std::uint64_t* p = word + 1 + 3 * k;
+    return {std::bit_cast<double>(p[0]), std::bit_cast<double>(p[1]), std::bit_cast<double>(p[2])};
+  }
+  // the record of neighbour k (1 <= k <= degree), as an index for DualCubemap3D::record()
+  std::uint32_t link(std::uint32_t k) const noexcept {
+    const std::uint64_t w = word[1 + 3 * (degree() + 1) + (k - 1) / 2];
+    return static_cast<std::uint32_t>(k % 2 ? w : w >> 32);
+  }
 };
 
 class DualCubemap3D {
@@ -31,19 +44,23 @@ class DualCubemap3D {
   // The grid cells of the plane's w (G largest along it) and of -w; false when w has none
   // (the three points are collinear in doubles).
   bool cells(Vec3 q1, Vec3 q2, Vec3 q3, std::int64_t& up, std::int64_t& down) const noexcept;
-  const GridCell& cell(std::int64_t c) const noexcept { return grid_[static_cast<std::size_t>(c)]; }
-  // vertex v's star: v, then its neighbours in the graph's order (degree + 1 points)
-  GridCell starOf(std::uint32_t v, const VertexGraph& graph) const noexcept {
-    return {v, graph.offsets[v] + v, graph.offsets[v + 1] - graph.offsets[v]};
+  // the star record grid cell c proposes: the copy the cell holds, or where it lies in the
+  // records when it is too large to copy
+  const std::uint64_t* cell(std::int64_t c) const noexcept {
+    const std::uint64_t* w = grid_.data() + static_cast<std::size_t>(c) * kCellWords;
+    if (w[0] >> 32 != kElsewhere) return w;
+    return records_.data() + w[1] * kRecordWords;
   }
-  const Vec3* star(const GridCell& c) const noexcept { return stars_.data() + c.star; }
-  // start loading cell c, or the star a cell proposes
-  void prefetch(std::int64_t c) const noexcept { __builtin_prefetch(grid_.data() + c); }
-  void prefetchStar(const GridCell& c) const noexcept {
-    const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(stars_.data() + c.star);
-    const std::uintptr_t end = first + (c.degree + 1) * sizeof(Vec3);
-    for (std::uintptr_t line = first & ~std::uintptr_t{63}; line < end; line += 64)
-      __builtin_prefetch(reinterpret_cast<const void*>(line));
+  // the record where a climb starts when no cell proposes (vertex 0's)
+  const std::uint64_t* first() const noexcept { return records_.data(); }
+  // record r, as a link gives it
+  const std::uint64_t* record(std::uint32_t r) const noexcept {
+    return records_.data() + std::size_t{r} * kRecordWords;
+  }
+  // start loading cell c
+  void prefetch(std::int64_t c) const noexcept {
+    const std::uint64_t* p = grid_.data() + static_cast<std::size_t>(c) * kCellWords;
+    for (std::size_t line = 0; line < kCellWords; line += 8) __builtin_prefetch(p + line);
   }
   // the unit direction w along which the plane's G grows (zero for collinear points)
   static Vec3 aim(Vec3 q1, Vec3 q2, Vec3 q3) noexcept;
@@ -62,9 +79,17 @@ class DualCubemap3D {
   std::size_t bytes() const noexcept;
 
  private:
+  // records are laid out in units of one cache line (8 words), each from a line's start
+  static constexpr std::size_t kRecordWords = 8;
+  // a grid cell's words (four cache lines): a copy of its proposal's record where that fits
+  // (degree 8 at most), else kElsewhere in the degree's place and the record's index
+  static constexpr std::size_t kCellWords = 32;
+  static constexpr std::uint64_t kElsewhere = 0xffffffff;
+  void buildRecords(const ConvexPolyhedron& polyhedron, const VertexGraph& graph,
+                    std::vector<std::uint32_t>& recordOf);
   std::optional<CubemapLocator> cube_;
-  Table<GridCell> grid_;  // 6 side^2 cells, cube face by cube face, row by row
-  Table<Vec3> stars_;     // every vertex's star, in vertex order
+  Table<std::uint64_t> grid_;     // 6 side^2 cells, cube face by cube face, row by row
+  Table<std::uint64_t> records_;  // every vertex's star record, in vertex order
   std::uint32_t side_ = 1;
   std::size_t dualVertices_ = 0;
   std::size_t dualFaces_ = 0;

@@ -69,8 +69,8 @@ PlaneIntersector::PlaneIntersector(const ConvexPolyhedron& polyhedron, PlaneMeth
       faces_(polyhedron.faceCount()) {
   const auto t0 = Clock::now();
   if (method_ == PlaneMethod::Dual) {
-    graph_ = std::make_unique<detail::VertexGraph>(polyhedron);
-    dual_ = std::make_unique<detail::DualCubemap3D>(polyhedron, *graph_);
+    const detail::VertexGraph graph(polyhedron);  // the records keep all a climb needs of it
+    dual_ = std::make_unique<detail::DualCubemap3D>(polyhedron, graph);
   }
   buildSeconds_ = secondsSince(t0);
 }
@@ -79,28 +79,29 @@ PlaneIntersector::~PlaneIntersector() = default;
 PlaneIntersector::PlaneIntersector(PlaneIntersector&&) noexcept = default;
 PlaneIntersector& PlaneIntersector::operator=(PlaneIntersector&&) noexcept = default;
 
-std::uint32_t PlaneIntersector::largestFrom(detail::GridCell from, detail::PlaneProbe& probe,
+std::uint32_t PlaneIntersector::largestFrom(const std::uint64_t* record, detail::PlaneProbe& probe,
                                             Vec3& at, std::uint32_t& steps) const noexcept {
   for (;;) {
-    const Vec3* star = dual_->star(from);
+    const detail::StarRecord star{record};
+    const std::uint32_t degree = star.degree();
+    const Vec3 centre = star.point(0);
     std::uint32_t higher = 0;
-    for (std::uint32_t k = 1; k <= from.degree; ++k)
-      if (probe.rise(star[0], star[k]) > 0) {
+    for (std::uint32_t k = 1; k <= degree; ++k)
+      if (probe.rise(centre, star.point(k)) > 0) {
         higher = k;
         break;
       }
     if (higher == 0) {  // no neighbour is strictly larger: a largest vertex
-      at = star[0];
-      return from.vertex;
+      at = centre;
+      return star.vertex();
     }
-    // the star of vertex v begins at offsets[v] + v, so v's neighbour list at star - v
-    from = dual_->starOf(graph_->neighbours[from.star - from.vertex + higher - 1], *graph_);
+    record = dual_->record(star.link(higher));
     ++steps;
   }
 }
 
-Crossing PlaneIntersector::classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const detail::GridCell& up,
-                                        const detail::GridCell& down) const noexcept {
+Crossing PlaneIntersector::classifyFrom(Vec3 q1, Vec3 q2, Vec3 q3, const std::uint64_t* up,
+                                        const std::uint64_t* down) const noexcept {
   detail::PlaneProbe high{q1, q2, q3}, low = high.swapped();
   Vec3 largest, smallest;
   std::uint32_t steps = 0;
@@ -120,11 +121,10 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
   } else {
     std::int64_t cellUp = -1, cellDown = -1;
     t.proposed = dual_->cells(q1, q2, q3, cellUp, cellDown);
-    const detail::GridCell first = dual_->starOf(0, *graph_);  // where no cell proposes
-    const detail::GridCell high = t.proposed ? dual_->cell(cellUp) : first;
-    const detail::GridCell low = t.proposed ? dual_->cell(cellDown) : first;
-    t.startMax = high.vertex;
-    t.startMin = low.vertex;
+    const std::uint64_t* high = t.proposed ? dual_->cell(cellUp) : dual_->first();
+    const std::uint64_t* low = t.proposed ? dual_->cell(cellDown) : dual_->first();
+    t.startMax = detail::StarRecord{high}.vertex();
+    t.startMin = detail::StarRecord{low}.vertex();
     if (tracing) dual_->listed(q1, q2, q3, t.listedMax, t.listedMin);
     Vec3 at;
     e.largest = largestFrom(high, up, at, t.climbSteps);
@@ -141,15 +141,17 @@ PlaneTrace PlaneIntersector::run(Vec3 q1, Vec3 q2, Vec3 q3, bool tracing) const 
 Crossing PlaneIntersector::classify(Vec3 q1, Vec3 q2, Vec3 q3) const noexcept {
   if (method_ == PlaneMethod::Vertices) return crossingBySides(vertices_, q1, q2, q3);
   std::int64_t up = -1, down = -1;
-  if (dual_->cells(q1, q2, q3, up, down))
+  if (dual_->cells(q1, q2, q3, up, down)) {
+    dual_->prefetch(up);  // every line of both cells requested at once
+    dual_->prefetch(down);
     return classifyFrom(q1, q2, q3, dual_->cell(up), dual_->cell(down));
+  }
   return run(q1, q2, q3, false).crossing;
 }
 
-// The dual batch in blocks of kBatchBlock planes, three blocks in flight: the grid cells of
-// one block are found and prefetched, the stars the previous block's cells propose are
-// prefetched, and the block before that climbs, so each block's loads overlap two blocks'
-// work. Every plane gets what classify(q1, q2, q3) gives it.
+// The dual batch in blocks of kBatchBlock planes: the grid cells of the next block are found
+// and their records prefetched before this block climbs, so the loads of one block overlap
+// the exact work of the other. Every plane gets what classify(q1, q2, q3) gives it.
 void PlaneIntersector::classify(std::span<const Vec3> planes,
                                 std::span<Crossing> out) const noexcept {
   const std::size_t n = std::min(planes.size() / 3, out.size());
@@ -158,8 +160,7 @@ void PlaneIntersector::classify(std::span<const Vec3> planes,
       out[i] = classify(planes[3 * i], planes[3 * i + 1], planes[3 * i + 2]);
     return;
   }
-  std::int64_t cells[3][kBatchBlock][2];         // per block: each plane's up and down cells
-  detail::GridCell starts[3][kBatchBlock][2]{};  // and the cells' proposals
+  std::int64_t cells[2][kBatchBlock][2];  // per block: each plane's up and down cells
   auto aim = [&](std::size_t first, std::int64_t(*c)[2]) {
     for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
       const Vec3* q = planes.data() + 3 * (first + j);
@@ -171,26 +172,15 @@ void PlaneIntersector::classify(std::span<const Vec3> planes,
       dual_->prefetch(c[j][1]);
     }
   };
-  auto load = [&](std::size_t first, const std::int64_t(*c)[2], detail::GridCell(*s)[2]) {
-    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
-      if (c[j][0] < 0) continue;
-      for (int k = 0; k < 2; ++k) {
-        s[j][k] = dual_->cell(c[j][k]);
-        dual_->prefetchStar(s[j][k]);
-      }
-    }
-  };
   aim(0, cells[0]);
-  aim(kBatchBlock, cells[1]);
-  load(0, cells[0], starts[0]);
-  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b = (b + 1) % 3) {
-    aim(first + 2 * kBatchBlock, cells[(b + 2) % 3]);
-    load(first + kBatchBlock, cells[(b + 1) % 3], starts[(b + 1) % 3]);
+  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b ^= 1) {
+    aim(first + kBatchBlock, cells[b ^ 1]);
     for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
       const Vec3* q = planes.data() + 3 * (first + j);
-      out[first + j] = cells[b][j][0] < 0
+      const std::int64_t* c = cells[b][j];
+      out[first + j] = c[0] < 0
                            ? classify(q[0], q[1], q[2])
-                           : classifyFrom(q[0], q[1], q[2], starts[b][j][0], starts[b][j][1]);
+                           : classifyFrom(q[0], q[1], q[2], dual_->cell(c[0]), dual_->cell(c[1]));
     }
   }
 }
@@ -209,8 +199,7 @@ PlaneStats PlaneIntersector::stats() const {
     s.dualVertices = dual_->dualVertices();
     s.dualFaces = dual_->dualFaces();
     s.cells = dual_->locator() ? dual_->locator()->stats().cells : 0;
-    s.bytes +=
-        dual_->bytes() + detail::bytesOf(graph_->offsets) + detail::bytesOf(graph_->neighbours);
+    s.bytes += dual_->bytes();
   }
   return s;
 }

@@ -13,6 +13,7 @@
 // starts from.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -71,6 +72,28 @@ inline bool climbToLargest(std::span<const Vec2> ring, LineProbe& line, std::uin
 inline int largestInWindow(const Vec2 (&v)[4], LineProbe& line) noexcept {
   if (line.rise(v[1], v[2]) > 0) return line.rise(v[2], v[3]) > 0 ? 0 : 2;
   return line.rise(v[1], v[0]) > 0 ? 0 : 1;
+}
+
+// crossDiff2d(a, b, c, d), its sign read without a branch where the filter decides it (the
+// same filter; where it does not decide, crossDiff2d decides as ever)
+inline int crossSign(Vec2 a, Vec2 b, Vec2 c, Vec2 d) noexcept {
+  const double left = (b.x - a.x) * (d.y - c.y), right = (b.y - a.y) * (d.x - c.x);
+  const double det = left - right, permanent = std::fabs(left) + std::fabs(right);
+  const bool sure = (permanent >= detail::kTinyPermanent) &
+                    (std::fabs(det) > detail::kCcwBound * permanent + detail::kUnderflowSlack);
+  if (sure) [[likely]]
+    return static_cast<int>(det > 0) - static_cast<int>(det < 0);
+  return crossDiff2d(a, b, c, d);
+}
+
+// largestInWindow's answer for the line p1 -> p2, every comparison made and the choice read
+// without a branch (a random line's choice is a coin toss a predictor would miss)
+inline int largestInWindowFlat(const Vec2 (&v)[4], Vec2 p1, Vec2 p2) noexcept {
+  const int r12 = crossSign(p1, p2, v[1], v[2]), r23 = crossSign(p1, p2, v[2], v[3]);
+  const int r10 = crossSign(p1, p2, v[1], v[0]);
+  const int up = static_cast<int>(r12 > 0);
+  const int confirmed = up ? static_cast<int>(r23 <= 0) : static_cast<int>(r10 <= 0);
+  return confirmed * (1 + up);
 }
 
 // a vertex where f is largest, by bisection over the ring: O(log N) exact comparisons
