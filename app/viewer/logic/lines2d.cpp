@@ -49,10 +49,10 @@ void describeCell(const LineProbe2D& line, const PolarLocator* dual, std::vector
   out.push_back({TraceLine::Heading, "dual cell " + std::to_string(t.cell) + " (the point b)"});
   out.push_back(
       {TraceLine::Step, "lists dual edge" + std::string(listed.size() == 1 ? " " : "s ") + edges});
-  out.push_back({TraceLine::Step, "proposes vertex " + std::to_string(t.startMax) +
-                                      " (largest f); cell " + std::to_string(t.opposite) +
-                                      " of -b proposes " + std::to_string(t.startMin) +
-                                      " (smallest f)"});
+  out.push_back(
+      {TraceLine::Step, "its direction cell proposes vertex " + std::to_string(t.startMax) +
+                            " (largest f); that of -b (cell " + std::to_string(t.opposite) +
+                            ") vertex " + std::to_string(t.startMin) + " (smallest f)"});
   std::string climb = std::to_string(t.climbSteps) + " climb move" +
                       (t.climbSteps == 1 ? "" : "s") + " to the extremes";
   if (t.bisected) climb += ", then bisection";

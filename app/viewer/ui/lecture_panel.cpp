@@ -149,7 +149,7 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
   ImGui::SetWindowFontScale(1.0f);
   // a caption the scene shows in its own box (--caption) is not written twice
   if (!s.caption.empty() && model.settings.caption.empty())
-    ImGui::TextWrapped("%s", s.caption.c_str());
+    textAtSpaces(s.caption, {}, w - 2.0f * ImGui::GetStyle().WindowPadding.x);
   ImGui::PopTextWrapPos();
   const float band = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + 8.0f;
   ImGui::End();

@@ -203,10 +203,11 @@ bool inspectable3D(Model& model) {
          s.probe().has_value();
 }
 
-constexpr const char* kHints3D[] = {"drag: orbit, right drag: pan, wheel: zoom",
-                                    "click the plane: place a point; Shift-click: pin a cell",
-                                    "F fit, H hide panels, 1-3 method, Space spray",
-                                    "L planes mode (sliders: Method)", nullptr};
+constexpr const char* kHints3D[] = {
+    "drag: orbit, right drag: pan, wheel: zoom",
+    "click the slicing plane: place a point; Shift-click: pin a cell",
+    "F fit, H hide panels, 1-3 method, Space spray",
+    "L planes mode (sliders in Method; clicks place nothing)", nullptr};
 
 void legend3D(Model& model) {
   drawLegend(legendOf(model));
