@@ -69,10 +69,6 @@ void help(const char* text) {
   }
 }
 
-std::string percent(std::size_t part, std::size_t whole) {
-  return percentText(part, whole);
-}
-
 void statRow(const char* key, const std::string& value) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();

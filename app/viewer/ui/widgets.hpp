@@ -32,8 +32,6 @@ void swatchBox(Rgba fill, Rgba edge);
 void swatchLine(Rgba c, bool dashed, float width);
 // a "(?)" with a tooltip
 void help(const char* text);
-// "41.2%"
-std::string percent(std::size_t part, std::size_t whole);
 // a two-column row of a statistics table
 void statRow(const char* key, const std::string& value);
 // a mode's checkbox showing `on`, with its tooltip; the new state when clicked

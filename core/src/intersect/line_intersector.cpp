@@ -16,6 +16,7 @@
 #include "convexloc/predicates.hpp"
 #include "convexloc/table.hpp"
 #include "convexloc/timing.hpp"
+#include "intersect/blocks.hpp"
 #include "intersect/dual_polar.hpp"
 #include "intersect/hits2d.hpp"
 #include "intersect/ring2d.hpp"
@@ -27,8 +28,6 @@ namespace {
 
 // moves a climb from the dual's proposal may take before bisection takes over
 constexpr std::uint32_t kClimbMoves = 8;
-// lines per block of the dual batch (its prefetch distance)
-constexpr std::size_t kBatchBlock = 16;
 
 // one method: its enum value, what --method takes, the cost of one query
 struct LineMethodInfo {
@@ -159,9 +158,9 @@ Crossing LineIntersector::classify(Vec2 p1, Vec2 p2) const noexcept {
   return crossingOf(e.largestSign, e.smallestSign);
 }
 
-// The dual batch in blocks of kBatchBlock lines: the cells of the next block are found and
-// their windows prefetched before this block is confirmed, so the loads of one block overlap
-// the exact work of the other. Every line gets what classify(p1, p2) gives it.
+// The dual batch through detail::inBlocks (blocks.hpp): the cells of the next block are found
+// and their windows prefetched while this block is confirmed. Every line gets what
+// classify(p1, p2) gives it.
 void LineIntersector::classify(std::span<const Vec2> lines,
                                std::span<Crossing> out) const noexcept {
   const std::size_t n = std::min(lines.size() / 2, out.size());
@@ -169,26 +168,18 @@ void LineIntersector::classify(std::span<const Vec2> lines,
     for (std::size_t i = 0; i < n; ++i) out[i] = classify(lines[2 * i], lines[2 * i + 1]);
     return;
   }
-  std::int64_t cells[2][kBatchBlock][2];  // per block: each line's up and down cells
-  auto aim = [&](std::size_t first, std::int64_t(*c)[2]) {
-    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
-      if (!dual_->cells(lines[2 * (first + j)], lines[2 * (first + j) + 1], c[j][0], c[j][1])) {
-        c[j][0] = -1;
-        continue;
-      }
-      dual_->prefetch(c[j][0]);
-      dual_->prefetch(c[j][1]);
-    }
-  };
-  aim(0, cells[0]);
-  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b ^= 1) {
-    aim(first + kBatchBlock, cells[b ^ 1]);
-    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
-      const Vec2 p1 = lines[2 * (first + j)], p2 = lines[2 * (first + j) + 1];
-      out[first + j] = cells[b][j][0] < 0 ? classify(p1, p2)
-                                          : classifyInCells(p1, p2, cells[b][j][0], cells[b][j][1]);
-    }
-  }
+  detail::inBlocks(
+      n,
+      [&](std::size_t i, std::int64_t& up, std::int64_t& down) {
+        if (!dual_->cells(lines[2 * i], lines[2 * i + 1], up, down)) return false;
+        dual_->prefetch(up);
+        dual_->prefetch(down);
+        return true;
+      },
+      [&](std::size_t i, std::int64_t up, std::int64_t down) {
+        const Vec2 p1 = lines[2 * i], p2 = lines[2 * i + 1];
+        out[i] = up < 0 ? classify(p1, p2) : classifyInCells(p1, p2, up, down);
+      });
 }
 
 LineHit LineIntersector::intersect(Vec2 p1, Vec2 p2) const noexcept {

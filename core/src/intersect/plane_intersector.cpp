@@ -16,6 +16,7 @@
 #include "convexloc/predicates.hpp"
 #include "convexloc/table.hpp"
 #include "convexloc/timing.hpp"
+#include "intersect/blocks.hpp"
 #include "intersect/graph3d.hpp"
 #include "intersect/plane_dual.hpp"
 #include "intersect/scan.hpp"
@@ -23,9 +24,6 @@
 namespace convexloc {
 
 namespace {
-
-// planes per block of the dual batch
-constexpr std::size_t kBatchBlock = 16;
 
 // the crossing from every vertex's side: O(V)
 Crossing crossingBySides(std::span<const Vec3> vertices, Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
@@ -149,9 +147,9 @@ Crossing PlaneIntersector::classify(Vec3 q1, Vec3 q2, Vec3 q3) const noexcept {
   return run(q1, q2, q3, false).crossing;
 }
 
-// The dual batch in blocks of kBatchBlock planes: the grid cells of the next block are found
-// and their records prefetched before this block climbs, so the loads of one block overlap
-// the exact work of the other. Every plane gets what classify(q1, q2, q3) gives it.
+// The dual batch through detail::inBlocks (blocks.hpp): the grid cells of the next block are
+// found and their records prefetched while this block climbs. Every plane gets what
+// classify(q1, q2, q3) gives it.
 void PlaneIntersector::classify(std::span<const Vec3> planes,
                                 std::span<Crossing> out) const noexcept {
   const std::size_t n = std::min(planes.size() / 3, out.size());
@@ -160,29 +158,20 @@ void PlaneIntersector::classify(std::span<const Vec3> planes,
       out[i] = classify(planes[3 * i], planes[3 * i + 1], planes[3 * i + 2]);
     return;
   }
-  std::int64_t cells[2][kBatchBlock][2];  // per block: each plane's up and down cells
-  auto aim = [&](std::size_t first, std::int64_t(*c)[2]) {
-    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
-      const Vec3* q = planes.data() + 3 * (first + j);
-      if (!dual_->cells(q[0], q[1], q[2], c[j][0], c[j][1])) {
-        c[j][0] = -1;
-        continue;
-      }
-      dual_->prefetch(c[j][0]);
-      dual_->prefetch(c[j][1]);
-    }
-  };
-  aim(0, cells[0]);
-  for (std::size_t first = 0, b = 0; first < n; first += kBatchBlock, b ^= 1) {
-    aim(first + kBatchBlock, cells[b ^ 1]);
-    for (std::size_t j = 0; j < kBatchBlock && first + j < n; ++j) {
-      const Vec3* q = planes.data() + 3 * (first + j);
-      const std::int64_t* c = cells[b][j];
-      out[first + j] = c[0] < 0
-                           ? classify(q[0], q[1], q[2])
-                           : classifyFrom(q[0], q[1], q[2], dual_->cell(c[0]), dual_->cell(c[1]));
-    }
-  }
+  detail::inBlocks(
+      n,
+      [&](std::size_t i, std::int64_t& up, std::int64_t& down) {
+        const Vec3* q = planes.data() + 3 * i;
+        if (!dual_->cells(q[0], q[1], q[2], up, down)) return false;
+        dual_->prefetch(up);
+        dual_->prefetch(down);
+        return true;
+      },
+      [&](std::size_t i, std::int64_t up, std::int64_t down) {
+        const Vec3* q = planes.data() + 3 * i;
+        out[i] = up < 0 ? classify(q[0], q[1], q[2])
+                        : classifyFrom(q[0], q[1], q[2], dual_->cell(up), dual_->cell(down));
+      });
 }
 
 PlaneTrace PlaneIntersector::trace(Vec3 q1, Vec3 q2, Vec3 q3) const {
