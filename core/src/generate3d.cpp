@@ -9,6 +9,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/prisms.hpp"
 
 namespace convexloc {
 namespace {
@@ -194,6 +195,8 @@ std::string_view toString(PolyhedronKind k) {
     case PolyhedronKind::Offset: return "offset";
     case PolyhedronKind::TinyFaces: return "tiny-faces";
     case PolyhedronKind::Coplanar: return "coplanar";
+    case PolyhedronKind::Cylinder: return "cylinder";
+    case PolyhedronKind::Prism: return "prism";
   }
   return "?";
 }
@@ -338,6 +341,8 @@ MeshData generatePolyhedron(PolyhedronKind kind, std::size_t n, std::uint64_t se
       const std::size_t counts[3] = {k, k, k};
       return gridBox({-1, -1, -1}, {1, 1, 1}, counts, true);
     }
+    case PolyhedronKind::Cylinder: return detail::cylinderMesh(std::max<std::size_t>(n / 4 + 1, 3));
+    case PolyhedronKind::Prism: return detail::latticePrismMesh(std::max<std::size_t>(n / 4, 8));
   }
   throw UsageError("unknown polyhedron kind");
 }

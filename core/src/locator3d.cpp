@@ -7,10 +7,25 @@ namespace convexloc {
 
 detail::SurfaceCopy::SurfaceCopy(const ConvexPolyhedron& polyhedron)
     : vertices(polyhedron.vertices().begin(), polyhedron.vertices().end()),
-      faces(polyhedron.triangles().begin(), polyhedron.triangles().end()) {}
+      faces(polyhedron.planes().begin(), polyhedron.planes().end()),
+      triangles(polyhedron.faceCount()) {}
 
 std::size_t detail::SurfaceCopy::bytes() const noexcept {
   return bytesOf(vertices) + bytesOf(faces);
+}
+
+detail::WalkMesh::WalkMesh(const ConvexPolyhedron& polyhedron)
+    : neighbours(polyhedron.neighbours().begin(), polyhedron.neighbours().end()) {
+  if (polyhedron.planeCount() == polyhedron.faceCount()) return;  // plane face t is triangle t
+  triangles.assign(polyhedron.triangles().begin(), polyhedron.triangles().end());
+  planeOf.assign(polyhedron.planeOf().begin(), polyhedron.planeOf().end());
+  firstTriangle.reserve(polyhedron.planeCount());
+  for (std::size_t f = 0; f < polyhedron.planeCount(); ++f)
+    firstTriangle.push_back(polyhedron.planeTriangles(f)[0]);
+}
+
+std::size_t detail::WalkMesh::bytes() const noexcept {
+  return bytesOf(triangles) + bytesOf(neighbours) + bytesOf(planeOf) + bytesOf(firstTriangle);
 }
 
 namespace {

@@ -55,6 +55,7 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
   check.findTetrahedron();
   check.flipSlivers();
   check.checkConvexEdges();
+  check.mergePlanes();
   check.findCentre();
   check.checkWindsOnce();
   check.findBounds();

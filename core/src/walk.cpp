@@ -18,9 +18,10 @@ namespace convexloc {
 WalkLocator::WalkLocator(const ConvexPolyhedron& polyhedron) {
   auto t0 = Clock::now();
   surface_ = detail::SurfaceCopy(polyhedron);
-  neighbours_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
+  mesh_ = detail::WalkMesh(polyhedron);
   centre_ = polyhedron.centre();
-  const std::size_t n = surface_.faces.size();
+  const std::vector<ConvexPolyhedron::Triangle>& triangles = mesh_.trianglesOf(surface_);
+  const std::size_t n = triangles.size();
   maxVisits_ =
       static_cast<std::uint32_t>(std::min<double>(64 + 8 * std::sqrt(static_cast<double>(n)), 1e9));
   if (centre_) {
@@ -33,7 +34,7 @@ WalkLocator::WalkLocator(const ConvexPolyhedron& polyhedron) {
     for (std::size_t i = 0; i < k; ++i) {
       const auto f = static_cast<std::uint32_t>(i * n / k);
       double d[3] = {0, 0, 0};
-      for (std::uint32_t w : surface_.faces[f]) {
+      for (std::uint32_t w : triangles[f]) {
         d[0] += (v[w].x - c.x) / 3;
         d[1] += (v[w].y - c.y) / 3;
         d[2] += (v[w].z - c.z) / 3;
@@ -75,7 +76,7 @@ Location WalkLocator::run(Vec3 p, Sink& sink) const noexcept {
       }
     }
   }
-  return detail::walkAndTest(surface_, neighbours_, c, p, start, maxVisits_, sink, testAll);
+  return detail::walkAndTest(surface_, mesh_, c, p, start, maxVisits_, sink, testAll);
 }
 
 Location WalkLocator::locate(Vec3 p) const noexcept {
@@ -94,7 +95,7 @@ Trace3D WalkLocator::trace(Vec3 p) const {
 Stats3D WalkLocator::stats() const {
   Stats3D s =
       detail::baseStats(surface_,
-                        sizeof(*this) + detail::bytesOf(neighbours_) +
+                        sizeof(*this) + mesh_.bytes() +
                             detail::bytesOf(startFaces_) + detail::bytesOf(startDirections_),
                         buildSeconds_);
   s.centred = centre_.has_value();

@@ -125,6 +125,8 @@ inline const std::vector<ShapeCase>& matrix() {
       {K::Offset, 320, 60000, 40000},        {K::TinyFaces, 200, 60000, 40000},
       {K::Coplanar, 300, 60000, 40000},      {K::Geodesic, 5120, 3000, 3000},
       {K::TinyFaces, 6000, 3000, 3000},      {K::ThinSlab, 5000, 3000, 3000},
+      {K::Cylinder, 256, 60000, 40000},      {K::Cylinder, 16380, 3000, 3000},
+      {K::Prism, 1000, 20000, 20000},        {K::Prism, 8000, 3000, 3000},
   };
   return cases;
 }

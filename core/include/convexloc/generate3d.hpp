@@ -33,6 +33,11 @@ enum class PolyhedronKind : std::uint8_t {
   TinyFaces,      // [-1, 1]^3 with its (1, 1, 1) corner rounded by a cap of radius 1e-4 made of
                   // about n tiny triangles: face areas differ by more than 10^10
   Coplanar,       // [-1, 1]^3 with each face split into a k x k grid of squares (about n faces)
+  Cylinder,       // a cylinder over the regular polygon with n / 4 + 1 sides, z in [-1, 1], its
+                  // quads split in two and its caps fanned from one corner as CAD programs
+                  // export them (n triangles, 4 + n / 4 plane faces)
+  Prism,          // a tilted prism over a convex lattice polygon of about n / 4 corners,
+                  // integer coordinates, triangulated like the cylinder (about n triangles)
 };
 
 std::string_view toString(PolyhedronKind k);
@@ -42,7 +47,7 @@ inline constexpr PolyhedronKind kAllPolyhedronKinds[] = {
     PolyhedronKind::Dodecahedron, PolyhedronKind::Icosahedron, PolyhedronKind::Geodesic,
     PolyhedronKind::SphereHull,   PolyhedronKind::CubeHull,    PolyhedronKind::EllipsoidHull,
     PolyhedronKind::ThinSlab,     PolyhedronKind::Offset,      PolyhedronKind::TinyFaces,
-    PolyhedronKind::Coplanar};
+    PolyhedronKind::Coplanar,     PolyhedronKind::Cylinder,    PolyhedronKind::Prism};
 
 // A mesh of that kind with about `n` triangles (see each kind), faces counter-clockwise seen
 // from outside; ConvexPolyhedron accepts every one. Throws UsageError for n < 4 or

@@ -6,7 +6,8 @@
 //   trace(p)             the steps taken: cube face and cell, walk path, plane tests, result
 //   stats()              size and shape of the subdivision
 //   cells()              the subdivision as drawable geometry, with the faces each cell holds
-// "Face" below means a triangle of ConvexPolyhedron::triangles(). A locator keeps its own copy
+// "Face" below means a plane face of ConvexPolyhedron::planes() (adjacent coplanar triangles
+// merged; where none are coplanar, face t is triangle t); a walk crosses triangles. A locator keeps its own copy
 // of what it needs; the polyhedron may go away after the build. A point with an infinite or
 // NaN coordinate is reported Outside.
 #pragma once
@@ -44,6 +45,14 @@ struct WalkTest {
   int sign = 0;
 };
 
+// one bisection step in a zone: sign of orient3d(centre, a, b, p) for the zone's edge k from
+// vertex a to b; the sign of the zone's faces before that edge means p's direction lies before it
+struct ZoneTest {
+  std::uint32_t edge = 0;
+  std::uint32_t a = 0, b = 0;
+  int sign = 0;
+};
+
 // What one query did, step by step.
 struct Trace3D {
   Method3D method = Method3D::Halfspace;
@@ -51,7 +60,8 @@ struct Trace3D {
   bool nonFinite = false;      // the point has an infinite or NaN coordinate
   bool atCentre = false;       // the point is the centre itself
   bool fallback = false;       // answered by testing every face (no centre, overflow, walk cap)
-  bool crowded = false;        // cubemap: the cell held many faces and was searched by a walk
+  bool crowded = false;        // cubemap: the cell held many faces: searched by a walk, or by
+                               // bisection over a zone (zoneSteps)
   bool byRadius = false;       // cubemap: decided by the cell's radii, before any face test
   double distance = 0.0;       // cubemap: |p - centre| (approximate, for display)
   double innerRadius = 0.0;    // cubemap: nearer than this to the centre, a point of the cell
@@ -64,6 +74,7 @@ struct Trace3D {
   std::vector<std::uint32_t> path;  // walk: the faces visited, in order
   std::vector<WalkTest> steps;      // walk: every edge test
   std::vector<FaceTest> faces;      // plane tests, in order
+  std::vector<ZoneTest> zoneSteps;  // cubemap: the bisection over a zone of thin faces
   bool radiusFilter = true;         // cubemap: the radius filter ran (TraceOptions::radii)
   Vec3 direction{};                 // cubemap: p - centre, whose largest |coordinate| picks
                                     // the cube face and whose quotients are s and t
@@ -73,19 +84,22 @@ struct Trace3D {
 
 // Size and shape of a subdivision. Methods without cells report zero cells.
 struct Stats3D {
-  std::size_t faces = 0;
+  std::size_t faces = 0;      // plane faces (adjacent coplanar triangles merged)
+  std::size_t triangles = 0;  // the triangles they are made of
   std::size_t vertices = 0;
   std::size_t cells = 0;    // cubemap: leaf cells over all levels
   std::size_t nodes = 0;    // cubemap: quadtree nodes, leaves and inner ones
   std::size_t entries = 0;  // sum over cells of the faces listed
   std::size_t maxPerCell = 0;
   double meanPerCell = 0.0;
-  std::size_t crowdedCells = 0;  // cells searched by a walk rather than tested face by face
+  std::size_t crowdedCells = 0;  // cells searched by a walk or a zone's bisection rather than
+                                 // tested face by face
+  std::size_t zoneCells = 0;     // cubemap: crowded cells searched by bisection over a zone
   std::uint32_t resolution = 0;  // cubemap: G, the base grid is G x G on each cube face
   int maxLevel = 0;              // cubemap: the deepest quadtree level
   bool centred = false;   // a centre strictly inside exists (else every query tests all faces)
-  std::size_t bytes = 0;  // memory the locator holds, vertices included
-  double bytesPerFace = 0.0;
+  std::size_t bytes = 0;     // memory the locator holds, vertices included
+  double bytesPerFace = 0.0;  // bytes per triangle (the input's size)
   double buildSeconds = 0.0;
   std::vector<std::size_t> histogram;  // histogram[k]: cells holding k faces; the last bucket
                                        // counts every cell holding at least that many
@@ -112,12 +126,38 @@ namespace detail {
 // the surface a 3D locator keeps its own copy of, so that the polyhedron may go away
 struct SurfaceCopy {
   std::vector<Vec3> vertices;
-  std::vector<ConvexPolyhedron::Triangle> faces;  // ConvexPolyhedron::triangles()
+  std::vector<ConvexPolyhedron::Triangle> faces;  // the plane faces: ConvexPolyhedron::planes()
+  std::size_t triangles = 0;                      // ConvexPolyhedron::faceCount()
   SurfaceCopy() = default;
   explicit SurfaceCopy(const ConvexPolyhedron& polyhedron);
   // the bytes both buffers hold
   std::size_t bytes() const noexcept;
 };
+
+// The triangles a walk crosses, their adjacency and the plane face of each. Where no two
+// triangles are coplanar (plane face t is triangle t) only the adjacency is kept: the
+// triangles are the surface's faces.
+struct WalkMesh {
+  std::vector<ConvexPolyhedron::Triangle> neighbours;  // ConvexPolyhedron::neighbours()
+  std::vector<ConvexPolyhedron::Triangle> triangles;   // ConvexPolyhedron::triangles(), or empty
+  std::vector<std::uint32_t> planeOf;                  // ConvexPolyhedron::planeOf(), or empty
+  std::vector<std::uint32_t> firstTriangle;            // the lowest triangle of each plane face
+  WalkMesh() = default;
+  explicit WalkMesh(const ConvexPolyhedron& polyhedron);
+  // the triangles, given the surface's faces
+  const std::vector<ConvexPolyhedron::Triangle>& trianglesOf(const SurfaceCopy& s) const noexcept {
+    return triangles.empty() ? s.faces : triangles;
+  }
+  // the plane face of triangle t
+  std::uint32_t plane(std::uint32_t t) const noexcept { return planeOf.empty() ? t : planeOf[t]; }
+  // a triangle of plane face f
+  std::uint32_t triangle(std::uint32_t f) const noexcept {
+    return firstTriangle.empty() ? f : firstTriangle[f];
+  }
+  // the bytes its buffers hold
+  std::size_t bytes() const noexcept;
+};
+
 }  // namespace detail
 
 // === halfspace, O(F): inside iff on the inner side of every face plane (eq. 2)
@@ -166,8 +206,8 @@ class WalkLocator {
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
   detail::SurfaceCopy surface_;
-  std::vector<ConvexPolyhedron::Triangle> neighbours_;  // ConvexPolyhedron::neighbours()
-  std::vector<std::uint32_t> startFaces_;               // faces a walk may start from
+  detail::WalkMesh mesh_;
+  std::vector<std::uint32_t> startFaces_;               // triangles a walk may start from
   std::vector<std::array<float, 3>> startDirections_;   // theirs from the centre, unit length
   std::optional<Vec3> centre_;
   std::uint32_t maxVisits_ = 0;  // faces a walk visits before it gives up and tests all
@@ -188,6 +228,18 @@ class CubemapBuilder;
 // core/src/cubemap/index.hpp.
 class CubemapLocator {
  public:
+  // A zone: faces F_0 .. F_(n-1) around one direction, F_k between edges E_k and E_(k+1)
+  // (mod n), every edge exactly parallel to the direction (a cylinder's or a prism's sides).
+  // The planes through the centre and each E_k share one line, so they are ordered by angle
+  // around it: a crowded leaf over a zone keeps a range of it, searched by bisection.
+  struct Zone {
+    std::uint32_t first = 0, size = 0;  // E_k and F_k at zoneEdges_/zoneFaces_[first + k]
+    int sigma = 1;                      // orient3d's sign for a point before an edge
+  };
+  // a leaf's range of a zone: the faces F_lo .. F_(lo + span - 1), indices mod the size
+  struct ZoneRange {
+    std::uint32_t zone = 0, lo = 0, span = 0;
+  };
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
@@ -212,10 +264,10 @@ class CubemapLocator {
   // half the side of the cube, centred on the centre, that cells() draws on (it encloses
   // the polyhedron)
   double cubeHalfSize() const noexcept { return cubeHalfSize_; }
-  // the faces listed in the leaf cell p maps to (the ones a query of p would test); empty
-  // for the centre and where there is no cell
-  std::span<const std::uint32_t> cellFaces(Vec3 p) const noexcept;
-  // the surface it locates in: its vertices, and its faces (ConvexPolyhedron::triangles())
+  // the faces listed in the leaf cell p maps to (the ones a query of p may test; a zone
+  // leaf's range in full), in increasing order; empty for the centre and where there is no cell
+  std::vector<std::uint32_t> cellFaces(Vec3 p) const;
+  // the surface it locates in: its vertices, and its plane faces (ConvexPolyhedron::planes())
   std::span<const Vec3> vertices() const noexcept { return surface_.vertices; }
   std::span<const ConvexPolyhedron::Triangle> faces() const noexcept { return surface_.faces; }
 
@@ -246,6 +298,12 @@ class CubemapLocator {
   // (which becomes the leaf's level)
   [[gnu::always_inline]] std::uint32_t leafAt(std::uint64_t deepI, std::uint64_t deepJ,
                                               std::uint32_t node, int& level) const noexcept;
+  // p's answer in a leaf over a zone: bisection over the zone's edges, then the zone face found
+  // and the leaf's other faces
+  template <class Sink>
+  Location fromZone(Vec3 p, const Node& leaf, Sink& sink) const noexcept;
+  // the faces leaf `nd` lists, a zone's range expanded
+  std::vector<std::uint32_t> leafFaces(const Node& nd) const;
   // the whole query; run and fromLeaf stay out of line, apart from the inline aim and radii
   // that decide most points in locate() and the batch
   template <class Sink>
@@ -260,7 +318,12 @@ class CubemapLocator {
   template <class Visit>
   void forEachLeaf(Visit&& visit) const;
   detail::SurfaceCopy surface_;
-  std::vector<ConvexPolyhedron::Triangle> neighbours_;  // ConvexPolyhedron::neighbours()
+  detail::WalkMesh mesh_;         // the triangles a crowded cell's walk crosses
+  std::vector<Zone> zones_;
+  std::vector<std::array<std::uint32_t, 2>> zoneEdges_;  // E_k from vertex to vertex, along
+                                                         // the zone's direction
+  std::vector<std::uint32_t> zoneFaces_;
+  std::vector<ZoneRange> zoneRanges_;  // a zone leaf's first entry indexes these
   Table<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
   Table<std::uint32_t> entries_;  // each leaf's faces
   Vec3 centre_{};

@@ -68,7 +68,8 @@ class PolyhedronBuilder;
 }
 
 // A closed convex polyhedron with positive volume, as triangles counter-clockwise from
-// outside. Immutable once built.
+// outside, and as plane faces: the triangles merged, exactly, where adjacent ones lie in one
+// plane (a quad's two triangles, a fan-triangulated cap). Immutable once built.
 class ConvexPolyhedron {
  public:
   using Triangle = std::array<std::uint32_t, 3>;
@@ -107,8 +108,29 @@ class ConvexPolyhedron {
   std::span<const Triangle> triangles() const noexcept { return triangles_; }
   // neighbours()[t][k]: the triangle across edge k of t, the edge from corner k to corner k + 1
   std::span<const Triangle> neighbours() const noexcept { return neighbours_; }
-  // number of triangles (the faces every locator works with)
+  // number of triangles
   std::size_t faceCount() const noexcept { return triangles_.size(); }
+
+  // === Faces as planes: adjacent triangles in exactly one plane merged (the faces every
+  // locator tests). Plane face f is numbered by its lowest triangle, so where no two
+  // triangles are coplanar, plane face t is triangle t.
+  // number of plane faces
+  std::size_t planeCount() const noexcept { return planes_.size(); }
+  // planes()[f]: three corners of plane face f, counter-clockwise seen from outside and far
+  // apart (a fat triangle of the face): their plane is the face's, exactly
+  std::span<const Triangle> planes() const noexcept { return planes_; }
+  // planeOf()[t]: the plane face triangle t lies in
+  std::span<const std::uint32_t> planeOf() const noexcept { return planeOf_; }
+  // the corners of plane face f, counter-clockwise seen from outside (vertices on its edges
+  // included, vertices inside it left out)
+  std::span<const std::uint32_t> planeLoop(std::size_t f) const noexcept {
+    return {loops_.data() + loopStart_[f], loops_.data() + loopStart_[f + 1]};
+  }
+  // the triangles of plane face f, in increasing order
+  std::span<const std::uint32_t> planeTriangles(std::size_t f) const noexcept {
+    return {planeTriangles_.data() + trianglesStart_[f],
+            planeTriangles_.data() + trianglesStart_[f + 1]};
+  }
   // number of vertices
   std::size_t vertexCount() const noexcept { return vertices_.size(); }
   // for each triangle, the index of the input face it comes from
@@ -146,6 +168,10 @@ class ConvexPolyhedron {
   std::vector<Triangle> neighbours_;
   std::vector<std::uint32_t> sourceFace_;
   std::vector<std::uint32_t> sourceVertex_;
+  std::vector<Triangle> planes_;
+  std::vector<std::uint32_t> planeOf_;
+  std::vector<std::uint32_t> loopStart_{0}, loops_;
+  std::vector<std::uint32_t> trianglesStart_{0}, planeTriangles_;
   std::optional<Vec3> centre_;
   Box3 bounds_{};
   std::size_t inputFaces_ = 0;

@@ -44,6 +44,8 @@ constexpr std::uint32_t kMaxResolution = 8192;
 // only the part of a face the cell sees, and a thinner shell is left to the face tests; the
 // grid still fits the constant part of the memory budget.
 constexpr std::uint32_t kSmallestDefault = 16;
+// no face yet, in a cell's "last face listed"
+constexpr std::uint32_t kUnlisted = 0xffffffffu;
 // the part of the memory budget that does not grow with the faces
 constexpr std::size_t kFixedBudget = 32 * 1024;
 
@@ -234,13 +236,13 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t
 
 CubemapBuilder::CubemapBuilder(CubemapLocator& locator, const ConvexPolyhedron& polyhedron,
                                std::uint32_t resolution)
-    : locator_(locator) {
+    : locator_(locator), polyhedron_(polyhedron) {
   if (resolution > kMaxResolution)
     throw UsageError("cubemap: the resolution is at most " + std::to_string(kMaxResolution));
   locator_.surface_ = detail::SurfaceCopy(polyhedron);
-  locator_.neighbours_.assign(polyhedron.neighbours().begin(), polyhedron.neighbours().end());
+  locator_.mesh_ = detail::WalkMesh(polyhedron);
   locator_.resolution_ =
-      resolution ? resolution : defaultResolution(locator_.surface_.faces.size());
+      resolution ? resolution : defaultResolution(locator_.surface_.triangles);
   centre_ = polyhedron.centre();
 }
 
@@ -256,7 +258,12 @@ std::uint32_t CubemapBuilder::defaultResolution(std::size_t faces) {
 
 void CubemapBuilder::build() {
   CubemapLocator& L = locator_;
-  if (!aimFromCentre() || !buildBaseGrid()) {
+  if (!aimFromCentre()) {
+    L.resolution_ = 0;  // no cells: every query tests all faces
+    return;
+  }
+  findZones();
+  if (!buildBaseGrid()) {
     L.resolution_ = 0;  // no cells: every query tests all faces
     return;
   }
@@ -264,6 +271,8 @@ void CubemapBuilder::build() {
   L.deepScale_ = std::ldexp(static_cast<double>(L.resolution_), L.deepestLevel_ - 1);
   refineCrowdedCells();
   compactEntries();
+  L.nodes_.shrink_to_fit();
+  encodeZones();  // crowded leaves the refinement made over a zone
   L.nodes_.shrink_to_fit();
   L.entries_.shrink_to_fit();
   setLeafRadii();
@@ -286,35 +295,49 @@ bool CubemapBuilder::aimFromCentre() {
 }
 
 std::size_t CubemapBuilder::memoryBudget() const {
-  // 120 bytes per face in all, plus kFixedBudget (so that small polyhedra, the ones a
+  // 120 bytes per triangle in all, plus kFixedBudget (so that small polyhedra, the ones a
   // lecturer draws, still get a grid worth showing, and fast radii)
   const CubemapLocator& L = locator_;
-  const std::size_t fixed =
-      sizeof(CubemapLocator) + L.surface_.bytes() + detail::bytesOf(L.neighbours_);
-  const std::size_t total = 120 * L.surface_.faces.size() + kFixedBudget;
+  const std::size_t fixed = sizeof(CubemapLocator) + L.surface_.bytes() + L.mesh_.bytes();
+  const std::size_t total = 120 * L.surface_.triangles + kFixedBudget;
   return total > fixed ? total - fixed : 0;
 }
 
 template <class Visit>
 bool CubemapBuilder::forEachProjection(Visit&& visit) const {
-  const detail::SurfaceCopy& surface = locator_.surface_;
+  const std::vector<Vec3>& v = locator_.surface_.vertices;
+  const auto& triangles = polyhedron_.triangles();
   Cone k;
   Poly P;
-  const auto faces = static_cast<std::uint32_t>(surface.faces.size());
-  for (std::uint32_t f = 0; f < faces; ++f) {
-    if (!coneOf(surface.vertices, surface.faces[f], locator_.centre_, scale_, k)) return false;
-    for (int cf = 0; cf < 6; ++cf)
-      if (onCubeFace(k, cf, P)) visit(f, cf, P);
-  }
+  const auto faces = static_cast<std::uint32_t>(polyhedron_.planeCount());
+  for (std::uint32_t f = 0; f < faces; ++f)
+    for (std::uint32_t t : polyhedron_.planeTriangles(f)) {
+      if (!coneOf(v, triangles[t], locator_.centre_, scale_, k)) return false;
+      for (int cf = 0; cf < 6; ++cf)
+        if (onCubeFace(k, cf, P)) visit(f, cf, P);
+    }
   return true;
 }
 
 bool CubemapBuilder::buildBaseGrid() {
   budget_ = memoryBudget();
   std::vector<std::uint32_t> counts;
-  if (!fitBaseGrid(counts)) return false;  // a direction overflowed
-  fillBaseCells(counts);
-  return true;
+  for (;;) {
+    if (!fitBaseGrid(counts)) return false;  // a direction overflowed
+    fillBaseCells(counts);
+    encodeZones();
+    // the fit assumed every crowded cell over a zone would become a range of it
+    CubemapLocator& L = locator_;
+    if (L.resolution_ == 1 || liveBytes() <= budget_) return true;
+    L.resolution_ /= 2;
+    L.zoneRanges_.clear();
+  }
+}
+
+std::size_t CubemapBuilder::liveBytes() const {
+  const CubemapLocator& L = locator_;
+  return L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t) +
+         L.zoneRanges_.size() * sizeof(ZoneRange);
 }
 
 bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
@@ -326,14 +349,24 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
     counts.assign(cells + 1, 0);
     const double K = levelScale(g, 0);
     const std::int64_t last = g - 1;
-    std::size_t entries = 0;
-    const bool ok = forEachProjection([&](std::uint32_t, int cf, const Poly& P) {
+    std::vector<std::uint32_t> lastFace(cells, kUnlisted);  // each face once per cell
+    std::vector<std::uint32_t> inZones(zoneOf_.empty() ? 0 : cells, 0);
+    const bool ok = forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
       rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
-        ++counts[baseCellIndex(cf, i, j, g)];
-        ++entries;
+        const std::size_t c = baseCellIndex(cf, i, j, g);
+        if (lastFace[c] == f) return;
+        lastFace[c] = f;
+        ++counts[c];
+        if (!inZones.empty() && zoneOf_[f] != kUnlisted) ++inZones[c];
       });
     });
     if (!ok) return false;
+    // a crowded cell over a zone keeps a range of it: one entry for its zone faces
+    std::size_t entries = 0;
+    for (std::size_t c = 0; c < cells; ++c) {
+      const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
+      entries += counts[c] - z + (counts[c] > kCrowdedCell3D && z > kCrowdedCell3D ? 1 : z);
+    }
     if (g == 1 || cells * sizeof(Node) + entries * sizeof(std::uint32_t) <= budget_) return true;
     g = std::max<std::uint32_t>(1, g / 2);
   }
@@ -354,9 +387,13 @@ void CubemapBuilder::fillBaseCells(const std::vector<std::uint32_t>& counts) {
   for (std::size_t c = 0; c < baseCells; ++c) cursor[c] = L.nodes_[c].first;
   const double K = levelScale(g, 0);
   const std::int64_t last = g - 1;
+  std::vector<std::uint32_t> lastFace(baseCells, kUnlisted);  // each face once per cell
   forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
     rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
-      L.entries_[cursor[baseCellIndex(cf, i, j, g)]++] = f;
+      const std::size_t c = baseCellIndex(cf, i, j, g);
+      if (lastFace[c] == f) return;
+      lastFace[c] = f;
+      L.entries_[cursor[c]++] = f;
     });
   });
 }
@@ -366,7 +403,7 @@ void CubemapBuilder::fillBaseCells(const std::vector<std::uint32_t>& counts) {
 void CubemapBuilder::refineCrowdedCells() {
   CubemapLocator& L = locator_;
   queueCrowdedBaseCells();
-  live_ = L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t);
+  live_ = liveBytes();
   liveEntries_ = L.entries_.size();
   for (std::size_t head = 0; head < queue_.size(); ++head) {
     const Pending q = queue_[head];
@@ -390,7 +427,7 @@ void CubemapBuilder::refineCrowdedCells() {
 void CubemapBuilder::queueCrowdedBaseCells() {
   const CubemapLocator& L = locator_;
   for (std::size_t c = 0; c < L.nodes_.size(); ++c)
-    if (L.nodes_[c].count > kCrowdedCell3D) {
+    if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count)) {
       const BaseCell base = baseCellAt(c, L.resolution_);
       queue_.push_back(
           {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});
@@ -408,18 +445,21 @@ void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
   all = {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL};
   Cone k;
   Poly P, B;
+  const auto& triangles = polyhedron_.triangles();
   for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
     const std::uint32_t f = L.entries_[e];
-    const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
-    if (projectedBox(v, t, L.centre_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
-        B.p[2].y - B.p[0].y <= 1 / K1) {
-      small_.push_back(f);
-      smallBoxes_.push_back({B.p[0].x, B.p[2].x, B.p[0].y, B.p[2].y});
-      all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x), std::min(all[2], B.p[0].y),
-             std::max(all[3], B.p[2].y)};
-    } else if (coneOf(v, t, L.centre_, scale_, k) && onCubeFace(k, q.face, P)) {
-      large_.push_back(f);
-      largePolys_.push_back(P);
+    for (std::uint32_t tri : polyhedron_.planeTriangles(f)) {
+      const ConvexPolyhedron::Triangle& t = triangles[tri];
+      if (projectedBox(v, t, L.centre_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
+          B.p[2].y - B.p[0].y <= 1 / K1) {
+        small_.push_back(f);
+        smallBoxes_.push_back({B.p[0].x, B.p[2].x, B.p[0].y, B.p[2].y});
+        all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x),
+               std::min(all[2], B.p[0].y), std::max(all[3], B.p[2].y)};
+      } else if (coneOf(v, t, L.centre_, scale_, k) && onCubeFace(k, q.face, P)) {
+        large_.push_back(f);
+        largePolys_.push_back(P);
+      }
     }
   }
 }
@@ -471,7 +511,12 @@ std::size_t CubemapBuilder::listChildren(const Pending& q, int levels) {
       ci = ii, cj = jj;
       lists[(cj - j0) * 2 + (ci - i0)].clear();  // an inner node: its faces go deeper
     }
-    for (auto& list : lists) added += list.size();
+    for (auto& list : lists) {
+      // a face whose triangles meet the cell is listed once
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+      added += list.size();
+    }
   }
   return added;
 }
@@ -525,7 +570,7 @@ void CubemapBuilder::compactEntries() {
     if (nd.count == kInner) continue;
     const auto first = static_cast<std::uint32_t>(kept.size());
     kept.insert(kept.end(), L.entries_.begin() + nd.first,
-                L.entries_.begin() + nd.first + nd.count);
+                L.entries_.begin() + nd.first + entryCount(nd.count));
     nd.first = first;
   }
   L.entries_.swap(kept);

@@ -69,12 +69,15 @@ class CubemapBuilder {
   // the centre and the cube around it that holds the polyhedron; false when there is none
   // or the directions from it overflow
   bool aimFromCentre();
-  // the base grid, coarsened to fit, and its lists; false when a direction overflows
+  // the base grid, coarsened to fit, and its lists (zone ranges where crowded cells lie
+  // over a zone); false when a direction overflows
   bool buildBaseGrid();
-  // what the cells may use: 120 bytes per face and kFixedBudget in all, less the surface
+  // the bytes the nodes, the entries and the zone ranges use
+  std::size_t liveBytes() const;
+  // what the cells may use: 120 bytes per triangle and kFixedBudget in all, less the surface
   std::size_t memoryBudget() const;
-  // visit(face, cube face, polygon) for every cube face each face's cone meets; false when a
-  // direction overflows
+  // visit(face, cube face, polygon) for every cube face each triangle's cone meets, plane
+  // face by plane face (face: the triangle's plane face); false when a direction overflows
   template <class Visit>
   bool forEachProjection(Visit&& visit) const;
   // coarsens G until the base grid fits the budget; counts[c]: faces of base cell c
@@ -86,8 +89,8 @@ class CubemapBuilder {
   // splits crowded cells, breadth first, while the budget allows
   void refineCrowdedCells();
   void queueCrowdedBaseCells();
-  // sorts the parent's faces into the small ones (placed by their projected boxes) and the
-  // others (by their cones' polygons)
+  // sorts the triangles of the parent's faces into the small ones (placed by their projected
+  // boxes) and the others (by their cones' polygons)
   void sortFaces(const Pending& q, const Node& parent);
   // how many levels the split goes down at once: more than 1 where every small face stays in
   // one cell (a chain)
@@ -108,11 +111,30 @@ class CubemapBuilder {
   // rewrites the entries with the leaves' lists only
   void compactEntries();
 
+  // === zones (zones.cpp)
+  using ZoneRange = CubemapLocator::ZoneRange;
+  // the zones of thin faces (zoneOf_, positionOf_ and the locator's zone tables)
+  void findZones();
+  // rewrites each crowded leaf over a zone as a range of it (bisection); repacks the entries
+  void encodeZones();
+  // the entries a leaf's count stands for
+  static std::uint32_t entryCount(std::uint32_t count);
+  // the zone most of `list` lies in, the range of it holding them, and the other faces;
+  // false when no zone holds more than a crowded cell's worth
+  bool rangeOf(const std::uint32_t* list, std::uint32_t count,
+               const std::vector<std::uint32_t>& zoneOf,
+               const std::vector<std::uint32_t>& positionOf, ZoneRange& r,
+               std::vector<std::uint32_t>& others) const;
+  // whether the cell's directions and the range's edges lie within a quarter turn around
+  // the zone's axis (then bisection over the range is exact)
+  bool zoneFits(const ZoneRange& r, int cf, int level, std::uint64_t i, std::uint64_t j) const;
+
   // === radii (radii.cpp)
   // each leaf's two radii; inner nodes get NaN
   void setLeafRadii();
 
   CubemapLocator& locator_;
+  const ConvexPolyhedron& polyhedron_;  // for the build only: its plane faces' triangles
   std::optional<Vec3> centre_;    // the polyhedron's
   cubemap::PowerOfTwo scale_{0};  // brings the cube's half-size into [1, 2)
   std::size_t budget_ = 0;        // bytes the cells may use
@@ -124,6 +146,7 @@ class CubemapBuilder {
   std::vector<std::array<double, 4>> smallBoxes_;  // (s0, s1, t0, t1)
   std::array<double, 4> smallBounds_{};            // the box around all of them
   std::vector<cubemap::Poly> largePolys_;
+  std::vector<std::uint32_t> zoneOf_, positionOf_;  // each face's zone and place in it
   std::vector<std::uint32_t> lists_[cubemap::kMaxLevel + 1][4];
 };
 

@@ -10,7 +10,9 @@ namespace convexloc {
 
 Stats3D CubemapLocator::stats() const {
   Stats3D s = detail::baseStats(surface_,
-                                sizeof(*this) + detail::bytesOf(neighbours_) +
+                                sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) +
+                                    detail::bytesOf(zoneEdges_) + detail::bytesOf(zoneFaces_) +
+                                    detail::bytesOf(zoneRanges_) +
                                     detail::bytesOf(nodes_) + detail::bytesOf(entries_),
                                 buildSeconds_);
   s.centred = centred_;
@@ -20,11 +22,13 @@ Stats3D CubemapLocator::stats() const {
   if (!centred_) return s;
   for (const Node& nd : nodes_) {
     if (nd.count == cubemap::kInner) continue;
+    const std::size_t count = cubemap::isZoneLeaf(nd.count) ? leafFaces(nd).size() : nd.count;
     ++s.cells;
-    s.entries += nd.count;
-    s.maxPerCell = std::max<std::size_t>(s.maxPerCell, nd.count);
-    if (nd.count > kCrowdedCell3D) ++s.crowdedCells;
-    ++s.histogram[std::min<std::size_t>(nd.count, s.histogram.size() - 1)];
+    s.entries += count;
+    s.maxPerCell = std::max(s.maxPerCell, count);
+    if (count > kCrowdedCell3D) ++s.crowdedCells;
+    s.zoneCells += cubemap::isZoneLeaf(nd.count);
+    ++s.histogram[std::min<std::size_t>(count, s.histogram.size() - 1)];
   }
   s.meanPerCell = s.cells ? static_cast<double>(s.entries) / static_cast<double>(s.cells) : 0.0;
   forEachLeaf([&](std::uint32_t, int, int level, std::uint32_t, std::uint32_t) {
@@ -57,7 +61,7 @@ std::vector<Cell3D> CubemapLocator::cells() const {
       cell.corners[q] = {centre_.x + cubeHalfSize_ * d.x, centre_.y + cubeHalfSize_ * d.y,
                          centre_.z + cubeHalfSize_ * d.z};
     }
-    cell.faces.assign(entries_.begin() + nd.first, entries_.begin() + nd.first + nd.count);
+    cell.faces = leafFaces(nd);
     out.push_back(std::move(cell));
   });
   return out;

@@ -37,7 +37,8 @@
 // inside, separates them: T's sign is negative, Outside. A negative sign for any listed face
 // is Outside in any case. So "any negative: Outside; else any zero: Boundary; else Inside"
 // over the listed faces is exact. A crowded cell is searched by a walk from one of its
-// faces, which ends at such a face T; if the walk runs too long the cell's list is tested.
+// faces, which ends at such a face T; if the walk runs too long the cell's list is tested. A
+// crowded cell over a zone of thin faces is searched by bisection (cubemap/zones.cpp).
 // The radii that decide most points first are sound by the argument of detail/radii.hpp.
 #pragma once
 
@@ -54,6 +55,12 @@ namespace convexloc::cubemap {
 
 // the inner-node mark in Node::count
 inline constexpr std::uint32_t kInner = 0xffffffffu;
+// A leaf over a zone (cubemap/zones.cpp): Node::count is kZoneLeaf | (1 + others); its first
+// entry indexes zoneRanges_, the others follow. Never kInner: others stay below 2^31 - 1.
+inline constexpr std::uint32_t kZoneLeaf = 0x80000000u;
+
+// whether a leaf's count marks a zone leaf
+inline bool isZoneLeaf(std::uint32_t count) { return count != kInner && (count & kZoneLeaf); }
 
 // K = (cells per side) / 2 at `level` over base resolution g: cell i spans
 // [-1 + i / K, -1 + (i + 1) / K]

@@ -1,6 +1,7 @@
 // convexloc — the cube map's single-point queries: locate(p) and trace(p).
 #include "cubemap/query.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "cubemap/index.hpp"
@@ -28,12 +29,23 @@ Location CubemapLocator::locate(Vec3 p) const noexcept {
   return run(p, sink);
 }
 
-std::span<const std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const noexcept {
+std::vector<std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const {
   Aim a;
   if (aim(p, a) <= 0) return {};
   int level = 0;
-  const Node& leaf = nodes_[leafAt(a.deepI, a.deepJ, a.baseCell, level)];
-  return {entries_.data() + leaf.first, leaf.count};
+  return leafFaces(nodes_[leafAt(a.deepI, a.deepJ, a.baseCell, level)]);
+}
+
+std::vector<std::uint32_t> CubemapLocator::leafFaces(const Node& nd) const {
+  const std::uint32_t* e = entries_.data() + nd.first;
+  if (!cubemap::isZoneLeaf(nd.count)) return {e, e + nd.count};
+  const ZoneRange& r = zoneRanges_[e[0]];
+  const Zone& z = zones_[r.zone];
+  std::vector<std::uint32_t> faces;
+  for (std::uint32_t k = 0; k < r.span; ++k) faces.push_back(zoneFaces_[z.first + (r.lo + k) % z.size]);
+  faces.insert(faces.end(), e + 1, e + (nd.count & ~cubemap::kZoneLeaf));
+  std::sort(faces.begin(), faces.end());
+  return faces;
 }
 
 Trace3D CubemapLocator::trace(Vec3 p, TraceOptions options) const {

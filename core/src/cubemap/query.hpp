@@ -73,9 +73,42 @@ Location CubemapLocator::fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sin
   if (leaf.count <= kCrowdedCell3D)
     return detail::testList(surface_, first, first + leaf.count, p, sink);
   sink.crowded();
+  if (cubemap::isZoneLeaf(leaf.count)) return fromZone(p, leaf, sink);
   return detail::walkAndTest(
-      surface_, neighbours_, centre_, p, *first, 16 + leaf.count / 4, sink,
+      surface_, mesh_, centre_, p, mesh_.triangle(*first), 16 + leaf.count / 4, sink,
       [&] { return detail::testList(surface_, first, first + leaf.count, p, sink); });
+}
+
+template <class Sink>
+Location CubemapLocator::fromZone(Vec3 p, const Node& leaf, Sink& sink) const noexcept {
+  // the first k in [1, span) with p strictly before edge lo + k: p's direction then lies in
+  // the wedge of face lo + k - 1 (the last face when there is none); see cubemap/zones.cpp
+  const std::uint32_t* e = entries_.data() + leaf.first;
+  const std::uint32_t others = (leaf.count & ~cubemap::kZoneLeaf) - 1;
+  const ZoneRange& r = zoneRanges_[e[0]];
+  const Zone& z = zones_[r.zone];
+  const std::vector<Vec3>& v = surface_.vertices;
+  auto at = [&](std::uint32_t k) {
+    const std::uint32_t m = r.lo + k;
+    return z.first + (m >= z.size ? m - z.size : m);
+  };
+  std::uint32_t lo = 1, hi = r.span;
+  while (lo < hi) {
+    const std::uint32_t mid = lo + (hi - lo) / 2;
+    const std::array<std::uint32_t, 2>& edge = zoneEdges_[at(mid)];
+    const int s = orient3d(centre_, v[edge[0]], v[edge[1]], p);
+    sink.zone(at(mid) - z.first, edge[0], edge[1], s);
+    if (s == z.sigma)
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  const std::uint32_t face = zoneFaces_[at(lo - 1)];
+  const int s = detail::planeSign(surface_, face, p);
+  sink.face(face, s);
+  if (s < 0) return Location::Outside;
+  const Location rest = detail::testList(surface_, e + 1, e + 1 + others, p, sink);
+  return rest == Location::Inside && s == 0 ? Location::Boundary : rest;
 }
 
 }  // namespace convexloc

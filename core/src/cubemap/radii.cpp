@@ -162,11 +162,11 @@ CellPyramid pyramidOf(std::uint32_t g, int cf, int level, std::uint64_t i, std::
   return cp;
 }
 
-// each face's whole-face bounds: in2 below the squared distance to its plane, out2 that to
-// its farthest vertex
+// each plane face's whole-face bounds: in2 below the squared distance to its plane, out2
+// that to its farthest corner
 struct FaceBounds {
   std::vector<double> in2, out2;
-  FaceBounds(const detail::SurfaceCopy& surface, Vec3 c) {
+  FaceBounds(const detail::SurfaceCopy& surface, const ConvexPolyhedron& polyhedron, Vec3 c) {
     const std::size_t nf = surface.faces.size();
     const std::vector<Vec3>& v = surface.vertices;
     in2.resize(nf), out2.resize(nf);
@@ -175,7 +175,8 @@ struct FaceBounds {
     for (std::size_t f = 0; f < nf; ++f) {
       const ConvexPolyhedron::Triangle& t = surface.faces[f];
       in2[f] = planeDistance2Below(v[t[0]], v[t[1]], v[t[2]], c);
-      out2[f] = std::max({vertex2[t[0]], vertex2[t[1]], vertex2[t[2]]});
+      out2[f] = 0.0;
+      for (std::uint32_t w : polyhedron.planeLoop(f)) out2[f] = std::max(out2[f], vertex2[w]);
     }
   }
 };
@@ -183,21 +184,29 @@ struct FaceBounds {
 // Tightens [lo, hi] with each listed face's part inside the pyramid. A ray leaves a convex
 // polyhedron at the nearest of the face planes it meets ahead, so a face whose plane every
 // ray of the pyramid meets ahead bounds every exit point of the cell by itself: the smallest
-// such bound serves as well as the largest.
+// such bound serves as well as the largest. A crowded leaf (the thin faces of a zone) keeps
+// its whole-face lower bound and takes the upper one from a spread sample of its faces.
 void tightenInPyramid(const CellPyramid& cp, const detail::SurfaceCopy& surface, Vec3 c,
                       const FaceBounds& whole, const std::uint32_t* first, std::uint32_t count,
                       double& lo, double& hi) {
+  constexpr std::uint32_t kSample = 32;
   const std::vector<Vec3>& v = surface.vertices;
+  const bool all = count <= kSample;
+  const std::uint32_t step = all ? 1 : count / kSample;
   double tightLo = HUGE_VAL, tightHi = 0.0, anyPlane = HUGE_VAL;
-  for (const std::uint32_t* e = first; e != first + count; ++e) {
-    double fIn2 = whole.in2[*e], fOut2 = whole.out2[*e];
-    const ConvexPolyhedron::Triangle& t = surface.faces[*e];
+  for (std::uint32_t k = 0; k < count; k += step) {
+    const std::uint32_t f = first[k];
+    double fIn2 = whole.in2[f], fOut2 = whole.out2[f];
+    const ConvexPolyhedron::Triangle& t = surface.faces[f];
     anyPlane = std::min(anyPlane, pieceBounds(cp, v[t[0]], v[t[1]], v[t[2]], c, fIn2, fOut2));
     tightLo = std::min(tightLo, fIn2);
     tightHi = std::max(tightHi, fOut2);
   }
-  lo = std::max(lo, tightLo);
-  hi = std::min({hi, tightHi, anyPlane});
+  if (all) {
+    lo = std::max(lo, tightLo);
+    hi = std::min(hi, tightHi);
+  }
+  hi = std::min(hi, anyPlane);
 }
 
 }  // namespace
@@ -205,18 +214,22 @@ void tightenInPyramid(const CellPyramid& cp, const detail::SurfaceCopy& surface,
 
 void CubemapBuilder::setLeafRadii() {
   CubemapLocator& L = locator_;
-  const cubemap::FaceBounds whole(L.surface_, L.centre_);
+  const cubemap::FaceBounds whole(L.surface_, polyhedron_, L.centre_);
+  std::vector<std::uint32_t> faces;  // a zone leaf's, expanded
   auto leaf = [&](std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j) {
     Node& nd = L.nodes_[node];
-    const std::uint32_t* first = L.entries_.data() + nd.first;
-    double lo = nd.count ? HUGE_VAL : 0.0, hi = nd.count ? 0.0 : HUGE_VAL;
-    for (const std::uint32_t* e = first; e != first + nd.count; ++e) {
+    const bool zone = cubemap::isZoneLeaf(nd.count);
+    if (zone) faces = L.leafFaces(nd);
+    const std::uint32_t* first = zone ? faces.data() : L.entries_.data() + nd.first;
+    const auto count = zone ? static_cast<std::uint32_t>(faces.size()) : nd.count;
+    double lo = count ? HUGE_VAL : 0.0, hi = count ? 0.0 : HUGE_VAL;
+    for (const std::uint32_t* e = first; e != first + count; ++e) {
       lo = std::min(lo, whole.in2[*e]);
       hi = std::max(hi, whole.out2[*e]);
     }
-    if (nd.count && !(hi <= lo * (1 + 0x1p-10)))
+    if (count && !(hi <= lo * (1 + 0x1p-10)))
       cubemap::tightenInPyramid(cubemap::pyramidOf(L.resolution_, cf, level, i, j), L.surface_,
-                                L.centre_, whole, first, nd.count, lo, hi);
+                                L.centre_, whole, first, count, lo, hi);
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
   };

@@ -74,9 +74,11 @@ template <class Sink>
 inline Stats3D baseStats(const SurfaceCopy& surface, std::size_t ownBytes, double buildSeconds) {
   Stats3D s;
   s.faces = surface.faces.size();
+  s.triangles = surface.triangles;
   s.vertices = surface.vertices.size();
   s.bytes = ownBytes + surface.bytes();
-  s.bytesPerFace = s.faces ? static_cast<double>(s.bytes) / static_cast<double>(s.faces) : 0.0;
+  s.bytesPerFace =
+      s.triangles ? static_cast<double>(s.bytes) / static_cast<double>(s.triangles) : 0.0;
   s.buildSeconds = buildSeconds;
   return s;
 }

@@ -63,6 +63,11 @@ class PolyhedronBuilder {
   // convex across every edge, exact; reverses a surface that is clockwise throughout
   void checkConvexEdges();
 
+  // === faces as planes (polyhedron_planes.cpp)
+  // merges adjacent coplanar triangles (exact orient3d) into plane faces, with their corner
+  // loops and a fat triangle of each
+  void mergePlanes();
+
   // === the whole (polyhedron_centre.cpp)
   // a double point strictly inside every face plane, when one exists
   void findCentre();
@@ -72,6 +77,10 @@ class PolyhedronBuilder {
   void findBounds();
 
  private:
+  // the triangles of each plane face, in CSR form (planeTriangles)
+  void groupTrianglesByPlane(std::uint32_t planes);
+  // each plane face's corner loop and its fat triangle
+  void chainPlaneLoops();
   // "vertex K (x, y, z)" for vertex k, K its input index
   std::string vertexName(std::uint32_t k) const;
   // "edge A-B from (..) to (..)"

@@ -24,6 +24,7 @@ struct NoSink3D {
   void step(std::uint32_t, std::uint8_t, int) {}
   void cell(int, int, std::uint64_t, std::uint64_t, double, double) {}
   void crowded() {}
+  void zone(std::uint32_t, std::uint32_t, std::uint32_t, int) {}
   void fallback() {}
   void nonFinite() {}
   void atCentre() {}
@@ -47,6 +48,9 @@ struct TraceSink3D {
     t.t = tt;
   }
   void crowded() { t.crowded = true; }
+  void zone(std::uint32_t k, std::uint32_t a, std::uint32_t b, int s) {
+    t.zoneSteps.push_back({k, a, b, s});
+  }
   void radius(double d2, float in2, float out2, bool decided) {
     t.distance = std::sqrt(d2);
     t.innerRadius = std::sqrt(static_cast<double>(in2));

@@ -255,8 +255,12 @@ DualCubemap3D::DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGra
   try {
     const ConvexPolyhedron dual = ConvexPolyhedron::hullOf(normals);
     dualVertices_ = dual.vertexCount();
-    dualFaces_ = dual.faceCount();
-    labels_ = labelFaces(dual, graph, scaled);
+    dualFaces_ = dual.planeCount();
+    // the cube map locates in the dual's plane faces: each keeps its lowest triangle's label
+    const std::vector<std::uint32_t> byTriangle = labelFaces(dual, graph, scaled);
+    labels_.resize(dual.planeCount());
+    for (std::size_t f = 0; f < dual.planeCount(); ++f)
+      labels_[f] = byTriangle[dual.planeTriangles(f)[0]];
     cube_.emplace(dual);
   } catch (const GeometryError&) {
     dualFaces_ = 0;  // no dual: the grid still proposes, the trace lists no cube-map cells

@@ -1,0 +1,146 @@
+// Faces as planes and the cube map's zones: coplanar triangles merged exactly (a fan cap is
+// one face, a quad's two triangles one face), and the thin faces of a cylinder's or a
+// prism's side searched by bisection, exact against the independent reference on points
+// chosen where the bisection decides: on the zone's edges, one ulp off them, on the caps'
+// slivers and the rims.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <vector>
+
+#include "adversarial3d.hpp"
+#include "convexloc/generate3d.hpp"
+#include "convexloc/locate3d.hpp"
+#include "reference3d.hpp"
+
+using namespace convexloc;
+
+namespace {
+
+// points on every k-th edge of the mesh (middle and a third along), its ends, and their ulp
+// neighbours; edges chosen across all triangles so zone edges and fan diagonals come in
+std::vector<Vec3> edgePoints(const ConvexPolyhedron& p, std::size_t budget) {
+  std::vector<Vec3> out;
+  const auto v = p.vertices();
+  const auto tri = p.triangles();
+  const std::size_t step = std::max<std::size_t>(1, tri.size() / budget);
+  for (std::size_t t = 0; t < tri.size(); t += step)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = v[tri[t][k]], b = v[tri[t][(k + 1) % 3]];
+      for (double s : {0.5, 1.0 / 3, 0.9})
+        adversarial3d::withNeighbours(
+            out, {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), a.z + s * (b.z - a.z)});
+      adversarial3d::withNeighbours(out, a);
+    }
+  return out;
+}
+
+// every point's class from each 3D method, one by one and in a batch, equals the reference's
+void expectExact(const ConvexPolyhedron& p, const std::vector<Vec3>& points, const char* what) {
+  const reftest::Reference ref(p);
+  ASSERT_TRUE(ref.sound());
+  const CubemapLocator cm(p);
+  const WalkLocator walk(p);
+  std::vector<Location> batch(points.size());
+  cm.locate(points, batch);
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Location want = ref.locate(points[i]);
+    const Location got[] = {cm.locate(points[i]), batch[i], walk.locate(points[i]),
+                            i % 31 == 0 ? cm.trace(points[i]).result : want};
+    for (Location g : got)
+      if (g != want && ++wrong <= 5)
+        ADD_FAILURE() << what << " point " << i << " (" << points[i].x << ", " << points[i].y
+                      << ", " << points[i].z << "): got " << toString(g) << ", reference "
+                      << toString(want);
+  }
+  EXPECT_EQ(wrong, 0u) << what;
+}
+
+}  // namespace
+
+TEST(Planes, FanCapsAndQuadsMergeIntoOneFaceEach) {
+  for (std::size_t sides : {3u, 64u, 1000u}) {
+    const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Cylinder, 4 * sides - 4, 1));
+    EXPECT_EQ(p.faceCount(), 4 * sides - 4);
+    ASSERT_EQ(p.planeCount(), sides + 2) << sides;
+    std::size_t caps = 0;
+    for (std::size_t f = 0; f < p.planeCount(); ++f) {
+      const auto loop = p.planeLoop(f);
+      caps += loop.size() == sides;
+      if (loop.size() != sides) {
+        EXPECT_EQ(loop.size(), 4u);
+      }
+      // the fat triangle lies in the face: every corner of the loop is on its plane
+      const auto& t = p.planes()[f];
+      const auto v = p.vertices();
+      for (std::uint32_t w : loop) EXPECT_EQ(reftest::orient(v[t[0]], v[t[1]], v[t[2]], v[w]), 0);
+      // and its inner side holds the centre
+      EXPECT_GT(p.side(p.planeTriangles(f)[0], *p.centre()), 0);
+      EXPECT_GT(reftest::orient(v[t[0]], v[t[1]], v[t[2]], *p.centre()), 0);
+      for (std::uint32_t tri : p.planeTriangles(f)) EXPECT_EQ(p.planeOf()[tri], f);
+    }
+    EXPECT_EQ(caps, 2u) << sides;
+  }
+}
+
+TEST(Planes, WithoutCoplanarNeighboursFaceTIsTriangleT) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Geodesic, 1280, 1));
+  ASSERT_EQ(p.planeCount(), p.faceCount());
+  for (std::size_t t = 0; t < p.faceCount(); ++t) {
+    EXPECT_EQ(p.planes()[t], p.triangles()[t]);
+    EXPECT_EQ(p.planeOf()[t], t);
+  }
+  const ConvexPolyhedron cube(generatePolyhedron(PolyhedronKind::Coplanar, 300, 1));
+  EXPECT_EQ(cube.planeCount(), 6u);  // each face's k x k grid of squares is one face
+  EXPECT_EQ(CubemapLocator(cube).stats().faces, 6u);
+  EXPECT_EQ(HalfspaceLocator(cube).stats().triangles, cube.faceCount());
+}
+
+TEST(Planes, CylindersAndPrismsAreExact) {
+  for (auto [kind, n] : {std::pair{PolyhedronKind::Cylinder, std::size_t{252}},
+                         std::pair{PolyhedronKind::Cylinder, std::size_t{16380}},
+                         std::pair{PolyhedronKind::Prism, std::size_t{4000}}}) {
+    SCOPED_TRACE(std::string(toString(kind)) + " " + std::to_string(n));
+    const ConvexPolyhedron p(generatePolyhedron(kind, n, 1));
+    Rng rng(17);
+    std::vector<Vec3> points = generatePoints3D(p, 6000, 3, false);
+    auto append = [&](const std::vector<Vec3>& more) {
+      points.insert(points.end(), more.begin(), more.end());
+    };
+    append(generatePoints3D(p, 6000, 4, true));
+    append(edgePoints(p, 600));
+    append(adversarial3d::surfacePoints(p, 800, rng));
+    append(adversarial3d::cubemapPoints(p, CubemapLocator(p), rng));
+    expectExact(p, points, toString(kind).data());
+  }
+}
+
+TEST(Planes, ThinSideFacesAreSearchedByBisection) {
+  const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Cylinder, 16380, 1));
+  const CubemapLocator cm(p);
+  const Stats3D s = cm.stats();
+  EXPECT_GT(s.zoneCells, 0u);
+  EXPECT_LE(s.bytesPerFace, 128.0);
+  // a point on a side face, halfway up: its cell lies over the zone of 4096 faces, and the
+  // bisection takes about lg of the cell's share of them, then one or two plane tests
+  std::size_t traced = 0;
+  for (std::size_t f = 0; f < p.planeCount(); f += 37) {
+    if (p.planeLoop(f).size() != 4) continue;
+    const auto v = p.vertices();
+    const auto loop = p.planeLoop(f);
+    Vec3 m{0, 0, 0};
+    for (std::uint32_t w : loop) m = {m.x + v[w].x / 4, m.y + v[w].y / 4, m.z + v[w].z / 4};
+    const Trace3D t = cm.trace(m, TraceOptions{.radii = false});
+    if (t.zoneSteps.empty()) continue;
+    ++traced;
+    EXPECT_LE(t.zoneSteps.size(), 12u);
+    EXPECT_LE(t.faces.size(), 3u);
+    EXPECT_TRUE(std::any_of(t.faces.begin(), t.faces.end(),
+                            [&](const FaceTest& ft) { return ft.face == f || ft.sign <= 0; }));
+  }
+  EXPECT_GT(traced, 50u);
+}
