@@ -99,8 +99,9 @@ std::vector<std::uint32_t> mortonOrder(std::span<const Vec3> points) {
 
 // A biased randomized insertion order (Amenta, Choi and Rote) over n points stored in Morton
 // order: each point falls in the last round with probability 1/2, the one before with 1/4,
-// and so on (the first round takes the rest, about 1024 points); rounds run in turn, each in
-// Morton order. Random enough for the expected O(n log n), local enough for the caches.
+// and so on (the first round takes the rest, about 1024 points); rounds run in turn, the
+// first in random order, each later one in Morton order. Random enough for the expected
+// O(n log n), local enough for the caches.
 std::vector<std::uint32_t> insertionRounds(std::size_t n) {
   int rounds = 0;
   while ((std::size_t{1024} << rounds) < n) ++rounds;
@@ -115,6 +116,9 @@ std::vector<std::uint32_t> insertionRounds(std::size_t n) {
   for (int r = 0; r <= rounds; ++r) start[r + 1] += start[r];
   std::vector<std::uint32_t> order(n);
   for (std::uint32_t i = 0; i < n; ++i) order[start[roundOf[i]]++] = i;
+  // the first round in random order: a sweep along the curve would keep distant points in
+  // the conflict lists of the first triangles, and test them again at every step
+  for (std::size_t i = start[0]; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
   return order;
 }
 
@@ -329,6 +333,42 @@ std::array<std::uint32_t, 4> firstSimplex(std::span<const Vec3> points) {
   return {0, b, c, d};
 }
 
+// the index of the point where score is largest (the first of equals; NaN never wins)
+template <class Score>
+std::uint32_t argmax(std::span<const Vec3> points, Score score) {
+  std::uint32_t best = 0;
+  double top = -1.0;
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    if (const double s = score(points[i]); s > top) best = i, top = s;
+  return best;
+}
+
+// A large starting tetrahedron, so that most inner points are dropped at once: the points of
+// least and greatest x, the one farthest from their line, the one farthest from their plane
+// (chosen in floating point, checked exactly); `fallback` where the check fails.
+std::array<std::uint32_t, 4> spreadSimplex(std::span<const Vec3> points,
+                                           const std::array<std::uint32_t, 4>& fallback) {
+  const std::uint32_t a = argmax(points, [](Vec3 p) { return -p.x; });
+  const std::uint32_t b = argmax(points, [](Vec3 p) { return p.x; });
+  const Vec3 pa = points[a], u{points[b].x - pa.x, points[b].y - pa.y, points[b].z - pa.z};
+  auto cross = [&u, pa](Vec3 p) {
+    const Vec3 w{p.x - pa.x, p.y - pa.y, p.z - pa.z};
+    return Vec3{u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x};
+  };
+  const std::uint32_t c = argmax(points, [&](Vec3 p) {
+    const Vec3 n = cross(p);
+    return n.x * n.x + n.y * n.y + n.z * n.z;
+  });
+  const Vec3 n = cross(points[c]);
+  const std::uint32_t d = argmax(points, [&](Vec3 p) {
+    return std::fabs(n.x * (p.x - pa.x) + n.y * (p.y - pa.y) + n.z * (p.z - pa.z));
+  });
+  if (points[a] == points[b] || detail::collinear(points[a], points[b], points[c]) ||
+      orient3d(points[a], points[b], points[c], points[d]) == 0)
+    return fallback;
+  return {a, b, c, d};
+}
+
 }  // namespace
 
 ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
@@ -340,7 +380,7 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   }
   if (points.size() > kMaxPolyhedronVertices)
     throw UsageError("too many points for a hull: " + std::to_string(points.size()));
-  const std::array<std::uint32_t, 4> simplex = firstSimplex(points);
+  const std::array<std::uint32_t, 4> simplex = spreadSimplex(points, firstSimplex(points));
   // every input point is a vertex of the mesh, so that sourceVertex() names input indices;
   // those no triangle uses are dropped by the validation
   MeshData mesh;
