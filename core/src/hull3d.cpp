@@ -13,15 +13,17 @@
 //     tetrahedron, each face oriented with its opposite corner inside. A point that sees none
 //     of its four faces is inside or on it.
 //   - Inserting p, which sees some triangle (p is strictly outside H): the triangles p sees
-//     are connected and their union is a disc (at each vertex v the faces p sees are those
-//     whose normal n has n . (p - v) > 0, a contiguous run of v's convex cone of normals);
-//     its boundary, the horizon, is one simple cycle of edges, each between a triangle p sees
-//     and one it does not. Replacing the seen triangles by (a, b, p) for every horizon edge
-//     a -> b gives the boundary of H' = conv(H u {p}). No new triangle is degenerate: were p
-//     on the line ab, the seen triangle on that edge would have sign 0, not < 0. A new
-//     triangle may be coplanar with the unseen one across its horizon edge (p on that plane),
-//     never folded onto it: the unseen triangle's side of the line ab in its plane lies
-//     strictly inside the seen triangle's plane.
+//     are the part of H's surface in front of p, which the central projection from p maps
+//     one to one onto the inside of H's convex shadow: a disc. At each vertex v they are the
+//     faces whose normal n has n . (p - v) > 0, a contiguous run around v (v's normals bound
+//     a convex cone), so the disc's boundary pinches nowhere: the horizon is one simple
+//     cycle of edges, each between a triangle p sees and one it does not. Replacing the seen
+//     triangles by (a, b, p) for every horizon edge a -> b gives the boundary of
+//     H' = conv(H u {p}). No new triangle is degenerate: were p on the line ab, the seen
+//     triangle on that edge would have sign 0, not < 0. A new triangle may be coplanar with
+//     the unseen one across its horizon edge (p on that plane), never folded onto it: the
+//     unseen triangle's side of the line ab in its plane lies strictly inside the seen
+//     triangle's plane.
 //   - Conflicts: a point q that saw a removed triangle F and lies outside H' sees one of the
 //     new triangles. Take x' in H's interior near a point of F's relative interior: the
 //     segment x'q leaves H through F, and leaves H' at a point y outside H, which lies on a
@@ -30,12 +32,16 @@
 //     So q is tested against the new triangles only; seeing none, it is in H' and dropped.
 //   At the end every point was inserted (a corner of H) or dropped while in a subset of the
 //   final H: every input point is inside or on the hull, and every corner is an input point.
-//   Points on a face's plane are never inserted while that face stands, so coplanar points
-//   end inside or on the boundary; an inserted point that a later point leaves on an edge or
-//   inside a face keeps its triangles (all nondegenerate, coplanar neighbours allowed).
-//   ConvexPolyhedron then validates the triangles exactly once more.
-// Cost: O(n log n) expected for a random insertion order (a fixed seed: the same doubles give
-// the same triangles), each point in one conflict list, no allocation per step.
+//   A point on a triangle's plane does not see it: if it is in H it is dropped, not made a
+//   corner, so coplanar points end inside or on the boundary. A point inserted while it was
+//   outside, and left by later points on an edge or inside a face, keeps its triangles (all
+//   nondegenerate, coplanar neighbours allowed). ConvexPolyhedron validates the triangles
+//   exactly once more, and buildCone throws std::logic_error should the horizon ever not be
+//   one simple cycle (the argument above says it always is).
+// Cost: O(n log n) expected for a random insertion order; the order here is a biased
+// randomized one over the points sorted along a Morton curve (fixed seed: the same doubles
+// give the same triangles), from a large starting tetrahedron; each point sits in one
+// conflict list, and a step allocates nothing once the arrays have grown.
 #include <algorithm>
 #include <array>
 #include <bit>
