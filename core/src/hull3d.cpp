@@ -173,7 +173,7 @@ class IncrementalHull {
                                         // there (during one step), else kNone
   std::vector<std::uint32_t> visible_;  // the triangles p sees
   std::vector<std::pair<std::uint32_t, std::uint32_t>> horizon_;  // (seen triangle, edge)
-  std::vector<std::uint32_t> fresh_;    // the triangles made for p
+  std::vector<std::uint32_t> fresh_;                              // the triangles made for p
   std::uint32_t step_ = 1;
 };
 
@@ -210,9 +210,10 @@ std::uint32_t IncrementalHull::newFace(std::uint32_t a, std::uint32_t b, std::ui
 // the tetrahedron on the simplex, each face with its opposite corner inside, and every
 // other point in the conflict list of one face it sees
 void IncrementalHull::start(const std::array<std::uint32_t, 4>& s) {
-  const std::array<std::array<std::uint32_t, 4>, 4> sides = {
-      {{s[0], s[1], s[2], s[3]}, {s[0], s[1], s[3], s[2]}, {s[0], s[2], s[3], s[1]},
-       {s[1], s[2], s[3], s[0]}}};
+  const std::array<std::array<std::uint32_t, 4>, 4> sides = {{{s[0], s[1], s[2], s[3]},
+                                                              {s[0], s[1], s[3], s[2]},
+                                                              {s[0], s[2], s[3], s[1]},
+                                                              {s[1], s[2], s[3], s[0]}}};
   for (auto t : sides) {
     if (orient3d(pts_[t[0]], pts_[t[1]], pts_[t[2]], pts_[t[3]]) < 0) std::swap(t[1], t[2]);
     newFace(t[0], t[1], t[2]);
@@ -334,8 +335,8 @@ std::array<std::uint32_t, 4> firstSimplex(std::span<const Vec3> points) {
   for (d = c + 1; d < n && orient3d(points[0], points[b], points[c], points[d]) == 0; ++d) {
   }
   if (d == n)
-    throw GeometryError(zero + "are coplanar, on the plane through points 0, " +
-                        std::to_string(b) + " and " + std::to_string(c));
+    throw GeometryError(zero + "are coplanar, on the plane through points 0, " + std::to_string(b) +
+                        " and " + std::to_string(c));
   return {0, b, c, d};
 }
 

@@ -197,8 +197,8 @@ TEST(ExactHull3D, LatticePointsGiveTheCube) {
   ASSERT_TRUE(ref.sound());
   EXPECT_EQ(ref.planes(), 6u);
   for (Vec3 p : cloud) {
-    const bool surface = p.x == 0 || p.y == 0 || p.z == 0 || p.x == k - 1 || p.y == k - 1 ||
-                         p.z == k - 1;
+    const bool surface =
+        p.x == 0 || p.y == 0 || p.z == 0 || p.x == k - 1 || p.y == k - 1 || p.z == k - 1;
     EXPECT_EQ(ref.locate(p), surface ? Location::Boundary : Location::Inside);
   }
 }
@@ -327,7 +327,8 @@ TEST(ExactHull3D, DegenerateCloudsAreRefusedClearly) {
     return std::string("no error");
   };
   EXPECT_EQ(message({}), "a hull needs at least 4 points not in one plane, got none");
-  EXPECT_THAT(message({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), HasSubstr("at least 4 points not in one plane, got 3"));
+  EXPECT_THAT(message({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}),
+              HasSubstr("at least 4 points not in one plane, got 3"));
   EXPECT_THAT(message({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}),
               HasSubstr("the 4 points are all equal"));
   std::vector<Vec3> line, plane;
@@ -372,8 +373,7 @@ TEST(ExactHull2D, IsTheStrictlyConvexHullWithInputIndices) {
   ASSERT_GE(h.size(), 3u);
   for (std::size_t i = 0; i < h.size(); ++i) {
     EXPECT_EQ(h.vertex(i), cloud[h.sourceIndex()[i]]);
-    EXPECT_EQ(orient2d(h.vertex(i), h.vertex((i + 1) % h.size()), h.vertex((i + 2) % h.size())),
-              1);
+    EXPECT_EQ(orient2d(h.vertex(i), h.vertex((i + 1) % h.size()), h.vertex((i + 2) % h.size())), 1);
   }
   for (Vec2 p : cloud)
     for (std::size_t i = 0; i < h.size(); ++i)
