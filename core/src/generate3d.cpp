@@ -128,7 +128,7 @@ MeshData geodesic(std::size_t nu, double r, Vec3 centre) {
   return mesh;
 }
 
-// the triangles of the hull of `points` through Qhull, as a mesh
+// the triangles of the exact hull of `points`, as a mesh
 MeshData hullMesh(const std::vector<Vec3>& points) {
   MeshData mesh;
   ConvexPolyhedron hull = ConvexPolyhedron::hullOf(points);

@@ -2,7 +2,7 @@
 //
 // Byte 0 picks the dimension (high bit: 3D) and the coordinate encoding (see
 // fuzz_support.hpp), byte 1 the grid resolution and how the shape is made (2D: the points as
-// given or their convexHull; 3D: Qhull's hull, core's exact smallHull, or the box of two
+// given or their convexHull; 3D: core's exact hullOf, its exact smallHull, or the box of two
 // points), byte 2 the point count; the next bytes are the points, the rest query points. The
 // queries also include every vertex, every edge midpoint and the one-ulp neighbours of both. A
 // shape core rejects is fine; a shape it accepts must be exactly what it promises, and every method
@@ -81,8 +81,9 @@ convexloc::MeshData box(Vec3 a, Vec3 b) {
   return m;
 }
 
-// 3D: a polyhedron from up to 16 points (Qhull's hull, core's exact small hull, or the box
-// of two of them), queried at up to 48 points plus the hard ones
+// 3D: a polyhedron from up to 16 points (core's exact hull, its exact small hull, or the box
+// of two of them), queried at up to 48 points plus the hard ones; the hull must hold every
+// point it was made from
 void differential3D(ByteSource& src, Encoding encoding) {
   const std::uint8_t config = src.byte();
   const std::uint32_t resolution = resolution3dFrom(config & 7);
@@ -103,8 +104,8 @@ void differential3D(ByteSource& src, Encoding encoding) {
       poly.emplace(box(input[0], input[1]));
     }
   } catch (const convexloc::GeometryError& e) {
-    // Qhull must manage a hull of small integers whenever they are not all on one plane
-    if (mode == 0 && encoding == Encoding::SmallInt && !coplanar(input))
+    // the exact hull exists whenever the points are not all on one plane
+    if (mode == 0 && !coplanar(input))
       fail(std::string("hullOf rejected points that are not coplanar: ") + e.what());
     // a box is a valid polyhedron unless it is flat
     if (mode == 2 && input[0].x != input[1].x && input[0].y != input[1].y &&
@@ -113,6 +114,13 @@ void differential3D(ByteSource& src, Encoding encoding) {
     return;
   }
   checkPolyhedron(*poly);
+  if (mode == 0) {
+    const auto v = poly->vertices();
+    for (const auto& t : poly->triangles())
+      for (const Vec3& p : input)
+        if (exactOrient3d(v[t[0]], v[t[1]], v[t[2]], p) < 0)
+          fail("an input point " + show(p) + " lies outside its hull");
+  }
   std::vector<Vec3> queries;
   while (!src.empty() && queries.size() < 48) queries.push_back(coords.point3());
   addHardPoints3d(queries, *poly);

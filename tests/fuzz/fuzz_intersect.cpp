@@ -5,7 +5,7 @@
 // (fuzz_support.hpp). 2D: up to 24 points whose strictly convex hull is the polygon, then
 // lines through pairs of the following points, of vertices, and of their one-ulp
 // neighbours; each method's crossing, entry and exit must match the reference from every
-// vertex's exact side, and its clip the exact Cyrus-Beck clip rounded to nearest. 3D: Qhull's
+// vertex's exact side, and its clip the exact Cyrus-Beck clip rounded to nearest. 3D: the exact
 // hull of up to 12 points, planes through triples; both methods must match every vertex's
 // exact side.
 #include <gmpxx.h>

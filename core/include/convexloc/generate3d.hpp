@@ -1,6 +1,6 @@
 // convexloc — polyhedra and point sets for demos, tests and benchmarks. Deterministic:
 // the same kind, size and seed give the same doubles on every platform (the hull kinds go
-// through Qhull, deterministic for the same input).
+// through the exact hullOf, deterministic for the same input).
 #pragma once
 
 #include <cstddef>

@@ -25,6 +25,14 @@ class ConvexPolygon {
   // gives each point's source line (same size as `points`) for the error's line().
   explicit ConvexPolygon(std::span<const Vec2> points, std::span<const std::size_t> lines = {});
 
+  // The exact convex hull of `points` (every point inside or on it, every vertex an input
+  // point, no vertex on the segment joining its neighbours), counter-clockwise, with
+  // sourceIndex() giving each vertex's first index in `points` and droppedCount() the points
+  // that are not vertices. Throws GeometryError for a coordinate that is not finite, fewer
+  // than 3 points, or points all equal or collinear; UsageError for more than
+  // kMaxPolygonVertices.
+  static ConvexPolygon hullOf(std::span<const Vec2> points);
+
   // the vertices, counter-clockwise; edge i runs from vertex i to vertex (i + 1) % size()
   std::span<const Vec2> vertices() const noexcept { return vertices_; }
   // number of vertices, which is also the number of edges

@@ -94,12 +94,14 @@ class ConvexPolyhedron {
   // empty nor the size of what they annotate, or when the mesh is too large.
   explicit ConvexPolyhedron(const MeshData& mesh);
 
-  // The convex hull of `points`, through Qhull (triangulated output), then validated as
-  // above. Qhull decides in floating point; where its hull is not exactly convex for the
-  // exact predicates (a reflex edge or a fold between nearly coplanar triangles), the
-  // offending vertices are dropped from the input and Qhull runs again, so the result may
-  // omit points within rounding distance of its surface. Throws GeometryError when the
-  // points are fewer than 4, not finite, or coplanar.
+  // The exact convex hull of `points` (hull3d.cpp: randomized incremental insertion, every
+  // decision an exact orient3d sign), then validated as above: every point is inside or on
+  // it, every vertex is an input point (sourceVertex() gives its index in `points`), points
+  // on a face's plane stay inside or on that face; a point that an earlier step made a
+  // vertex and a later one left on an edge or inside a face may stay a vertex, between
+  // coplanar triangles. The same points give the same triangles. Throws GeometryError when
+  // a coordinate is not finite, or the points are fewer than 4, all equal, collinear or
+  // coplanar; UsageError for more than kMaxPolyhedronVertices points.
   static ConvexPolyhedron hullOf(std::span<const Vec3> points);
 
   // the vertices (merged, only those used by a face)

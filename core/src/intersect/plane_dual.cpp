@@ -8,7 +8,7 @@
 // of those a_f, that is when the ray from the origin along w leaves P* through the face dual
 // to v: cube-map point location's question, asked of P*. Only the directions of the a_f
 // matter. Two tables answer it here:
-//   - the cube map of Q, Qhull's hull of the unit outward face normals (the dual itself),
+//   - the cube map of Q, the exact hull of the unit outward face normals (the dual itself),
 //     which lists per cell the faces of Q the cell's rays may leave through: for `info`, the
 //     viewer and the trace (how many faces a plane's cells list);
 //   - the direction grid, a cube map of directions with side g per cube face and no lists:

@@ -38,8 +38,8 @@ struct StarRecord {
 
 class DualCubemap3D {
  public:
-  // builds the dual of the polyhedron (Qhull on its unit face normals, then the cube map)
-  // and the direction grid with its proposals
+  // builds the dual of the polyhedron (the exact hull of its unit face normals, then the
+  // cube map) and the direction grid with its proposals
   DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGraph& graph);
   // The grid cells of the plane's w (G largest along it) and of -w; false when w has none
   // (the three points are collinear in doubles).
