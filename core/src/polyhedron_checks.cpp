@@ -2,6 +2,7 @@
 // topology, its volume, zero-area triangles and convexity across every edge.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 
@@ -390,10 +391,38 @@ void PolyhedronBuilder::throwReflex(std::uint32_t firstReflex, std::uint32_t fir
                                     bool reflexIsMinority) const {
   const std::uint32_t h = reflexIsMinority ? firstReflex : firstConvex;
   const std::uint32_t t = h / 3, k = h % 3, u = out_.neighbours_[t][k];
+  if (out_.sourceFace_[t] == out_.sourceFace_[u]) throwNotPlanar(t, u);
   throw GeometryError("not convex: reflex " +
                           edgeName(out_.triangles_[t][k], out_.triangles_[t][(k + 1) % 3]) +
                           " between " + faceName(t) + " and " + faceName(u),
                       std::max(triangleLine(t), triangleLine(u)));
+}
+
+void PolyhedronBuilder::throwNotPlanar(std::uint32_t t, std::uint32_t u) const {
+  // the fan diagonal of one input face folds inwards: the face's corners are not in one plane
+  const Triangle& a = out_.triangles_[t];
+  std::uint32_t w = out_.triangles_[u][0];
+  for (std::uint32_t x : out_.triangles_[u])
+    if (x != a[0] && x != a[1] && x != a[2]) w = x;
+  const std::vector<Vec3>& v = out_.vertices_;
+  long double p[3][3];
+  const long double six = sixVolume(v[a[0]], v[a[1]], v[a[2]], v[w], p);
+  const long double n[3] = {p[0][1] * p[1][2] - p[0][2] * p[1][1],
+                            p[0][2] * p[1][0] - p[0][0] * p[1][2],
+                            p[0][0] * p[1][1] - p[0][1] * p[1][0]};
+  const long double off = std::fabs(six) / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  long double size = 0;
+  for (const auto& row : p) size = std::max(size, std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]));
+  char figures[96];
+  std::snprintf(figures, sizeof figures, "%.3Lg off the plane (%.3Lg of the face's size)", off,
+                off / size);
+  throw GeometryError(faceName(t) + " is not planar: " + vertexName(w) + " lies " + figures +
+                          " through vertices " + std::to_string(out_.sourceVertex_[a[0]]) + ", " +
+                          std::to_string(out_.sourceVertex_[a[1]]) + " and " +
+                          std::to_string(out_.sourceVertex_[a[2]]) +
+                          "; a mesh whose coordinates were rounded can be read as the convex hull "
+                          "of its vertices instead (--hull; in Python, hull=True)",
+                      triangleLine(t));
 }
 
 }  // namespace convexloc::detail

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "adversarial3d.hpp"
+#include "convexloc/error.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate3d.hpp"
 #include "reference3d.hpp"
@@ -143,4 +144,33 @@ TEST(Planes, ThinSideFacesAreSearchedByBisection) {
                             [&](const FaceTest& ft) { return ft.face == f || ft.sign <= 0; }));
   }
   EXPECT_GT(traced, 50u);
+}
+
+TEST(Planes, AFaceNotExactlyPlanarIsNamedWithItsDistanceAndTheWayOut) {
+  // a cube given as 6 quads, one corner pushed 1e-9 into the cube: the top quad folds inwards
+  MeshData m;
+  for (double z : {-1.0, 1.0})
+    for (double y : {-1.0, 1.0})
+      for (double x : {-1.0, 1.0}) m.addVertex({x, y, z});
+  m.vertices[7].z = 1 - 1e-9;
+  m.addFace({7, 6, 4, 5});  // top, from the pushed corner
+  m.addFace({0, 2, 3, 1});  // bottom
+  m.addFace({0, 1, 5, 4});
+  m.addFace({2, 6, 7, 3});
+  m.addFace({0, 4, 6, 2});
+  m.addFace({1, 3, 7, 5});
+  try {
+    const ConvexPolyhedron p(m);
+    FAIL() << "accepted a face that folds inwards";
+  } catch (const GeometryError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("face 0 is not planar"), std::string::npos) << what;
+    EXPECT_NE(what.find("vertex 7"), std::string::npos) << what;
+    EXPECT_NE(what.find("1e-09 off the plane"), std::string::npos) << what;
+    EXPECT_NE(what.find("--hull"), std::string::npos) << what;
+  }
+  // the hull of the same corners is valid: each quad at the pushed corner folds outwards
+  const ConvexPolyhedron hull = ConvexPolyhedron::hullOf(m.vertices);
+  EXPECT_EQ(hull.vertexCount(), 8u);
+  EXPECT_EQ(hull.planeCount(), 9u);  // the three faces at the pushed corner fold in two
 }

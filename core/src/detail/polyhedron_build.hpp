@@ -94,6 +94,8 @@ class PolyhedronBuilder {
   // the input vertices of the edges listed by their first corner
   void blame(const std::vector<std::uint32_t>& corners) const;
   // throws for the first reflex edge of the minority side (sign < 0: the reflex ones)
+  // throws for an input face whose fan diagonal t | u folds inwards: not planar, by how much
+  [[noreturn]] void throwNotPlanar(std::uint32_t t, std::uint32_t u) const;
   [[noreturn]] void throwReflex(std::uint32_t firstReflex, std::uint32_t firstConvex,
                                 bool reflexIsMinority) const;
   // each vertex as seen from the centre (or the exact centroid of the tetrahedron), scaled
