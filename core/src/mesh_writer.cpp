@@ -84,8 +84,13 @@ std::string decimal(double v) {
 
 // `v` as a float, which must hold it exactly (`format` names the file format in the error)
 float exactFloat(double v, const char* format) {
-  if (!(std::fabs(v) <= static_cast<double>(std::numeric_limits<float>::max())) ||
-      static_cast<double>(static_cast<float>(v)) != v)
+  if (!(std::fabs(v) <= static_cast<double>(std::numeric_limits<float>::max())))
+    throw Error(std::string(format) + " stores coordinates as float32, and " + decimal(v) +
+                " is beyond its range: write OFF, OBJ or PLY with double properties instead");
+  // through a volatile: GCC 12.2's SLP vectorizer may fold a double-float-double round trip
+  // over neighbouring coordinates into nothing
+  volatile float rounded = static_cast<float>(v);
+  if (static_cast<double>(rounded) != v)
     throw Error(std::string(format) + " stores coordinates as float32, and " + decimal(v) +
                 " is not one: write OFF, OBJ or PLY with double properties instead");
   return static_cast<float>(v);
