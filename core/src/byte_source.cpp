@@ -65,7 +65,9 @@ std::size_t ByteSource::ensure(std::size_t n) {
 }
 
 std::string_view ByteSource::peek(std::size_t n) {
-  return {data_ + begin_, ensure(std::min(n, kChunk))};
+  // ensure() may move the unread bytes: only then do data_ and begin_ say where they are
+  const std::size_t available = ensure(std::min(n, kChunk));
+  return {data_ + begin_, available};
 }
 
 std::string_view ByteSource::take(std::size_t n) {

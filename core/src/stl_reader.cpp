@@ -109,7 +109,7 @@ std::uint32_t binaryCount(ByteSource& src) {
     failAtByte(80, "the header announces " + std::to_string(count) +
                        " facets, which take 84 + 50 * " + std::to_string(count) + " = " +
                        std::to_string(expected) + " bytes, but the file has " +
-                       std::to_string(size) + holds);
+                       std::to_string(size) + " bytes" + holds);
   }
   return count;
 }
