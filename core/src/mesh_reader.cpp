@@ -45,9 +45,10 @@ MeshData readMesh(const std::string& path) {
 
 ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
   if (mesh.faceCount() == 0 && !mesh.vertices.empty())
-    throw GeometryError("the file has " + std::to_string(mesh.vertices.size()) +
-                        " vertices and no faces (a point cloud): take the convex hull of its "
-                        "vertices instead (--hull; hull=True in Python)");
+    throw GeometryError("the mesh has no faces, only " + std::to_string(mesh.vertices.size()) +
+                            " vertices (a point cloud?): take the convex hull of its vertices "
+                            "instead (--hull; hull=True in Python)",
+                        mesh.vertexLines.empty() ? 0 : mesh.vertexLines.back());
   return ConvexPolyhedron(mesh);
 }
 
