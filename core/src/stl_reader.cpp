@@ -7,7 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <string>
-#include <unordered_map>
+#include <vector>
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
@@ -27,53 +27,71 @@ constexpr std::size_t kFacetBytes = 50;   // normal, 3 vertices (float32 each), 
 
 // === Welding: one vertex for every set of exactly equal corners
 
-// the bits of a corner's coordinates, -0 read as +0 (they are equal)
-struct CornerKey {
-  std::uint64_t x, y, z;
-  bool operator==(const CornerKey&) const = default;
-};
+// the bits of a coordinate, -0 read as +0 (they are equal)
+std::uint64_t coordinateBits(double v) noexcept {
+  return std::bit_cast<std::uint64_t>(v + 0.0);
+}
 
-// a hash of the three coordinates' bits
-struct CornerHash {
-  std::size_t operator()(const CornerKey& k) const noexcept {
-    std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
-    h = (h ^ (h >> 29) ^ k.y) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 31) ^ k.z) * 0x94D049BB133111EBull;
-    return static_cast<std::size_t>(h ^ (h >> 32));
-  }
-};
+// a hash of a corner's coordinates
+std::uint64_t cornerHash(Vec3 p) noexcept {
+  std::uint64_t h = coordinateBits(p.x) * 0x9E3779B97F4A7C15ull;
+  h = (h ^ (h >> 29) ^ coordinateBits(p.y)) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 31) ^ coordinateBits(p.z)) * 0x94D049BB133111EBull;
+  return h ^ (h >> 32);
+}
 
-// Gives each distinct corner the index of its first appearance in the mesh.
+// Gives each distinct corner the index of its first appearance in the mesh: an open-addressing
+// table of vertex indices (plus one; 0 is empty), at most half full, probed linearly.
 class Welder {
  public:
-  explicit Welder(MeshData& mesh) : mesh_(mesh) {}
+  explicit Welder(MeshData& mesh) : mesh_(mesh), slots_(64, 0) {}
   // room for about `facets` facets
   void reserve(std::size_t facets) {
-    map_.reserve(facets / 2 + 4);
     mesh_.vertices.reserve(facets / 2 + 4);
     mesh_.indices.reserve(3 * facets);
     mesh_.faceStart.reserve(facets + 1);
+    std::size_t want = 64;
+    while (want < facets + 8) want *= 2;  // about 2 slots a vertex: a closed mesh has F / 2
+    if (want > slots_.size()) rehash(want);
   }
   // the vertex at `p`, added if new (with its `line`, when the file has lines); false when
   // the mesh would hold more than kMaxMeshElements vertices
   bool vertex(Vec3 p, std::size_t line, std::uint32_t& index) {
-    const CornerKey key{std::bit_cast<std::uint64_t>(p.x + 0.0),
-                        std::bit_cast<std::uint64_t>(p.y + 0.0),
-                        std::bit_cast<std::uint64_t>(p.z + 0.0)};
-    const auto [it, fresh] =
-        map_.try_emplace(key, static_cast<std::uint32_t>(mesh_.vertices.size()));
-    if (fresh) {
-      if (mesh_.vertices.size() >= kMaxMeshElements) return false;
-      mesh_.vertices.push_back(p);
-      if (line != 0) mesh_.vertexLines.push_back(line);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = cornerHash(p) & mask;; i = (i + 1) & mask) {
+      const std::uint32_t slot = slots_[i];
+      if (slot == 0) break;
+      const Vec3 q = mesh_.vertices[slot - 1];
+      if (q.x == p.x && q.y == p.y && q.z == p.z) {
+        index = slot - 1;
+        return true;
+      }
     }
-    index = it->second;
+    if (mesh_.vertices.size() >= kMaxMeshElements) return false;
+    index = static_cast<std::uint32_t>(mesh_.vertices.size());
+    mesh_.vertices.push_back(p);
+    if (line != 0) mesh_.vertexLines.push_back(line);
+    place(index);
+    if (2 * mesh_.vertices.size() > slots_.size()) rehash(2 * slots_.size());
     return true;
   }
 
  private:
+  // puts vertex `v` in the first empty slot of its probe sequence
+  void place(std::uint32_t v) {
+    const std::size_t mask = slots_.size() - 1;
+    std::size_t i = cornerHash(mesh_.vertices[v]) & mask;
+    while (slots_[i] != 0) i = (i + 1) & mask;
+    slots_[i] = v + 1;
+  }
+  // a table of `size` slots (a power of 2) holding every vertex so far
+  void rehash(std::size_t size) {
+    slots_.assign(size, 0);
+    for (std::uint32_t v = 0; v < mesh_.vertices.size(); ++v) place(v);
+  }
+
   MeshData& mesh_;
-  std::unordered_map<CornerKey, std::uint32_t, CornerHash> map_;
+  std::vector<std::uint32_t> slots_;
 };
 
 std::string tooManyVertices() {
