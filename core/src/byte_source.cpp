@@ -30,8 +30,7 @@ std::optional<std::uint64_t> remainingSize(std::FILE* file) {
 
 }  // namespace
 
-ByteSource::ByteSource(std::FILE* file)
-    : file_(file), buf_(kChunk), size_(remainingSize(file)) {
+ByteSource::ByteSource(std::FILE* file) : file_(file), buf_(kChunk), size_(remainingSize(file)) {
   data_ = buf_.data();
 }
 

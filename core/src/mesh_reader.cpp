@@ -31,14 +31,10 @@ MeshData readMesh(const std::string& path) {
     throw UsageError("unknown mesh format: '" + path + "' (expected .off, .obj, .stl or .ply)");
   InputFile in(path);
   switch (*format) {
-    case MeshFormat::Off:
-      return parseOff(in.get());
-    case MeshFormat::Obj:
-      return parseObj(in.get());
-    case MeshFormat::Stl:
-      return parseStl(in.get());
-    case MeshFormat::Ply:
-      break;
+    case MeshFormat::Off: return parseOff(in.get());
+    case MeshFormat::Obj: return parseObj(in.get());
+    case MeshFormat::Stl: return parseStl(in.get());
+    case MeshFormat::Ply: break;
   }
   return parsePly(in.get());
 }

@@ -99,7 +99,8 @@ float exactFloat(double v, const char* format) {
 // how many triangles a fan triangulation of every face makes
 std::size_t fanTriangles(const MeshData& mesh) {
   std::size_t n = 0;
-  for (std::size_t f = 0; f < mesh.faceCount(); ++f) n += std::max<std::size_t>(mesh.face(f).size(), 2) - 2;
+  for (std::size_t f = 0; f < mesh.faceCount(); ++f)
+    n += std::max<std::size_t>(mesh.face(f).size(), 2) - 2;
   return n;
 }
 
@@ -213,7 +214,8 @@ void writePly(std::FILE* out, const MeshData& mesh, PlyEncoding encoding, bool f
       for (const Vec3& p : mesh.vertices)
         for (double v : {p.x, p.y, p.z}) exactFloat(v, "PLY with float properties");
     writeVertices(w, mesh, "");
-    writeFaces(w, mesh, 0, [](std::string& text, auto face) { text += std::to_string(face.size()); });
+    writeFaces(w, mesh, 0,
+               [](std::string& text, auto face) { text += std::to_string(face.size()); });
   }
   w.flush();
 }

@@ -31,9 +31,9 @@ bool typeNamed(std::string_view word, PlyType& type) {
     PlyType type;
   };
   static constexpr Named kNames[] = {
-      {"char", "int8", PlyType::Int8},       {"uchar", "uint8", PlyType::UInt8},
-      {"short", "int16", PlyType::Int16},    {"ushort", "uint16", PlyType::UInt16},
-      {"int", "int32", PlyType::Int32},      {"uint", "uint32", PlyType::UInt32},
+      {"char", "int8", PlyType::Int8},        {"uchar", "uint8", PlyType::UInt8},
+      {"short", "int16", PlyType::Int16},     {"ushort", "uint16", PlyType::UInt16},
+      {"int", "int32", PlyType::Int32},       {"uint", "uint32", PlyType::UInt32},
       {"float", "float32", PlyType::Float32}, {"double", "float64", PlyType::Float64}};
   for (const Named& n : kNames)
     if (word == n.a || word == n.b) {
@@ -91,7 +91,8 @@ struct HeaderReading {
     if (!integer(count, n) || n < 0)
       throw ParseError("the element count is not a non-negative integer: " + quote(count),
                        src.line());
-    if ((name == "vertex" || name == "face") && static_cast<unsigned long long>(n) > kMaxMeshElements)
+    if ((name == "vertex" || name == "face") &&
+        static_cast<unsigned long long>(n) > kMaxMeshElements)
       throw ParseError("the header announces " + std::string(count) + " " + std::string(name) +
                            " records; at most " + std::to_string(kMaxMeshElements) +
                            " are supported",
@@ -103,8 +104,7 @@ struct HeaderReading {
 
   // "property TYPE NAME" or "property list COUNT_TYPE TYPE NAME"
   void property(Tokens& t) {
-    if (header.elements.empty())
-      throw ParseError("a property before any element", src.line());
+    if (header.elements.empty()) throw ParseError("a property before any element", src.line());
     if (++properties > kMaxHeaderProperties)
       throw ParseError("more than " + std::to_string(kMaxHeaderProperties) + " properties",
                        src.line());

@@ -29,28 +29,21 @@ using detail::Tokens;
 
 // the name of a type, as messages give it
 const char* typeName(PlyType t) {
-  static constexpr const char* kNames[] = {"char",  "uchar", "short", "ushort",
-                                           "int",   "uint",  "float", "double"};
+  static constexpr const char* kNames[] = {"char", "uchar", "short", "ushort",
+                                           "int",  "uint",  "float", "double"};
   return kNames[static_cast<int>(t)];
 }
 
 // whether integer type `t` holds `v`
 bool holds(PlyType t, long long v) {
   switch (t) {
-    case PlyType::Int8:
-      return v >= -128 && v <= 127;
-    case PlyType::UInt8:
-      return v >= 0 && v <= 255;
-    case PlyType::Int16:
-      return v >= -32768 && v <= 32767;
-    case PlyType::UInt16:
-      return v >= 0 && v <= 65535;
-    case PlyType::Int32:
-      return v >= -2147483648LL && v <= 2147483647LL;
-    case PlyType::UInt32:
-      return v >= 0 && v <= 4294967295LL;
-    default:
-      return false;
+    case PlyType::Int8: return v >= -128 && v <= 127;
+    case PlyType::UInt8: return v >= 0 && v <= 255;
+    case PlyType::Int16: return v >= -32768 && v <= 32767;
+    case PlyType::UInt16: return v >= 0 && v <= 65535;
+    case PlyType::Int32: return v >= -2147483648LL && v <= 2147483647LL;
+    case PlyType::UInt32: return v >= 0 && v <= 4294967295LL;
+    default: return false;
   }
 }
 
@@ -58,18 +51,12 @@ bool holds(PlyType t, long long v) {
 long long binaryInteger(PlyType t, const char* p, bool big) {
   using detail::loadScalar;
   switch (t) {
-    case PlyType::Int8:
-      return loadScalar<std::int8_t>(p, big);
-    case PlyType::UInt8:
-      return loadScalar<std::uint8_t>(p, big);
-    case PlyType::Int16:
-      return loadScalar<std::int16_t>(p, big);
-    case PlyType::UInt16:
-      return loadScalar<std::uint16_t>(p, big);
-    case PlyType::Int32:
-      return loadScalar<std::int32_t>(p, big);
-    default:
-      return loadScalar<std::uint32_t>(p, big);
+    case PlyType::Int8: return loadScalar<std::int8_t>(p, big);
+    case PlyType::UInt8: return loadScalar<std::uint8_t>(p, big);
+    case PlyType::Int16: return loadScalar<std::int16_t>(p, big);
+    case PlyType::UInt16: return loadScalar<std::uint16_t>(p, big);
+    case PlyType::Int32: return loadScalar<std::int32_t>(p, big);
+    default: return loadScalar<std::uint32_t>(p, big);
   }
 }
 
@@ -89,7 +76,9 @@ std::string recordName(const PlyElement& e, std::uint64_t r) {
 class PlyBody {
  public:
   PlyBody(ByteSource& src, const PlyHeader& header)
-      : src_(src), h_(header), ascii_(header.storage == PlyStorage::Ascii),
+      : src_(src),
+        h_(header),
+        ascii_(header.storage == PlyStorage::Ascii),
         big_(header.storage == PlyStorage::BinaryBigEndian),
         vertexCount_(header.elements[header.vertexElement].count) {}
 
@@ -114,8 +103,8 @@ class PlyBody {
   // room for the vertices or faces of element `i`, as far as the rest of the file can hold
   void reserveFor(std::size_t i, const PlyElement& e) {
     if (i != h_.vertexElement && i != h_.faceElement) return;
-    const std::uint64_t left = src_.size() ? *src_.size() - std::min(*src_.size(), src_.offset())
-                                           : std::uint64_t{1} << 20;
+    const std::uint64_t left =
+        src_.size() ? *src_.size() - std::min(*src_.size(), src_.offset()) : std::uint64_t{1} << 20;
     const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(e.count, left / 4));
     if (i == h_.vertexElement) mesh_.vertices.reserve(n);
     if (i == h_.faceElement) mesh_.faceStart.reserve(n + 1);
@@ -145,7 +134,8 @@ class PlyBody {
     if (static_cast<unsigned long long>(n) > vertexCount_)
       fail(at, "face " + std::to_string(r) + " lists " + std::to_string(n) +
                    " vertices; the file has " + std::to_string(vertexCount_) + hint);
-    if (mesh_.indices.size() + static_cast<std::size_t>(n) > std::numeric_limits<std::uint32_t>::max())
+    if (mesh_.indices.size() + static_cast<std::size_t>(n) >
+        std::numeric_limits<std::uint32_t>::max())
       fail(at, "more face indices than a mesh can hold");
   }
 
@@ -210,7 +200,8 @@ class PlyBody {
   // a list property read past
   void binarySkipList(const PlyProperty& p, const PlyElement& e, std::uint64_t r,
                       std::uint64_t at) {
-    const long long n = binaryInteger(p.countType, bytes(plyTypeSize(p.countType), e, r).data(), big_);
+    const long long n =
+        binaryInteger(p.countType, bytes(plyTypeSize(p.countType), e, r).data(), big_);
     if (n < 0) fail(at, recordName(e, r) + ": list '" + p.name + "' has a negative count");
     const std::uint64_t want = static_cast<std::uint64_t>(n) * plyTypeSize(p.type);
     const std::uint64_t from = src_.offset();

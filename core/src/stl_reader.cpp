@@ -157,8 +157,8 @@ MeshData parseBinary(ByteSource& src) {
     mesh.addFace({corners[0], corners[1], corners[2]});
   }
   if (!src.atEnd())
-    failAtByte(src.offset(), "unexpected bytes after the last of the " + std::to_string(count) +
-                                 " facets");
+    failAtByte(src.offset(),
+               "unexpected bytes after the last of the " + std::to_string(count) + " facets");
   return mesh;
 }
 
@@ -185,8 +185,7 @@ struct AsciiStl {
 
   // the next statement, which must be `word` (what: how the message names it)
   void expect(std::string_view word, const std::string& what) {
-    if (!next())
-      throw ParseError("the file ends where " + what + " should follow", src.line());
+    if (!next()) throw ParseError("the file ends where " + what + " should follow", src.line());
     if (keyword != word)
       throw ParseError("expected " + what + ", found " + quote(keyword), src.line());
   }
@@ -234,9 +233,10 @@ struct AsciiStl {
         throw ParseError("expected 'solid', found " + quote(keyword), src.line());
       for (;;) {
         if (!next())
-          throw ParseError("the file ends before 'endsolid' (or it is a binary STL cut short "
-                           "inside its 84-byte header)",
-                           src.line());
+          throw ParseError(
+              "the file ends before 'endsolid' (or it is a binary STL cut short "
+              "inside its 84-byte header)",
+              src.line());
         if (keyword == "endsolid") break;
         if (keyword != "facet")
           throw ParseError("expected 'facet' or 'endsolid', found " + quote(keyword), src.line());

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "convexloc/error.hpp"
@@ -33,11 +33,13 @@ MeshData floatSphere() {
 }
 
 // the formats, by benchmark name and file name
-constexpr std::pair<const char*, const char*> kFormats[] = {
-    {"off", "sphere.off"},           {"stl_ascii", "sphere_ascii.stl"},
-    {"stl_binary", "sphere.stl"},    {"ply_ascii", "sphere_ascii.ply"},
-    {"ply_le_float", "sphere_f.ply"}, {"ply_le_double", "sphere_le.ply"},
-    {"ply_be_double", "sphere_be.ply"}};
+constexpr std::pair<const char*, const char*> kFormats[] = {{"off", "sphere.off"},
+                                                            {"stl_ascii", "sphere_ascii.stl"},
+                                                            {"stl_binary", "sphere.stl"},
+                                                            {"ply_ascii", "sphere_ascii.ply"},
+                                                            {"ply_le_float", "sphere_f.ply"},
+                                                            {"ply_le_double", "sphere_le.ply"},
+                                                            {"ply_be_double", "sphere_be.ply"}};
 
 // writes `m` in format `k` of kFormats to `out`
 void writeFormat(std::size_t k, std::FILE* out, const MeshData& m) {

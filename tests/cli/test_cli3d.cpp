@@ -229,10 +229,11 @@ TEST_F(Cli, BadUsage3dExitsTwoWithUsage) {
   const std::string shape = data("cube3d.off"), points = data("cube3d_points.txt");
   // a polygon's method for a polyhedron, and the other way round, name the right choices
   for (const char* m : {"halfplane", "wedge", "slab", "uniform", "polar"}) {
-    expectUsage(run("classify " + shape + " " + points + " --method " + m),
-                std::string("method '") + m +
-                    "' is for polygons; for a polyhedron (.off/.obj/.stl/.ply) choose one of halfspace, "
-                    "walk, cubemap");
+    expectUsage(
+        run("classify " + shape + " " + points + " --method " + m),
+        std::string("method '") + m +
+            "' is for polygons; for a polyhedron (.off/.obj/.stl/.ply) choose one of halfspace, "
+            "walk, cubemap");
     expectUsage(run("info " + shape + " -m " + m), "is for polygons");
   }
   for (const char* m : kMethods3D) {

@@ -36,8 +36,8 @@ TEST_F(CliFormats, GeneratedPlyAndStlClassifyAsTheOff) {
     const std::string off = runTo(gen, "shape.off");
     const std::string ply = runTo(gen + " --format ply", "shape.ply");
     const std::string stl = runTo(gen + " --format stl", "shape.STL");
-    const std::string points =
-        runTo("generate points --near-boundary --count 3000 --seed 4 --shape " + q(off), "points.txt");
+    const std::string points = runTo(
+        "generate points --near-boundary --count 3000 --seed 4 --shape " + q(off), "points.txt");
     for (const char* m : kMethods3D) {
       const std::string want = classify(off, points, m);
       EXPECT_EQ(classify(ply, points, m), want) << m;
@@ -53,8 +53,8 @@ TEST_F(CliFormats, ShippedStlAndPlyFilesWork) {
   Result info = run("info " + q(cylinder));
   EXPECT_EQ(info.code, 0) << info.err;
   EXPECT_NE(info.out.find("128 kept of 128 read"), std::string::npos) << info.out;
-  const std::string points =
-      runTo("generate points --near-boundary --count 2000 --seed 9 --shape " + q(cylinder), "p.txt");
+  const std::string points = runTo(
+      "generate points --near-boundary --count 2000 --seed 9 --shape " + q(cylinder), "p.txt");
   const std::string want = classify(cylinder, points, "halfspace");
   EXPECT_EQ(classify(cylinder, points, "cubemap"), want);
   EXPECT_EQ(classify(cylinder, points, "walk", "--hull"), want);
@@ -95,7 +95,8 @@ TEST_F(CliFormats, HullOfPolygonPointsInAnyOrder) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.out, "inside\nboundary\noutside\n");
   std::ofstream(scratch("lines.txt")) << "0 2 1 2\n0 0.5 1 0.5\n";
-  Result l = run("intersect " + q(scratch("cloud.txt")) + " " + q(scratch("lines.txt")) + " --hull");
+  Result l =
+      run("intersect " + q(scratch("cloud.txt")) + " " + q(scratch("lines.txt")) + " --hull");
   EXPECT_EQ(l.code, 0) << l.err;
   EXPECT_EQ(l.out, "misses\ncrosses\n");
   Result info = run("info " + q(scratch("cloud.txt")) + " --hull");
@@ -103,8 +104,10 @@ TEST_F(CliFormats, HullOfPolygonPointsInAnyOrder) {
 }
 
 TEST_F(CliFormats, BadStlAndPlyNameTheLineOrTheByte) {
-  std::ofstream(scratch("bad.stl"), std::ios::binary) << "solid x\nfacet normal 0 0 1\nvertex 0 0 0\n";
-  expectRejected(run("info " + q(scratch("bad.stl"))), scratch("bad.stl") + ":3: expected 'outer loop'");
+  std::ofstream(scratch("bad.stl"), std::ios::binary)
+      << "solid x\nfacet normal 0 0 1\nvertex 0 0 0\n";
+  expectRejected(run("info " + q(scratch("bad.stl"))),
+                 scratch("bad.stl") + ":3: expected 'outer loop'");
   std::string binary(80, ' ');
   binary += std::string("\x05\x00\x00\x00", 4);
   std::ofstream(scratch("short.stl"), std::ios::binary) << binary;
@@ -112,7 +115,8 @@ TEST_F(CliFormats, BadStlAndPlyNameTheLineOrTheByte) {
                  scratch("short.stl") + ": byte 80: the header announces 5 facets");
   std::ofstream(scratch("bad.ply"), std::ios::binary)
       << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n";
-  expectRejected(run("info " + q(scratch("bad.ply"))), scratch("bad.ply") + ":3: element 'vertex' has no property 'y'");
+  expectRejected(run("info " + q(scratch("bad.ply"))),
+                 scratch("bad.ply") + ":3: element 'vertex' has no property 'y'");
   expectRejected(run("info " + q(scratch("bad.ply")) + " --hull"), "no property 'y'");
 }
 

@@ -36,7 +36,8 @@ Corner cornerOf(Vec3 p) {
 std::vector<Facet> surfaceOf(const ConvexPolyhedron& p) {
   std::vector<Facet> out;
   for (const auto& t : p.triangles()) {
-    Facet f{cornerOf(p.vertices()[t[0]]), cornerOf(p.vertices()[t[1]]), cornerOf(p.vertices()[t[2]])};
+    Facet f{cornerOf(p.vertices()[t[0]]), cornerOf(p.vertices()[t[1]]),
+            cornerOf(p.vertices()[t[2]])};
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
     out.push_back(f);
   }
@@ -76,7 +77,8 @@ struct Encoded {
 
 std::vector<Encoded> encodings(const MeshData& m) {
   std::vector<Encoded> out;
-  out.push_back({"ascii stl", meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); }), true});
+  out.push_back(
+      {"ascii stl", meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); }), true});
   out.push_back({"binary stl", meshbytes::written([&](std::FILE* f) { writeStl(f, m); }), true});
   // assembled by hand, the header starting with "solid" as some exporters write it
   out.push_back({"binary stl 'solid' header",
@@ -100,8 +102,9 @@ void everyEncodingAgrees(const MeshData& mesh) {
   for (const Encoded& e : encodings(mesh)) {
     SCOPED_TRACE(e.name);
     const MeshData fromMemory = e.stl ? parseStl(e.bytes) : parsePly(e.bytes);
-    const MeshData fromFile = e.stl ? meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parseStl(f); })
-                                    : meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parsePly(f); });
+    const MeshData fromFile =
+        e.stl ? meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parseStl(f); })
+              : meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parsePly(f); });
     EXPECT_EQ(fromMemory.vertices, fromFile.vertices);
     EXPECT_EQ(fromMemory.indices, fromFile.indices);
     expectSame(want, fromMemory, queries);
@@ -127,9 +130,12 @@ TEST(StlPly, DoublesSurviveAsciiStlAndDoublePly) {
   const MeshData m = generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1);
   const ConvexPolyhedron want(m);
   const std::vector<Vec3> queries = queriesFor(want);
-  expectSame(want, parseStl(meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); })), queries);
-  for (PlyEncoding enc : {PlyEncoding::Ascii, PlyEncoding::BinaryLittleEndian, PlyEncoding::BinaryBigEndian})
-    expectSame(want, parsePly(meshbytes::written([&](std::FILE* f) { writePly(f, m, enc); })), queries);
+  expectSame(want, parseStl(meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); })),
+             queries);
+  for (PlyEncoding enc :
+       {PlyEncoding::Ascii, PlyEncoding::BinaryLittleEndian, PlyEncoding::BinaryBigEndian})
+    expectSame(want, parsePly(meshbytes::written([&](std::FILE* f) { writePly(f, m, enc); })),
+               queries);
   // and the float formats refuse to round them
   EXPECT_THROW(meshbytes::written([&](std::FILE* f) { writeStl(f, m); }), Error);
   EXPECT_THROW(meshbytes::written([&](std::FILE* f) { writePly(f, m, PlyEncoding::Ascii, true); }),
@@ -139,9 +145,9 @@ TEST(StlPly, DoublesSurviveAsciiStlAndDoublePly) {
 TEST(StlPly, BinaryStlWeldsExactlyEqualCorners) {
   // two facets share an edge; -0 and +0 are the same corner; 1 + 2^-23 is not 1
   const float next = 1.0f + 0x1p-23f;
-  const std::string bytes = meshbytes::binaryStl(
-      {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {-0.0, 0, 0}, {0, 0, 1}},
-       {{next, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
+  const std::string bytes = meshbytes::binaryStl({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                                  {{1, 0, 0}, {-0.0, 0, 0}, {0, 0, 1}},
+                                                  {{next, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
   const MeshData m = parseStl(bytes);
   ASSERT_EQ(m.vertices.size(), 5u);
   EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 4, 2, 3}));

@@ -56,11 +56,11 @@ Outcome read(const std::string& bytes, bool stl) {
     }
     return o;
   };
-  Outcome memory = attempt([&] { return stl ? convexloc::parseStl(bytes) : convexloc::parsePly(bytes); });
+  Outcome memory =
+      attempt([&] { return stl ? convexloc::parseStl(bytes) : convexloc::parsePly(bytes); });
   fuzz::MemFile file(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-  Outcome viaFile = attempt([&] {
-    return stl ? convexloc::parseStl(file.get()) : convexloc::parsePly(file.get());
-  });
+  Outcome viaFile = attempt(
+      [&] { return stl ? convexloc::parseStl(file.get()) : convexloc::parsePly(file.get()); });
   EXPECT_EQ(memory.error, viaFile.error);
   EXPECT_EQ(memory.line, viaFile.line);
   EXPECT_EQ(memory.mesh.has_value(), viaFile.mesh.has_value());
@@ -156,16 +156,19 @@ TEST(HostileStlPly, CountsThatLie) {
 TEST(HostileStlPly, NanAndInfinityAreRefusedWhereTheyAre) {
   auto facets = meshbytes::facetsOf(cube());
   facets[3][1].y = std::numeric_limits<double>::quiet_NaN();
-  expectError(read(meshbytes::binaryStl(facets), true), 0,
-              "byte " + std::to_string(84 + 50 * 3 + 24 + 4) + ": facet 3, vertex 1: a coordinate is NaN");
+  expectError(
+      read(meshbytes::binaryStl(facets), true), 0,
+      "byte " + std::to_string(84 + 50 * 3 + 24 + 4) + ": facet 3, vertex 1: a coordinate is NaN");
   facets = meshbytes::facetsOf(cube());
   facets[11][2].z = -std::numeric_limits<double>::infinity();
-  expectError(read(meshbytes::binaryStl(facets), true), 0, "facet 11, vertex 2: a coordinate is infinite");
+  expectError(read(meshbytes::binaryStl(facets), true), 0,
+              "facet 11, vertex 2: a coordinate is infinite");
   MeshData m = cube();
   m.vertices[5].x = std::numeric_limits<double>::infinity();
   const std::string be = plyOf(m, PlyEncoding::BinaryBigEndian);
-  expectError(read(be, false), 0,
-              "byte " + std::to_string(dataStart(be) + 5 * 24) + ": vertex 5: coordinate x is infinite");
+  expectError(
+      read(be, false), 0,
+      "byte " + std::to_string(dataStart(be) + 5 * 24) + ": vertex 5: coordinate x is infinite");
   std::string ascii = plyOf(cube(), PlyEncoding::Ascii);
   ascii.replace(ascii.find("\n-1 1 -1\n") + 1, 7, "-1 nan -1");
   expectError(read(ascii, false), 13, "not a number: 'nan'");
@@ -194,25 +197,32 @@ TEST(HostileStlPly, ABillionFacetsClaimedAllocateNothing) {
   std::string head(80, ' ');
   meshbytes::Bytes b;
   b.text(head).uint(1000000000, 4);
-  expectError(read(b.s, true), 0, "byte 80: the header announces 1000000000 facets; at most 134217728");
+  expectError(read(b.s, true), 0,
+              "byte 80: the header announces 1000000000 facets; at most 134217728");
   // within the limit, but the file holds none of them
   meshbytes::Bytes c;
   c.text(head).uint(134217728, 4);
   expectError(read(c.s, true), 0, "but the file has 84 bytes");
-  const std::string header = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
-                             "property float y\nproperty float z\n";
-  expectError(read(header + "element face 1000000000\nproperty list uchar int vertex_indices\nend_header\n", false),
-              7, "announces 1000000000 face records; at most");
-  expectError(read("ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n", false),
-              3, "99999999999 vertex records");
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+      "property float y\nproperty float z\n";
+  expectError(
+      read(header + "element face 1000000000\nproperty list uchar int vertex_indices\nend_header\n",
+           false),
+      7, "announces 1000000000 face records; at most");
+  expectError(
+      read("ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n",
+           false),
+      3, "99999999999 vertex records");
   expectError(read("ply\nformat ascii 1.0\nelement vertex -4\nend_header\n", false), 3,
               "not a non-negative integer");
   // counts in the limit on a tiny file: it ends early, nothing was reserved for them
-  expectError(read("ply\nformat binary_little_endian 1.0\nelement vertex 134217728\nproperty float x\n"
-                   "property float y\nproperty float z\nelement face 134217728\n"
-                   "property list uint uint vertex_indices\nend_header\n0123",
-                   false),
-              0, "the file ends inside vertex 0 of 134217728");
+  expectError(
+      read("ply\nformat binary_little_endian 1.0\nelement vertex 134217728\nproperty float x\n"
+           "property float y\nproperty float z\nelement face 134217728\n"
+           "property list uint uint vertex_indices\nend_header\n0123",
+           false),
+      0, "the file ends inside vertex 0 of 134217728");
   // a list of four billion indices
   meshbytes::Bytes d;
   d.text(header + "element face 1\nproperty list uint int vertex_indices\nend_header\n");
@@ -220,20 +230,23 @@ TEST(HostileStlPly, ABillionFacetsClaimedAllocateNothing) {
   d.uint(4000000000u, 4).uint(0, 4);
   expectError(read(d.s, false), 0, "face 0 lists 4000000000 vertices; the file has 4");
   // another element with a billion records of nothing but lists, and a skipped list
-  expectError(read("ply\nformat binary_big_endian 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
-                   "property float z\nelement junk 1000000000\nproperty list uint double j\nend_header\n"
-                   "\xff\xff\xff\xff",
-                   false),
-              0, "the file ends inside list 'j' of junk 0 of 1000000000");
+  expectError(
+      read("ply\nformat binary_big_endian 1.0\nelement vertex 0\nproperty float x\nproperty float "
+           "y\n"
+           "property float z\nelement junk 1000000000\nproperty list uint double j\nend_header\n"
+           "\xff\xff\xff\xff",
+           false),
+      0, "the file ends inside list 'j' of junk 0 of 1000000000");
   EXPECT_LT(peakKiB() - before, 16 * 1024) << "a count in a file was used to allocate";
 }
 
 // === Indices and structure
 
 TEST(HostileStlPly, BadFacesAndHeaders) {
-  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
-                           "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                           "end_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "end_header\n0 0 0\n1 0 0\n0 1 0\n";
   expectError(read(head + "3 0 1 3\n", false), 13, "vertex index 3 is out of range");
   expectError(read(head + "3 0 -1 2\n", false), 13, "vertex index -1 is out of range");
   expectError(read(head + "2 0 1\n", false), 13, "face 0 has 2 vertices");
@@ -243,15 +256,22 @@ TEST(HostileStlPly, BadFacesAndHeaders) {
   expectError(read(head + "3 0 1 2\nextra\n", false), 14, "unexpected text after the last element");
   expectError(read("ply\nformat ascii 2.0\n", false), 2, "unsupported PLY version");
   expectError(read("ply\nelement vertex 1\n", false), 2, "expected the 'format' line");
-  expectError(read("ply\nformat ascii 1.0\nproperty float x\n", false), 3, "a property before any element");
-  expectError(read("ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n", false), 4, "unknown PLY type 'real'");
-  expectError(read("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n", false),
+  expectError(read("ply\nformat ascii 1.0\nproperty float x\n", false), 3,
+              "a property before any element");
+  expectError(read("ply\nformat ascii 1.0\nelement vertex 1\nproperty real x\n", false), 4,
+              "unknown PLY type 'real'");
+  expectError(read("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float "
+                   "y\nend_header\n",
+                   false),
               3, "element 'vertex' has no property 'z'");
   expectError(read("ply\nformat ascii 1.0\nelement vertex 1\nproperty list uchar float x\n"
-                   "property float y\nproperty float z\nend_header\n", false),
+                   "property float y\nproperty float z\nend_header\n",
+                   false),
               4, "must be a number, not a list");
-  expectError(read("ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n", false),
-              4, "a list's count type must be an integer type");
+  expectError(
+      read("ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n",
+           false),
+      4, "a list's count type must be an integer type");
   expectError(read("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n", false), 4,
               "the file ends inside the PLY header");
   expectError(read("PLY\n", false), 1, "not a PLY file");
@@ -260,10 +280,13 @@ TEST(HostileStlPly, BadFacesAndHeaders) {
   std::string bad = le;
   const std::size_t face2 = dataStart(le) + 8 * 24 + 2 * 17;
   bad[face2 + 1 + 4 * 2] = 8;  // its third index: 8 of 8 vertices
-  expectError(read(bad, false), 0, "byte " + std::to_string(face2) + ": face 2: vertex index 8 is out of range");
+  expectError(read(bad, false), 0,
+              "byte " + std::to_string(face2) + ": face 2: vertex index 8 is out of range");
   // ASCII STL out of order
-  expectError(read("solid x\nfacet normal 0 0 1\nvertex 0 0 0\n", true), 3, "expected 'outer loop'");
-  expectError(read("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n", true), 4, "a vertex needs 3 coordinates");
+  expectError(read("solid x\nfacet normal 0 0 1\nvertex 0 0 0\n", true), 3,
+              "expected 'outer loop'");
+  expectError(read("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n", true), 4,
+              "a vertex needs 3 coordinates");
   expectError(read("solid x\nendsolid x\nfacet\n", true), 3, "expected 'solid'");
   expectError(read("solid x\n", true), 1, "the file ends before 'endsolid'");
   expectError(read("solid x\nfacet normal 0 0\n", true), 2, "expected 'facet normal i j k'");
@@ -319,7 +342,8 @@ TEST(HostileStlPly, APipeReadsTheSame) {
   EXPECT_EQ(throughPipe(stl.substr(0, 1000), true).error,
             "byte 1000: the file ends inside facet 18 of 5120 (its 50 bytes start at byte 984)");
   EXPECT_EQ(throughPipe(stl + "!", true).error,
-            "byte " + std::to_string(stl.size()) + ": unexpected bytes after the last of the 5120 facets");
+            "byte " + std::to_string(stl.size()) +
+                ": unexpected bytes after the last of the 5120 facets");
   const std::string ply = plyOf(cube(), PlyEncoding::BinaryBigEndian);
   EXPECT_TRUE(throughPipe(ply, false).mesh.has_value());
   EXPECT_TRUE(throughPipe(stlOf(cube(), true), true).mesh.has_value());

@@ -258,8 +258,7 @@ void bindShapes(py::module_& m) {
   m.def("read_polygon", &readPolygon, py::arg("path"),
         "Reads a polygon file (one vertex 'x y' per line). Raises ParseError, GeometryError or "
         "FileError with the command-line tool's message, 'FILE:LINE: problem'.");
-  m.def("read_polyhedron", &readPolyhedron, py::arg("path"), py::kw_only(),
-        py::arg("hull") = false,
+  m.def("read_polyhedron", &readPolyhedron, py::arg("path"), py::kw_only(), py::arg("hull") = false,
         "Reads an .off, .obj, .stl or .ply polyhedron; with hull=True, the convex hull of the "
         "file's vertices (its faces ignored: a point cloud without faces works). Raises "
         "ParseError, GeometryError or FileError with the command-line tool's message, "

@@ -18,17 +18,13 @@ enum class PlyType : std::uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, F
 constexpr std::size_t plyTypeSize(PlyType t) noexcept {
   switch (t) {
     case PlyType::Int8:
-    case PlyType::UInt8:
-      return 1;
+    case PlyType::UInt8: return 1;
     case PlyType::Int16:
-    case PlyType::UInt16:
-      return 2;
+    case PlyType::UInt16: return 2;
     case PlyType::Int32:
     case PlyType::UInt32:
-    case PlyType::Float32:
-      return 4;
-    case PlyType::Float64:
-      break;
+    case PlyType::Float32: return 4;
+    case PlyType::Float64: break;
   }
   return 8;
 }
@@ -41,10 +37,10 @@ constexpr bool plyInteger(PlyType t) noexcept {
 // "property TYPE NAME" or "property list COUNT_TYPE TYPE NAME"
 struct PlyProperty {
   std::string name;
-  PlyType type = PlyType::Float32;       // the value's type (a list's items)
-  PlyType countType = PlyType::UInt8;    // a list's count, when `list`
+  PlyType type = PlyType::Float32;     // the value's type (a list's items)
+  PlyType countType = PlyType::UInt8;  // a list's count, when `list`
   bool list = false;
-  std::size_t line = 0;                  // the header line that declares it
+  std::size_t line = 0;  // the header line that declares it
 };
 
 // "element NAME COUNT" and its properties, in the order of the file
@@ -65,11 +61,11 @@ enum class PlyStorage : std::uint8_t { Ascii, BinaryLittleEndian, BinaryBigEndia
 struct PlyHeader {
   PlyStorage storage = PlyStorage::Ascii;
   std::vector<PlyElement> elements;
-  std::size_t vertexElement = 0;            // index into elements
-  std::size_t xyz[3] = {0, 0, 0};           // property indices of x, y, z
-  std::size_t faceElement = SIZE_MAX;       // SIZE_MAX: no faces
-  std::size_t indexList = 0;                // property index of vertex_indices
-  std::size_t endLine = 0;                  // the line of "end_header"
+  std::size_t vertexElement = 0;       // index into elements
+  std::size_t xyz[3] = {0, 0, 0};      // property indices of x, y, z
+  std::size_t faceElement = SIZE_MAX;  // SIZE_MAX: no faces
+  std::size_t indexList = 0;           // property index of vertex_indices
+  std::size_t endLine = 0;             // the line of "end_header"
 };
 
 // Reads the header from the start of `src` up to and including "end_header", leaving `src`
