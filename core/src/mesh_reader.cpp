@@ -45,7 +45,16 @@ ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
                             " vertices (a point cloud?): take the convex hull of its vertices "
                             "instead (--hull; hull=True in Python)",
                         mesh.vertexLines.empty() ? 0 : mesh.vertexLines.back());
-  return ConvexPolyhedron(mesh);
+  try {
+    return ConvexPolyhedron(mesh);
+  } catch (const GeometryError& e) {
+    // faces no longer exactly planar (coordinates rounded by an exporter) fail this way
+    const std::string what = e.what();
+    if (what.rfind("not convex", 0) != 0) throw;
+    throw GeometryError(what + " (where rounded coordinates left faces not exactly planar, "
+                               "--hull takes the convex hull of the vertices; hull=True in Python)",
+                        e.line());
+  }
 }
 
 ConvexPolyhedron loadPolyhedron(const std::string& path) {

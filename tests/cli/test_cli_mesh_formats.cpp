@@ -4,6 +4,8 @@
 // shape file's points (polygon or polyhedron) in classify, info and intersect.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -101,6 +103,36 @@ TEST_F(CliFormats, HullOfPolygonPointsInAnyOrder) {
   EXPECT_EQ(l.out, "misses\ncrosses\n");
   Result info = run("info " + q(scratch("cloud.txt")) + " --hull");
   EXPECT_EQ(info.code, 0) << info.err;
+}
+
+TEST_F(CliFormats, ARoundedCubeIsRefusedWithAHintAndReadWithHull) {
+  // a cube turned about (1, 2, 3), its coordinates printed to 7 digits: the squares are no
+  // longer exactly planar
+  const double c = std::cos(0.7), s = std::sin(0.7), n = std::sqrt(14.0);
+  const double u[3] = {1 / n, 2 / n, 3 / n};
+  std::string off = "OFF\n8 6 0\n";
+  for (int i = 0; i < 8; ++i) {
+    const double p[3] = {i & 4 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 1 ? 1.0 : -1.0};
+    const double d = u[0] * p[0] + u[1] * p[1] + u[2] * p[2];
+    const double x[3] = {u[1] * p[2] - u[2] * p[1], u[2] * p[0] - u[0] * p[2],
+                         u[0] * p[1] - u[1] * p[0]};
+    for (int k = 0; k < 3; ++k) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.7g ", p[k] * c + x[k] * s + u[k] * d * (1 - c));
+      off += buf;
+    }
+    off += "\n";
+  }
+  off += "4 0 1 3 2\n4 4 6 7 5\n4 0 4 5 1\n4 2 3 7 6\n4 0 2 6 4\n4 1 5 7 3\n";
+  std::ofstream(scratch("rounded.off")) << off;
+  std::ofstream(scratch("centre.txt")) << "0 0 0\n3 0 0\n";
+  const std::string args = "classify " + q(scratch("rounded.off")) + " " + q(scratch("centre.txt"));
+  const Result plain = run(args);
+  expectRejected(plain, "not convex");
+  expectRejected(plain, "--hull takes the convex hull of the vertices");
+  const Result hull = run(args + " --hull");
+  EXPECT_EQ(hull.code, 0) << hull.err;
+  EXPECT_EQ(hull.out, "inside\noutside\n");
 }
 
 TEST_F(CliFormats, BadStlAndPlyNameTheLineOrTheByte) {

@@ -75,8 +75,8 @@ MeshData parsePly(std::string_view bytes);
 // extension. Throws Error when it cannot be opened, UsageError for another extension.
 MeshData readMesh(const std::string& path);
 
-// Validates a mesh read from a file (ConvexPolyhedron); a mesh with vertices and no faces
-// gets a GeometryError that suggests the hull.
+// Validates a mesh read from a file (ConvexPolyhedron); a mesh with vertices and no faces, or
+// one refused as not convex, gets a GeometryError that suggests the hull.
 ConvexPolyhedron polyhedronOf(const MeshData& mesh);
 
 // Reads and validates a polyhedron file (readMesh, then polyhedronOf).
