@@ -86,6 +86,8 @@ class PlyBody {
     for (std::size_t i = 0; i < h_.elements.size(); ++i) {
       const PlyElement& e = h_.elements[i];
       reserveFor(i, e);
+      // binary records without properties take no bytes, however many the header announces
+      if (!ascii_ && e.properties.empty()) continue;
       for (std::uint64_t r = 0; r < e.count; ++r) {
         if (ascii_)
           asciiRecord(i, e, r);

@@ -237,6 +237,17 @@ TEST(HostileStlPly, ABillionFacetsClaimedAllocateNothing) {
            "\xff\xff\xff\xff",
            false),
       0, "the file ends inside list 'j' of junk 0 of 1000000000");
+  // 10^18 records of nothing take no bytes and no time; in ASCII each is a line
+  const std::string empty = "element nothing 1000000000000000000\n";
+  const std::string tetra = "ply\nformat binary_little_endian 1.0\n" + empty +
+                            "element vertex 0\nproperty float x\nproperty float y\n"
+                            "property float z\nend_header\n";
+  EXPECT_TRUE(read(tetra, false).mesh.has_value());
+  expectError(read("ply\nformat ascii 1.0\n" + empty +
+                       "element vertex 0\nproperty float x\n"
+                       "property float y\nproperty float z\nend_header\n\n\n",
+                   false),
+              10, "the file ends before nothing 2 of 1000000000000000000");
   EXPECT_LT(peakKiB() - before, 16 * 1024) << "a count in a file was used to allocate";
 }
 
