@@ -217,7 +217,7 @@ PlyHeader readPlyHeader(ByteSource& src) {
   std::string_view text, word;
   Tokens first(src.nextLine(text) ? text : std::string_view(), false);
   if (!first.next(word) || word != "ply" || first.next(word))
-    throw ParseError("not a PLY file: the first line must be 'ply'", 1);
+    throw ParseError("not a PLY file: the first line must be 'ply'", src.line());
   HeaderReading reading{src, {}};
   for (;;) {
     if (!src.nextLine(text))
