@@ -56,6 +56,14 @@ PlyType typeToken(Tokens& t, std::size_t line) {
   return type;
 }
 
+// an element's or a property's name: printable ASCII only, since messages quote it
+void checkName(std::string_view name, const char* what, std::size_t line) {
+  for (char c : name)
+    if (c < 0x21 || c > 0x7e)
+      throw ParseError(std::string("a") + what + " name must be printable ASCII: " + quote(name),
+                       line);
+}
+
 // A header being read, one line at a time.
 struct HeaderReading {
   ByteSource& src;
@@ -87,6 +95,7 @@ struct HeaderReading {
     std::string_view name, count, extra;
     if (!t.next(name) || !t.next(count) || t.next(extra))
       throw ParseError("expected 'element NAME COUNT'", src.line());
+    checkName(name, "n element", src.line());
     long long n = 0;
     if (!integer(count, n) || n < 0)
       throw ParseError("the element count is not a non-negative integer: " + quote(count),
@@ -122,6 +131,7 @@ struct HeaderReading {
     p.type = typeToken(t, p.line);
     if (!t.next(word) || t.next(extra))
       throw ParseError("expected 'property [list COUNT_TYPE] TYPE NAME'", p.line);
+    checkName(word, " property", p.line);
     p.name = std::string(word);
     PlyElement& e = header.elements.back();
     for (const PlyProperty& q : e.properties)

@@ -286,6 +286,11 @@ TEST(HostileStlPly, BadFacesAndHeaders) {
   expectError(read("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n", false), 4,
               "the file ends inside the PLY header");
   expectError(read("PLY\n", false), 1, "not a PLY file");
+  expectError(read(std::string("ply\nformat ascii 1.0\nelement \0face 4\n", 37), false), 3,
+              "an element name must be printable ASCII: '?face'");
+  expectError(
+      read(std::string("ply\nformat ascii 1.0\nelement face 1\nproperty int \x01\n"), false), 4,
+      "a property name must be printable ASCII");
   // binary: the offset of the face record at fault
   const std::string le = plyOf(cube(), PlyEncoding::BinaryLittleEndian);
   std::string bad = le;
