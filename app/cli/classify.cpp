@@ -164,7 +164,7 @@ void rejectBothStdin(const ClassifyOptions& o) {
 void classify2D(const ClassifyOptions& o) {
   const Method2D method = method2DOrFail(o.method);
   rejectBothStdin(o);
-  const ConvexPolygon polygon = loadPolygon(o.shape);
+  const ConvexPolygon polygon = loadPolygon(o.shape, nullptr, o.hull);
   std::unique_ptr<Locator2D> locator;
   aboutFile(o.shape, [&] { locator = std::make_unique<Locator2D>(polygon, method, o.resolution); });
   classifyPoints<2>(*locator, o.points);
@@ -176,7 +176,7 @@ void classify3D(const ClassifyOptions& o) {
   std::unique_ptr<Locator3D> locator;
   {
     // the locator keeps its own copy: the polyhedron goes before the points are read
-    const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape);
+    const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, nullptr, o.hull);
     aboutFile(o.shape,
               [&] { locator = std::make_unique<Locator3D>(polyhedron, method, o.resolution); });
   }

@@ -66,22 +66,31 @@ std::string namesOf(const T (&all)[N]) {
 
 // === Shapes
 
-// true for a path naming a polyhedron (.off or .obj, any case)
+// true for a path naming a polyhedron (.off, .obj, .stl or .ply, any case)
 bool isPolyhedronPath(std::string_view path);
 
-// The polygon in a vertex file ("-" for stdin), validated; Failure naming the file otherwise.
-// `input`, when given, receives the vertices as read, before normalisation.
-ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input = nullptr);
+// The polygon in a vertex file ("-" for stdin), validated, or with `hull` the convex hull of
+// its points in any order; Failure naming the file otherwise. `input`, when given, receives
+// the vertices as read, before normalisation.
+ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input = nullptr,
+                          bool hull = false);
 
-// The polyhedron in an OFF or OBJ file, validated; Failure naming the file otherwise (a mesh
-// too large to hold is bad input too). `verticesRead`, when given, receives how many
-// vertices the file listed.
-ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead = nullptr);
+// The polyhedron in an OFF, OBJ, STL or PLY file, validated, or with `hull` the convex hull
+// of every vertex the file lists (its faces ignored: a point cloud works); Failure naming the
+// file otherwise (a mesh too large to hold is bad input too). `verticesRead`, when given,
+// receives how many vertices the file listed.
+ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead = nullptr,
+                                bool hull = false);
 
 // The method with that name for a polygon (2D) or a polyhedron (3D); empty names the default
 // (polar, cubemap). Otherwise a bad-usage failure listing the choices for that kind of shape.
 Method2D method2DOrFail(const std::string& name);
 Method3D method3DOrFail(const std::string& name);
+
+// what --hull does, for every command that takes it
+inline constexpr const char* kHullHelp =
+    "Take the convex hull of the SHAPE file's points instead of the shape as given: the points "
+    "in any order, a mesh's faces ignored, a point cloud without faces (a scan's PLY) accepted";
 
 // === Options, one struct per subcommand
 
@@ -91,6 +100,7 @@ struct ClassifyOptions {
   std::string points;
   std::string method;            // empty: polar for a polygon, cubemap for a polyhedron
   std::uint32_t resolution = 0;  // 0: chosen from the shape
+  bool hull = false;             // the convex hull of the shape file's points
 };
 
 // `info SHAPE`: the shape and the subdivisions of its methods
@@ -99,6 +109,7 @@ struct InfoOptions {
   std::string method;  // empty: every method, in a table
   std::uint32_t resolution = 0;
   bool intersect = false;  // report the line (plane) methods too, building the 3D dual
+  bool hull = false;       // the convex hull of the shape file's points
 };
 
 // `generate polygon`: a convex polygon of a kind
@@ -126,8 +137,8 @@ struct GeneratePointsOptions {
 
 // === Commands, one per dimension where the dimension matters
 //
-// A SHAPE ending in .off or .obj is a polyhedron (3D), anything else a polygon (2D); both
-// halves of a command share one file and one contract.
+// A SHAPE ending in .off, .obj, .stl or .ply is a polyhedron (3D), anything else a polygon
+// (2D); both halves of a command share one file and one contract.
 
 void classify2D(const ClassifyOptions& o);  // classify.cpp
 void classify3D(const ClassifyOptions& o);

@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "convexloc/error.hpp"
+#include "convexloc/generate2d.hpp"
 #include "convexloc/mesh_reader.hpp"
 #include "convexloc/text_reader.hpp"
 
@@ -48,7 +49,7 @@ bool isPolyhedronPath(std::string_view path) {
     }
     return true;
   };
-  return endsWith(".off") || endsWith(".obj");
+  return endsWith(".off") || endsWith(".obj") || endsWith(".stl") || endsWith(".ply");
 }
 
 namespace {
@@ -62,25 +63,30 @@ void rejectDirectory(const std::string& path) {
 
 }  // namespace
 
-ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input) {
+ConvexPolygon loadPolygon(const std::string& path, std::vector<Vec2>* input, bool hull) {
   rejectDirectory(path);
   PointList list;
   aboutFile(path, [&] { list = readPoints2D(path); });
   if (list.points.empty())
     failInput(path, 0, "no vertices: a polygon file lists one vertex 'x y' per line");
   std::optional<ConvexPolygon> polygon;
-  aboutFile(path, [&] { polygon.emplace(list.points, list.lines); });
+  aboutFile(path, [&] {
+    if (hull)
+      polygon.emplace(convexHull(list.points));
+    else
+      polygon.emplace(list.points, list.lines);
+  });
   if (input) *input = std::move(list.points);
   return std::move(*polygon);
 }
 
-ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead) {
+ConvexPolyhedron loadPolyhedron(const std::string& path, std::size_t* verticesRead, bool hull) {
   rejectDirectory(path);
   MeshData mesh;
   aboutFile(path, [&] { mesh = readMesh(path); });
   if (verticesRead) *verticesRead = mesh.vertices.size();
   try {
-    return ConvexPolyhedron(mesh);
+    return hull ? ConvexPolyhedron::hullOf(mesh.vertices) : polyhedronOf(mesh);
   } catch (const Error& e) {
     // every complaint about a mesh read from a file is about the file, a size limit included
     failInput(path, e.line(), e.what());
@@ -93,11 +99,12 @@ namespace {
 struct ShapeWords {
   const char* one;      // "a polygon"
   const char* oneFile;  // "a polygon", with the extensions where they decide
-  const char* others;   // the other dimension's shapes: "polyhedra (.off/.obj)"
+  const char* others;   // the other dimension's shapes: "polyhedra (.off/.obj/.stl/.ply)"
 };
 
-constexpr ShapeWords kPolygonWords{"a polygon", "a polygon", "polyhedra (.off/.obj)"};
-constexpr ShapeWords kPolyhedronWords{"a polyhedron", "a polyhedron (.off/.obj)", "polygons"};
+constexpr ShapeWords kPolygonWords{"a polygon", "a polygon", "polyhedra (.off/.obj/.stl/.ply)"};
+constexpr ShapeWords kPolyhedronWords{"a polyhedron", "a polyhedron (.off/.obj/.stl/.ply)",
+                                      "polygons"};
 
 // the method `parsed` from `name`; `fallback` for no name; otherwise a bad-usage failure that
 // says whether the name belongs to the other dimension

@@ -81,8 +81,8 @@ void generatePolygon(const GeneratePolygonOptions& o) {
 void generatePolyhedron(const GeneratePolyhedronOptions& o) {
   const PolyhedronKind kind =
       kindOrFail(o.kind, parsePolyhedronKind(o.kind), kAllPolyhedronKinds, "polyhedron");
-  if (o.format != "off" && o.format != "obj")
-    failUsage("unknown format '" + o.format + "'; choose off or obj");
+  if (o.format != "off" && o.format != "obj" && o.format != "ply" && o.format != "stl")
+    failUsage("unknown format '" + o.format + "'; choose off, obj, ply or stl");
   MeshData mesh;
   try {
     mesh = convexloc::generatePolyhedron(kind, o.n, o.seed);
@@ -90,8 +90,13 @@ void generatePolyhedron(const GeneratePolyhedronOptions& o) {
     failUsage(e.what());
   }
   try {
+    // PLY as binary doubles and STL as text: both keep every bit of the doubles
     if (o.format == "obj")
       writeObj(stdout, mesh);
+    else if (o.format == "ply")
+      writePly(stdout, mesh, PlyEncoding::BinaryLittleEndian);
+    else if (o.format == "stl")
+      writeStl(stdout, mesh, true);
     else
       writeOff(stdout, mesh);
   } catch (const Error& e) {

@@ -526,7 +526,7 @@ void report(const InfoOptions& o, const Shape& shape, Method method, const Metho
 void info2D(const InfoOptions& o) {
   const Method2D method = method2DOrFail(o.method);
   std::vector<Vec2> input;
-  const ConvexPolygon polygon = loadPolygon(o.shape, &input);
+  const ConvexPolygon polygon = loadPolygon(o.shape, &input, o.hull);
   report<Locator2D>(
       o, polygon, method, kAllMethods2D, [&](Output& out) { reportShape(out, polygon, input); },
       [&] { return lineRows(polygon); }, kLineWords);
@@ -535,7 +535,7 @@ void info2D(const InfoOptions& o) {
 void info3D(const InfoOptions& o) {
   const Method3D method = method3DOrFail(o.method);
   std::size_t verticesRead = 0;
-  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead);
+  const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, &verticesRead, o.hull);
   report<Locator3D>(
       o, polyhedron, method, kAllMethods3D,
       [&](Output& out) { reportShape(out, polyhedron, verticesRead); },

@@ -33,6 +33,7 @@ struct IntersectOptions {
   std::string lines;
   std::string method;  // empty: dual
   bool clip = false;
+  bool hull = false;  // the convex hull of the shape file's points
 };
 
 // A LINES file of `Numbers` numbers per row, read in two passes; see the top of this file.
@@ -118,7 +119,7 @@ void intersect2D(const IntersectOptions& o) {
     failUsage("SHAPE and LINES cannot both be standard input ('-')");
   std::unique_ptr<LineIntersector> intersector;
   {
-    const ConvexPolygon polygon = loadPolygon(o.shape);
+    const ConvexPolygon polygon = loadPolygon(o.shape, nullptr, o.hull);
     aboutFile(o.shape, [&] { intersector = std::make_unique<LineIntersector>(polygon, *method); });
   }
   RowPasses<4> rows(o.lines);
@@ -151,7 +152,7 @@ void intersect3D(const IntersectOptions& o) {
     failUsage("SHAPE and LINES cannot both be standard input ('-')");
   std::unique_ptr<PlaneIntersector> intersector;
   {
-    const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape);
+    const ConvexPolyhedron polyhedron = loadPolyhedron(o.shape, nullptr, o.hull);
     aboutFile(o.shape,
               [&] { intersector = std::make_unique<PlaneIntersector>(polyhedron, *method); });
   }
@@ -179,7 +180,7 @@ Command addIntersect(CLI::App& app) {
       "Print misses, touches or crosses for each line against a polygon (each plane against a "
       "polyhedron), one line per input line, in order; with --clip, each segment's part inside");
   sub->add_option("SHAPE", o->shape,
-                  "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
+                  "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj/.stl/.ply)")
       ->required();
   sub->add_option("LINES", o->lines,
                   "One line 'x1 y1 x2 y2' (two different points) per line for a polygon, one plane "
@@ -192,6 +193,7 @@ Command addIntersect(CLI::App& app) {
   sub->add_flag("--clip", o->clip,
                 "Polygon only: each line is a segment; print its part inside 'x1 y1 x2 y2', in "
                 "its own direction (a point twice when it only touches), or 'outside'");
+  sub->add_flag("--hull", o->hull, kHullHelp);
   return {sub, [o] { isPolyhedronPath(o->shape) ? intersect3D(*o) : intersect2D(*o); }};
 }
 

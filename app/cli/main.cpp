@@ -2,8 +2,8 @@
 //
 // This file only parses the command line (CLI11) and maps every outcome to an exit code:
 // 0 done, 1 bad input (the message names the file and line), 2 bad usage (with the usage).
-// The commands live in classify.cpp, info.cpp and generate.cpp; a SHAPE ending in .off or
-// .obj is a polyhedron and takes the 3D half of each. Each command is declared here by one
+// The commands live in classify.cpp, info.cpp and generate.cpp; a SHAPE ending in .off, .obj,
+// .stl or .ply is a polyhedron and takes the 3D half of each. Each command is declared here by one
 // small function (its subcommand, its options, the action it runs), and addCommands lists
 // them in the order the help shows.
 #include <CLI/CLI.hpp>
@@ -72,8 +72,9 @@ constexpr const char* kFormat = R"(
 Files are text: one point 'x y' (polygon) or 'x y z' (polyhedron) per line, numbers
 separated by spaces and/or a comma, '#' starts a comment, blank lines are skipped. A
 polygon file lists the vertices of a convex polygon in either order around it. A SHAPE
-ending in .off or .obj is a closed convex polyhedron in that format, faces in either
-orientation.)";
+ending in .off, .obj, .stl (ASCII or binary) or .ply (ASCII or binary) is a closed convex
+polyhedron in that format, faces in either orientation. With --hull the shape is the convex
+hull of the file's points, in any order: a PLY point cloud without faces works too.)";
 
 constexpr const char* kExamples = R"(
 
@@ -83,6 +84,7 @@ Examples:
   convexloc generate polygon --kind random --n 100 --seed 7 > polygon.txt
   convexloc generate points --shape polygon.txt --count 1000000 | convexloc classify polygon.txt -
   convexloc classify assets/cube.off assets/cube-points-3d.txt --method cubemap
+  convexloc info assets/sphere-cloud.ply --hull
   convexloc generate polyhedron --kind geodesic --n 100000 > sphere.off
   convexloc info sphere.off
 
@@ -149,7 +151,7 @@ Declared<Options> declare(CLI::App& parent, const std::string& name,
   return {parent.add_subcommand(name, description)};
 }
 
-// the action that runs the 3D half for a polyhedron SHAPE (.off/.obj), else the 2D half
+// the action that runs the 3D half for a polyhedron SHAPE (.off/.obj/.stl/.ply), else the 2D half
 template <class Options>
 auto byDimension(void (*run2D)(const Options&), void (*run3D)(const Options&)) {
   return [run2D, run3D](const Options& o) { isPolyhedronPath(o.shape) ? run3D(o) : run2D(o); };
@@ -180,7 +182,8 @@ Command addClassify(CLI::App& app) {
       "Print inside, boundary or outside for each point, one line per point, in order");
   c.sub
       ->add_option("SHAPE", c.options->shape,
-                   "Polygon file, one vertex 'x y' per line, or a polyhedron (.off/.obj)")
+                   "Polygon file, one vertex 'x y' per line, or a polyhedron "
+                   "(.off/.obj/.stl/.ply)")
       ->required();
   c.sub
       ->add_option("POINTS", c.options->points,
@@ -189,6 +192,7 @@ Command addClassify(CLI::App& app) {
       ->required();
   c.sub->add_option("-m,--method", c.options->method, methodHelp());
   addResolution(c.sub, c.options->resolution);
+  c.sub->add_flag("--hull", c.options->hull, kHullHelp);
   c.sub->footer(kFormat);
   return c.runs(byDimension(classify2D, classify3D));
 }
@@ -199,7 +203,7 @@ Command addInfo(CLI::App& app) {
       app, "info", "Describe the shape and the subdivision each method builds on it");
   c.sub
       ->add_option("SHAPE", c.options->shape,
-                   "Polygon file ('-' reads standard input) or polyhedron (.off/.obj)")
+                   "Polygon file ('-' reads standard input) or polyhedron (.off/.obj/.stl/.ply)")
       ->required();
   c.sub->add_option("-m,--method", c.options->method,
                     "Report one method in detail: " + methodHelp() +
@@ -209,6 +213,7 @@ Command addInfo(CLI::App& app) {
                   "Report the line (polygon) or plane (polyhedron) methods of 'intersect' too, "
                   "building the polyhedron's dual (seconds per 10^5 faces); a polygon's table "
                   "shows them without it");
+  c.sub->add_flag("--hull", c.options->hull, kHullHelp);
   c.sub->footer(kFormat);
   return c.runs(byDimension(info2D, info3D));
 }
@@ -238,10 +243,14 @@ Command addGeneratePolygon(CLI::App& generate) {
 Command addGeneratePolyhedron(CLI::App& generate) {
   const auto c = declareShapeGenerator<GeneratePolyhedronOptions>(
       generate, "polyhedron",
-      "Write a convex polyhedron as OFF (or OBJ), faces counter-clockwise seen from outside, "
-      "exact to the bit",
+      "Write a convex polyhedron as OFF (or OBJ, PLY, STL), faces counter-clockwise seen from "
+      "outside, exact to the bit",
       kAllPolyhedronKinds, "About how many triangles (at least 4; ignored by the platonic solids)");
-  c.sub->add_option("-f,--format", c.options->format, "off or obj")->capture_default_str();
+  c.sub
+      ->add_option("-f,--format", c.options->format,
+                   "off, obj, ply (binary, double coordinates) or stl (ASCII; binary STL holds "
+                   "only float32)")
+      ->capture_default_str();
   return c.runs(generatePolyhedron);
 }
 
@@ -253,7 +262,7 @@ Command addGeneratePoints(CLI::App& generate) {
       "exact to the bit");
   c.sub
       ->add_option("--shape", c.options->shape,
-                   "Polygon file or polyhedron (.off/.obj) the points are for")
+                   "Polygon file or polyhedron (.off/.obj/.stl/.ply) the points are for")
       ->required();
   addWholeNumber(c.sub, "-c,--count", c.options->count, "How many points");
   addSeed(c.sub, c.options->seed);

@@ -229,17 +229,18 @@ TEST_F(Cli, BadUsage3dExitsTwoWithUsage) {
   const std::string shape = data("cube3d.off"), points = data("cube3d_points.txt");
   // a polygon's method for a polyhedron, and the other way round, name the right choices
   for (const char* m : {"halfplane", "wedge", "slab", "uniform", "polar"}) {
-    expectUsage(run("classify " + shape + " " + points + " --method " + m),
-                std::string("method '") + m +
-                    "' is for polygons; for a polyhedron (.off/.obj) choose one of halfspace, "
-                    "walk, cubemap");
+    expectUsage(
+        run("classify " + shape + " " + points + " --method " + m),
+        std::string("method '") + m +
+            "' is for polygons; for a polyhedron (.off/.obj/.stl/.ply) choose one of halfspace, "
+            "walk, cubemap");
     expectUsage(run("info " + shape + " -m " + m), "is for polygons");
   }
   for (const char* m : kMethods3D) {
     expectUsage(
         run("classify " + data("hexagon.txt") + " " + data("hexagon_points.txt") + " -m " + m),
         std::string("method '") + m +
-            "' is for polyhedra (.off/.obj); for a polygon choose one of halfplane, "
+            "' is for polyhedra (.off/.obj/.stl/.ply); for a polygon choose one of halfplane, "
             "wedge, slab, uniform, polar");
     expectUsage(run("info " + data("hexagon.txt") + " -m " + m), "is for polyhedra");
   }
@@ -256,8 +257,8 @@ TEST_F(Cli, BadUsage3dExitsTwoWithUsage) {
   expectUsage(run("generate polyhedron --kind geodesic --n 100000000"), "at most 2^24");
   expectUsage(run("generate polyhedron --kind sphere-hull --n 10000000"), "at most 2^22");
   expectUsage(run("generate polyhedron --kind cube --n -5"), "--n");
-  expectUsage(run("generate polyhedron --kind cube --format stl"),
-              "unknown format 'stl'; choose off or obj");
+  expectUsage(run("generate polyhedron --kind cube --format 3mf"),
+              "unknown format '3mf'; choose off, obj, ply or stl");
   expectUsage(run("generate points --shape " + shape + " --count -1"), "--count");
 }
 

@@ -196,7 +196,7 @@ TEST(MeshFiles, FormatByExtensionAndTheDataFiles) {
   EXPECT_EQ(meshFormatOf("a/b.OFF"), MeshFormat::Off);
   EXPECT_EQ(meshFormatOf("b.obj"), MeshFormat::Obj);
   EXPECT_FALSE(meshFormatOf("b.txt").has_value());
-  EXPECT_THROW(readMesh("shape.stl"), UsageError);
+  EXPECT_THROW(readMesh("shape.3mf"), UsageError);
   EXPECT_THROW(readMesh(std::string(CONVEXLOC_TEST_DATA) + "/no_such_file.off"), Error);
   const std::string data = CONVEXLOC_TEST_DATA;
   EXPECT_EQ(loadPolyhedron(data + "/cube.off").faceCount(), 12u);

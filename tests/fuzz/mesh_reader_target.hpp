@@ -1,4 +1,4 @@
-// convexloc fuzzing — the body shared by the OFF and OBJ reader targets.
+// convexloc fuzzing — the body shared by the mesh reader targets (OFF, OBJ, STL, PLY).
 //
 // The bytes are read twice, as text in memory and through a FILE: both readers must agree
 // exactly (the same mesh, or the same error on the same line). A mesh must be well formed

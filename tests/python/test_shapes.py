@@ -118,7 +118,7 @@ def test_file_errors_carry_the_line(tmp_path):
     with pytest.raises(convexloc.FileError, match="cannot open: it is a directory"):
         convexloc.read_polyhedron(tmp_path)
     with pytest.raises(convexloc.UsageError) as caught:
-        convexloc.read_polyhedron(tmp_path / "shape.stl")
+        convexloc.read_polyhedron(tmp_path / "shape.3mf")
     assert caught.value.path is None
 
 

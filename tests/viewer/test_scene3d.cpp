@@ -65,6 +65,30 @@ TEST(Scene3D, BadMeshesKeepTheLastValidOne) {
   EXPECT_EQ(s.polyhedron().faceCount(), 12u);
 }
 
+TEST(Scene3D, StlAndPlyOpenAndAPointCloudShowsItsHull) {
+  cv::Model m;
+  const std::string stl = writeTemp(
+      "viewer_tetra.STL",
+      "solid t\nfacet normal 0 0 -1\nouter loop\nvertex 0 0 0\nvertex 0 1 0\nvertex 1 0 0\n"
+      "endloop\nendfacet\nfacet normal 0 -1 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+      "vertex 0 0 1\nendloop\nendfacet\nfacet normal -1 0 0\nouter loop\nvertex 0 0 0\n"
+      "vertex 0 0 1\nvertex 0 1 0\nendloop\nendfacet\nfacet normal 1 1 1\nouter loop\n"
+      "vertex 1 0 0\nvertex 0 1 0\nvertex 0 0 1\nendloop\nendfacet\nendsolid t\n");
+  ASSERT_TRUE(m.open(stl)) << m.error();
+  EXPECT_EQ(m.dim, cv::Dim::Three);
+  EXPECT_EQ(m.scene3d().polyhedron().vertexCount(), 4u);
+  // the cube's corners and its centre, without faces
+  std::string cloud =
+      "ply\nformat ascii 1.0\nelement vertex 9\nproperty float x\nproperty float y\n"
+      "property float z\nend_header\n0 0 0\n";
+  for (int i = 0; i < 8; ++i)
+    cloud += std::to_string(i & 1 ? 1 : -1) + " " + std::to_string(i & 2 ? 1 : -1) + " " +
+             std::to_string(i & 4 ? 1 : -1) + "\n";
+  ASSERT_TRUE(m.open(writeTemp("viewer_cloud.ply", cloud))) << m.error();
+  EXPECT_EQ(m.scene3d().polyhedron().vertexCount(), 8u);
+  EXPECT_EQ(m.scene3d().label(), "viewer_cloud.ply");
+}
+
 TEST(Scene3D, MethodsAndGrid) {
   cv::Scene3D s;
   ASSERT_TRUE(s.setResolution(3));

@@ -125,14 +125,15 @@ ConvexPolygon readPolygon(const py::object& pathArg) {
   return std::move(*polygon);
 }
 
-// the polyhedron in an OFF or OBJ file; every complaint about the mesh is about the file
-ConvexPolyhedron readPolyhedron(const py::object& pathArg) {
+// the polyhedron in an OFF, OBJ, STL or PLY file, or (`hull`) the convex hull of its vertices;
+// every complaint about the mesh is about the file
+ConvexPolyhedron readPolyhedron(const py::object& pathArg, bool hull) {
   const std::string path = filePath(pathArg);
   py::gil_scoped_release released;
   MeshData mesh;
   aboutFile(path, [&] { mesh = readMesh(path); });
   try {
-    return ConvexPolyhedron(mesh);
+    return hull ? ConvexPolyhedron::hullOf(mesh.vertices) : polyhedronOf(mesh);
   } catch (const convexloc::Error& e) {
     throw FileFailure(kindOf(e), path, e.line(), e.what());
   }
@@ -257,9 +258,12 @@ void bindShapes(py::module_& m) {
   m.def("read_polygon", &readPolygon, py::arg("path"),
         "Reads a polygon file (one vertex 'x y' per line). Raises ParseError, GeometryError or "
         "FileError with the command-line tool's message, 'FILE:LINE: problem'.");
-  m.def("read_polyhedron", &readPolyhedron, py::arg("path"),
-        "Reads an .off or .obj polyhedron. Raises ParseError, GeometryError or FileError with "
-        "the command-line tool's message, 'FILE:LINE: problem'; UsageError for another extension.");
+  m.def("read_polyhedron", &readPolyhedron, py::arg("path"), py::kw_only(), py::arg("hull") = false,
+        "Reads an .off, .obj, .stl or .ply polyhedron; with hull=True, the convex hull of the "
+        "file's vertices (its faces ignored: a point cloud without faces works). Raises "
+        "ParseError, GeometryError or FileError with the command-line tool's message, "
+        "'FILE:LINE: problem' ('FILE: byte N: problem' in binary data); UsageError for another "
+        "extension.");
 }
 
 }  // namespace convexloc::python

@@ -6,6 +6,7 @@
 
 #include "convexloc/generate2d.hpp"
 #include "convexloc/generate3d.hpp"
+#include "convexloc/mesh_reader.hpp"
 #include "logic/presets.hpp"
 
 namespace convexloc::viewer {
@@ -79,7 +80,7 @@ void Model::remember(const std::string& path) {
 
 bool Model::open(const std::string& path) {
   const std::string ext = extensionOf(path);
-  const Dim d = ext == ".off" || ext == ".obj" ? Dim::Three : Dim::Two;
+  const Dim d = meshFormatOf(ext).has_value() ? Dim::Three : Dim::Two;
   if (!(d == Dim::Three ? scene3d().loadFile(path) : scene2d.loadFile(path))) {
     collectErrors();
     return false;

@@ -89,7 +89,7 @@ class Model {
   // something moves without input (a measurement, the build playing): draw every frame
   bool busy() const { return (scaling && scaling->running()) || build.playing; }
 
-  // Opens a shape file, chosen by extension (.txt polygon; .off/.obj polyhedron). On
+  // Opens a shape file, chosen by extension (.txt polygon; .off/.obj/.stl/.ply polyhedron). On
   // failure the scene stays and error() says why (file and line where known).
   bool open(const std::string& path);
   // a degenerate-gallery shape; false and error() for an unknown name

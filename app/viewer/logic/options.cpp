@@ -422,8 +422,9 @@ std::string usageText() {
 
 Usage: convexloc-viewer [SHAPE] [options]
 
-  SHAPE                 a polygon (.txt, one vertex 'x y' per line) or a polyhedron (.off, .obj);
-                        without one, a random polygon with the paper's polar slabs
+  SHAPE                 a polygon (.txt, one vertex 'x y' per line) or a polyhedron (.off, .obj,
+                        .stl, .ply; a PLY point cloud shows its convex hull); without one, a
+                        random polygon with the paper's polar slabs
 Scene:
   --method M            halfplane | wedge | slab | uniform | polar (2D);
                         halfspace | walk | cubemap (3D)

@@ -18,7 +18,7 @@
 namespace convexloc::viewer {
 
 struct Options {
-  std::string shape;                  // a .txt polygon or an .off/.obj polyhedron
+  std::string shape;                  // a .txt polygon or an .off/.obj/.stl/.ply polyhedron
   std::optional<std::string> method;  // halfplane..polar (2D), halfspace|walk|cubemap (3D)
   std::optional<std::uint32_t> resolution;
   std::optional<std::string> preset;    // a degenerate-gallery name

@@ -23,7 +23,11 @@ std::vector<Vec3> Traits3D::sprayPoints(const ConvexPolyhedron& p, std::size_t n
 }
 
 ConvexPolyhedron Traits3D::readShape(const std::string& path) {
-  return ConvexPolyhedron(readMesh(path));
+  const MeshData mesh = readMesh(path);
+  // a point cloud (a scan's PLY) has no surface of its own: the viewer shows its convex hull
+  if (mesh.faceCount() == 0 && !mesh.vertices.empty())
+    return ConvexPolyhedron::hullOf(mesh.vertices);
+  return ConvexPolyhedron(mesh);
 }
 
 Scene3D::Scene3D() {

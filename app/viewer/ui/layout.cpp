@@ -419,7 +419,7 @@ void scanAssets(UiState& ui) {
   for (const auto& e : std::filesystem::directory_iterator(ui.assetDir, ec)) {
     const std::string ext = e.path().extension().string();
     const std::string name = e.path().filename().string();
-    if ((ext == ".txt" || ext == ".off" || ext == ".obj") &&
+    if ((ext == ".txt" || ext == ".off" || ext == ".obj" || ext == ".stl" || ext == ".ply") &&
         name.find("points") == std::string::npos)
       ui.assets.push_back(e.path().string());
   }

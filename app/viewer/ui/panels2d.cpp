@@ -67,7 +67,7 @@ void shapePanel2D(Model& model, UiState& ui) {
     ImGui::SameLine();
     ImGui::TextDisabled("(given clockwise)");
   }
-  fileOpen(model, ui, "polygon .txt, polyhedron .off/.obj");
+  fileOpen(model, ui, "polygon .txt, polyhedron .off/.obj/.stl/.ply");
   generatorsAndGallery<Scene2D, PolygonKind>(model, scene, kAllPolygonKinds, ui.generator2d,
                                              kGenerator2D, false);
   ImGui::TextDisabled("Drag a vertex handle to edit the polygon.");

@@ -81,7 +81,7 @@ void shapePanel3D(Model& model, UiState& ui) {
   if (p.wasInverted()) notes += "given inside out; ";
   if (!notes.empty()) ImGui::TextDisabled("(%s)", notes.substr(0, notes.size() - 2).c_str());
 
-  fileOpen(model, ui, "polyhedron .off/.obj, polygon .txt");
+  fileOpen(model, ui, "polyhedron .off/.obj/.stl/.ply, polygon .txt");
 
   generatorsAndGallery<Scene3D, PolyhedronKind>(model, scene, kAllPolyhedronKinds, ui.generator3d,
                                                 kGenerator3D, true);

@@ -1,0 +1,13 @@
+// Fuzz target: the STL reader (parseStl, binary and ASCII), then ConvexPolyhedron and every 3D
+// method; see mesh_reader_target.hpp for what is checked.
+#include <cstddef>
+#include <cstdint>
+
+#include "mesh_reader_target.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  fuzz::meshReaderTarget(
+      data, size, [](std::string_view bytes) { return convexloc::parseStl(bytes); },
+      [](std::FILE* file) { return convexloc::parseStl(file); });
+  return 0;
+}
