@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -130,8 +131,9 @@ struct Dimension<Locator2D> {
 
 template <>
 struct Dimension<Locator3D> {
-  static constexpr Words kWords{"polyhedron",         "face",   "faces", "a walk",
-                                "cubemap resolution", "cubemap"};
+  static constexpr Words kWords{
+      "polyhedron",         "face",   "faces", "a walk or a zone's bisection",
+      "cubemap resolution", "cubemap"};
   static constexpr std::size_t kCrowded = kCrowdedCell3D;
   static constexpr auto kCount = &Stats3D::faces;
   static constexpr auto kBytesPer = &Stats3D::bytesPerFace;
@@ -171,7 +173,9 @@ void reportShape(Output& out, const ConvexPolyhedron& p, std::size_t verticesRea
     field(out, "dropped",
           format("%zu equal to an earlier one (merged), %zu used by no face", p.mergedVertices(),
                  p.unusedVertices()));
-  field(out, "faces", format("%zu read, %zu triangles", p.inputFaces(), p.faceCount()));
+  field(out, "faces",
+        format("%zu read, %zu triangles, %zu plane faces (coplanar triangles merged)",
+               p.inputFaces(), p.faceCount(), p.planeCount()));
   if (p.flippedSlivers() > 0)
     field(out, "slivers",
           format("%zu zero-area triangles flipped away (the surface is unchanged)",
@@ -266,6 +270,12 @@ void reportCells(Output& out, const Stats& s) {
   field(out, "crowded cells",
         format("%zu (more than %zu %s: searched by %s)", s.crowdedCells, D::kCrowded,
                D::kWords.elements, D::kWords.crowdedSearch));
+  if constexpr (std::is_same_v<Stats, Stats3D>)
+    if (s.zoneCells > 0)
+      field(out, "zone cells",
+            format("%zu of them over a zone of thin faces (a cylinder's or a prism's side): "
+                   "searched by bisection",
+                   s.zoneCells));
 }
 
 // one method in detail, built on `shape`; `asked` is the resolution the user asked for (0: none)

@@ -26,8 +26,8 @@ MeshData prismOver(const std::vector<Vec2>& base, Vec3 lift) {
     mesh.addFace({i, n + j, n + i});
   }
   for (std::uint32_t i = 1; i + 1 < n; ++i) {
-    mesh.addFace({0, i + 1, i});              // the bottom, seen from below
-    mesh.addFace({n, n + i, n + i + 1});      // the top, seen from above
+    mesh.addFace({0, i + 1, i});          // the bottom, seen from below
+    mesh.addFace({n, n + i, n + i + 1});  // the top, seen from above
   }
   return mesh;
 }
@@ -47,7 +47,8 @@ MeshData cylinderMesh(std::size_t sides) {
 
 MeshData latticePrismMesh(std::size_t corners) {
   // the primitive vectors with max(|a|, |b|) <= r number about 2.43 r^2
-  const auto r = static_cast<std::int64_t>(std::ceil(std::sqrt(static_cast<double>(corners) / 2.43)));
+  const auto r =
+      static_cast<std::int64_t>(std::ceil(std::sqrt(static_cast<double>(corners) / 2.43)));
   std::vector<std::pair<double, Vec2>> steps;
   for (std::int64_t a = -r; a <= r; ++a)
     for (std::int64_t b = -r; b <= r; ++b)
@@ -55,7 +56,8 @@ MeshData latticePrismMesh(std::size_t corners) {
         steps.push_back({std::atan2(static_cast<double>(b), static_cast<double>(a)),
                          {static_cast<double>(a), static_cast<double>(b)}});
   // distinct primitive directions differ in angle by far more than atan2's rounding
-  std::sort(steps.begin(), steps.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
+  std::sort(steps.begin(), steps.end(),
+            [](const auto& p, const auto& q) { return p.first < q.first; });
   std::vector<Vec2> base;
   Vec2 at{0, 0};
   double lo = 0, hi = 0;

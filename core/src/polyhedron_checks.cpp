@@ -412,7 +412,8 @@ void PolyhedronBuilder::throwNotPlanar(std::uint32_t t, std::uint32_t u) const {
                             p[0][0] * p[1][1] - p[0][1] * p[1][0]};
   const long double off = std::fabs(six) / std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   long double size = 0;
-  for (const auto& row : p) size = std::max(size, std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]));
+  for (const auto& row : p)
+    size = std::max(size, std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]));
   char figures[96];
   std::snprintf(figures, sizeof figures, "%.3Lg off the plane (%.3Lg of the face's size)", off,
                 off / size);

@@ -136,7 +136,8 @@ void PolyhedronBuilder::chainPlaneLoops() {
     for (std::uint32_t x : std::span(out_.loops_).subspan(at)) next[x] = kNone;
     if (m != edges || m < 3)  // a plane face of a convex surface is one disc
       throw GeometryError("not convex: the coplanar triangles of face " +
-                          std::to_string(out_.sourceFace_[members[0]]) + " do not form one polygon");
+                          std::to_string(out_.sourceFace_[members[0]]) +
+                          " do not form one polygon");
     out_.loopStart_.push_back(static_cast<std::uint32_t>(out_.loops_.size()));
     const Triangle fat = members.size() == 1
                              ? tri[members[0]]

@@ -128,8 +128,9 @@ TEST_F(CliFormats, ARoundedCubeIsRefusedWithAHintAndReadWithHull) {
   std::ofstream(scratch("centre.txt")) << "0 0 0\n3 0 0\n";
   const std::string args = "classify " + q(scratch("rounded.off")) + " " + q(scratch("centre.txt"));
   const Result plain = run(args);
-  expectRejected(plain, "not convex");
-  expectRejected(plain, "--hull takes the convex hull of the vertices");
+  expectRejected(plain, "is not planar");
+  expectRejected(plain, "off the plane");
+  expectRejected(plain, "--hull");
   const Result hull = run(args + " --hull");
   EXPECT_EQ(hull.code, 0) << hull.err;
   EXPECT_EQ(hull.out, "inside\noutside\n");

@@ -159,7 +159,8 @@ inline void checkMethods3d(const ConvexPolyhedron& poly, std::span<const Vec3> q
       if (k < 64 && loc.trace(queries[k]).result != got)
         fail(name + ": trace and locate differ for " + show(queries[k]));
     }
-    if (loc.stats().faces != tri.size()) fail(name + ": stats().faces is wrong");
+    if (loc.stats().faces != poly.planeCount() || loc.stats().triangles != tri.size())
+      fail(name + ": stats() counts the faces or the triangles wrong");
   }
 }
 

@@ -341,7 +341,8 @@ TEST(Steps, OverlayFillsTheFaceTestedAtThatStep) {
   cv::buildOverlay3D(s, pal, {}, none);
   ASSERT_TRUE(s.probe().has_value());
   ASSERT_FALSE(s.probe()->trace.faces.empty());
-  // step 0 fills the first face tested (3 corners), the full trace every face tested
-  EXPECT_EQ(one.fills.size(), 3u);
-  EXPECT_EQ(none.fills.size(), 3 * s.probe()->trace.faces.size());
+  // step 0 fills the first face tested (a square: two triangles), the full trace every face
+  // tested
+  EXPECT_EQ(one.fills.size(), 6u);
+  EXPECT_EQ(none.fills.size(), 6 * s.probe()->trace.faces.size());
 }

@@ -101,7 +101,7 @@ void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces,
   const std::vector<Cell3D>& cells = scene.cells();
   const ConvexPolyhedron& solid = scene.polyhedron();
   if (cells.empty()) return;
-  const BuildOrder order(cells, solid.faceCount());
+  const BuildOrder order(cells, solid.planeCount());
   step = std::min(step, order.steps());
   const std::vector<std::size_t> counts = order.countsAt(step);
   for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -120,17 +120,22 @@ void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces,
       out.segment(toGlm(cells[c].corners[k]), toGlm(cells[c].corners[(k + 1) % 4]), pal.hoverEdge,
                   2.0f);
   }
-  const auto& t = solid.triangles()[f];
-  const glm::dvec3 a = toGlm(solid.vertices()[t[0]]), b = toGlm(solid.vertices()[t[1]]),
-                   c = toGlm(solid.vertices()[t[2]]);
-  out.triangle(a, b, c, withAlpha(pal.hoverEdge, 0.6f));
-  out.segment(a, b, pal.hoverEdge, 3.0f);
-  out.segment(b, c, pal.hoverEdge, 3.0f);
-  out.segment(c, a, pal.hoverEdge, 3.0f);
+  for (const std::uint32_t tri : solid.planeTriangles(f)) {
+    const auto& t = solid.triangles()[tri];
+    out.triangle(toGlm(solid.vertices()[t[0]]), toGlm(solid.vertices()[t[1]]),
+                 toGlm(solid.vertices()[t[2]]), withAlpha(pal.hoverEdge, 0.6f));
+  }
+  const auto loop = solid.planeLoop(f);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    out.segment(toGlm(solid.vertices()[loop[k]]),
+                toGlm(solid.vertices()[loop[(k + 1) % loop.size()]]), pal.hoverEdge, 3.0f);
   std::string text = numbered("f", f);
   text.append(" added: ").append(std::to_string(step)).append(" of ");
   text.append(std::to_string(order.steps())).append(" faces");
-  out.label((a + b + c) / 3.0, std::move(text), pal.hoverEdge, {0.0f, -22.0f});
+  glm::dvec3 middle(0.0);
+  for (const std::uint32_t w : loop) middle += toGlm(solid.vertices()[w]);
+  out.label(middle / static_cast<double>(loop.size()), std::move(text), pal.hoverEdge,
+            {0.0f, -22.0f});
 }
 
 std::size_t buildStepCount(const Scene2D& scene) {
@@ -138,7 +143,7 @@ std::size_t buildStepCount(const Scene2D& scene) {
 }
 
 std::size_t buildStepCount(const Scene3D& scene) {
-  return scene.cells().empty() ? 0 : scene.polyhedron().faceCount();
+  return scene.cells().empty() ? 0 : scene.polyhedron().planeCount();
 }
 
 }  // namespace convexloc::viewer

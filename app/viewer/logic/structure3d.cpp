@@ -23,26 +23,31 @@ glm::vec3 normalOf(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   return len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
-// face f filled in colour c, lit or flat
+// plane face f (all its triangles) filled in colour c, lit or flat
 void fillFace(const ConvexPolyhedron& p, std::uint32_t f, Rgba c, bool lit, DrawList& out) {
-  const Tri& t = p.triangles()[f];
-  const glm::dvec3 a = vertexOf(p, t[0]), b = vertexOf(p, t[1]), d = vertexOf(p, t[2]);
-  const glm::vec3 n = lit ? normalOf(a, b, d) : glm::vec3(0.0f);
-  out.fills.push_back({a, c, n});
-  out.fills.push_back({b, c, n});
-  out.fills.push_back({d, c, n});
+  for (std::uint32_t tri : p.planeTriangles(f)) {
+    const Tri& t = p.triangles()[tri];
+    const glm::dvec3 a = vertexOf(p, t[0]), b = vertexOf(p, t[1]), d = vertexOf(p, t[2]);
+    const glm::vec3 n = lit ? normalOf(a, b, d) : glm::vec3(0.0f);
+    out.fills.push_back({a, c, n});
+    out.fills.push_back({b, c, n});
+    out.fills.push_back({d, c, n});
+  }
 }
 
-// face f's outline
+// plane face f's outline
 void strokeFace(const ConvexPolyhedron& p, std::uint32_t f, Rgba c, float width, DrawList& out) {
-  const Tri& t = p.triangles()[f];
-  for (int k = 0; k < 3; ++k) out.segment(vertexOf(p, t[k]), vertexOf(p, t[(k + 1) % 3]), c, width);
+  const auto loop = p.planeLoop(f);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    out.segment(vertexOf(p, loop[k]), vertexOf(p, loop[(k + 1) % loop.size()]), c, width);
 }
 
-// the middle of face f
+// the middle of plane face f: the mean of its corners
 glm::dvec3 faceMiddle(const ConvexPolyhedron& p, std::uint32_t f) {
-  const Tri& t = p.triangles()[f];
-  return (vertexOf(p, t[0]) + vertexOf(p, t[1]) + vertexOf(p, t[2])) / 3.0;
+  const auto loop = p.planeLoop(f);
+  glm::dvec3 sum(0.0);
+  for (std::uint32_t w : loop) sum += vertexOf(p, w);
+  return sum / static_cast<double>(loop.size());
 }
 
 // a cell's square on the drawing cube, filled
@@ -300,7 +305,7 @@ void buildOverlay3D(const Scene3D& scene, const Palette& pal, const View3DOption
     // the planes tested, coloured by the sign
     const bool few = t.faces.size() <= 64;
     for (const FaceTest& f : t.faces) {
-      if (f.face >= p.faceCount()) continue;
+      if (f.face >= p.planeCount()) continue;
       if (few || f.sign <= 0) {
         fillFace(p, f.face, withAlpha(signColour(pal, f.sign), 0.35f), false, out);
         strokeFace(p, f.face, signColour(pal, f.sign), 2.0f, out);

@@ -49,7 +49,8 @@ void cellText(const Cell3D& c) {
 std::vector<StatLine> statLines(const Scene3D& scene) {
   const Stats3D& s = scene.stats();
   std::vector<StatLine> rows = {
-      {"faces", grouped(s.faces) + " (" + grouped(s.vertices) + " vertices)"}};
+      {"faces", grouped(s.faces) + " (" + grouped(s.triangles) + " triangles, " +
+                    grouped(s.vertices) + " vertices)"}};
   if (s.cells) {
     rows.push_back({"cells", grouped(s.cells) +
                                  (s.nodes > s.cells ? " (" + grouped(s.nodes) + " nodes)" : "")});

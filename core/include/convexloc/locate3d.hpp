@@ -7,9 +7,9 @@
 //   stats()              size and shape of the subdivision
 //   cells()              the subdivision as drawable geometry, with the faces each cell holds
 // "Face" below means a plane face of ConvexPolyhedron::planes() (adjacent coplanar triangles
-// merged; where none are coplanar, face t is triangle t); a walk crosses triangles. A locator keeps its own copy
-// of what it needs; the polyhedron may go away after the build. A point with an infinite or
-// NaN coordinate is reported Outside.
+// merged; where none are coplanar, face t is triangle t); a walk crosses triangles. A locator keeps
+// its own copy of what it needs; the polyhedron may go away after the build. A point with an
+// infinite or NaN coordinate is reported Outside.
 #pragma once
 
 #include <array>
@@ -97,8 +97,8 @@ struct Stats3D {
   std::size_t zoneCells = 0;     // cubemap: crowded cells searched by bisection over a zone
   std::uint32_t resolution = 0;  // cubemap: G, the base grid is G x G on each cube face
   int maxLevel = 0;              // cubemap: the deepest quadtree level
-  bool centred = false;   // a centre strictly inside exists (else every query tests all faces)
-  std::size_t bytes = 0;     // memory the locator holds, vertices included
+  bool centred = false;       // a centre strictly inside exists (else every query tests all faces)
+  std::size_t bytes = 0;      // memory the locator holds, vertices included
   double bytesPerFace = 0.0;  // bytes per triangle (the input's size)
   double buildSeconds = 0.0;
   std::vector<std::size_t> histogram;  // histogram[k]: cells holding k faces; the last bucket
@@ -207,8 +207,8 @@ class WalkLocator {
   Location run(Vec3 p, Sink& sink) const noexcept;
   detail::SurfaceCopy surface_;
   detail::WalkMesh mesh_;
-  std::vector<std::uint32_t> startFaces_;               // triangles a walk may start from
-  std::vector<std::array<float, 3>> startDirections_;   // theirs from the centre, unit length
+  std::vector<std::uint32_t> startFaces_;              // triangles a walk may start from
+  std::vector<std::array<float, 3>> startDirections_;  // theirs from the centre, unit length
   std::optional<Vec3> centre_;
   std::uint32_t maxVisits_ = 0;  // faces a walk visits before it gives up and tests all
   double buildSeconds_ = 0.0;
@@ -318,14 +318,14 @@ class CubemapLocator {
   template <class Visit>
   void forEachLeaf(Visit&& visit) const;
   detail::SurfaceCopy surface_;
-  detail::WalkMesh mesh_;         // the triangles a crowded cell's walk crosses
+  detail::WalkMesh mesh_;  // the triangles a crowded cell's walk crosses
   std::vector<Zone> zones_;
   std::vector<std::array<std::uint32_t, 2>> zoneEdges_;  // E_k from vertex to vertex, along
                                                          // the zone's direction
   std::vector<std::uint32_t> zoneFaces_;
   std::vector<ZoneRange> zoneRanges_;  // a zone leaf's first entry indexes these
-  Table<Node> nodes_;             // 6 G^2 base cells, then blocks of 4 children
-  Table<std::uint32_t> entries_;  // each leaf's faces
+  Table<Node> nodes_;                  // 6 G^2 base cells, then blocks of 4 children
+  Table<std::uint32_t> entries_;       // each leaf's faces
   Vec3 centre_{};
   bool centred_ = false;
   std::uint32_t resolution_ = 1;  // G

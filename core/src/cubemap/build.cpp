@@ -241,8 +241,7 @@ CubemapBuilder::CubemapBuilder(CubemapLocator& locator, const ConvexPolyhedron& 
     throw UsageError("cubemap: the resolution is at most " + std::to_string(kMaxResolution));
   locator_.surface_ = detail::SurfaceCopy(polyhedron);
   locator_.mesh_ = detail::WalkMesh(polyhedron);
-  locator_.resolution_ =
-      resolution ? resolution : defaultResolution(locator_.surface_.triangles);
+  locator_.resolution_ = resolution ? resolution : defaultResolution(locator_.surface_.triangles);
   centre_ = polyhedron.centre();
 }
 
@@ -454,8 +453,8 @@ void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
           B.p[2].y - B.p[0].y <= 1 / K1) {
         small_.push_back(f);
         smallBoxes_.push_back({B.p[0].x, B.p[2].x, B.p[0].y, B.p[2].y});
-        all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x),
-               std::min(all[2], B.p[0].y), std::max(all[3], B.p[2].y)};
+        all = {std::min(all[0], B.p[0].x), std::max(all[1], B.p[2].x), std::min(all[2], B.p[0].y),
+               std::max(all[3], B.p[2].y)};
       } else if (coneOf(v, t, L.centre_, scale_, k) && onCubeFace(k, q.face, P)) {
         large_.push_back(f);
         largePolys_.push_back(P);

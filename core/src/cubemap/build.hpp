@@ -135,9 +135,9 @@ class CubemapBuilder {
 
   CubemapLocator& locator_;
   const ConvexPolyhedron& polyhedron_;  // for the build only: its plane faces' triangles
-  std::optional<Vec3> centre_;    // the polyhedron's
-  cubemap::PowerOfTwo scale_{0};  // brings the cube's half-size into [1, 2)
-  std::size_t budget_ = 0;        // bytes the cells may use
+  std::optional<Vec3> centre_;          // the polyhedron's
+  cubemap::PowerOfTwo scale_{0};        // brings the cube's half-size into [1, 2)
+  std::size_t budget_ = 0;              // bytes the cells may use
   // the refinement's state
   std::vector<Pending> queue_;
   std::size_t live_ = 0;         // bytes the nodes and the leaves' entries use

@@ -12,8 +12,8 @@ Stats3D CubemapLocator::stats() const {
   Stats3D s = detail::baseStats(surface_,
                                 sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) +
                                     detail::bytesOf(zoneEdges_) + detail::bytesOf(zoneFaces_) +
-                                    detail::bytesOf(zoneRanges_) +
-                                    detail::bytesOf(nodes_) + detail::bytesOf(entries_),
+                                    detail::bytesOf(zoneRanges_) + detail::bytesOf(nodes_) +
+                                    detail::bytesOf(entries_),
                                 buildSeconds_);
   s.centred = centred_;
   s.resolution = centred_ ? resolution_ : 0;

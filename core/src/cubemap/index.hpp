@@ -60,7 +60,9 @@ inline constexpr std::uint32_t kInner = 0xffffffffu;
 inline constexpr std::uint32_t kZoneLeaf = 0x80000000u;
 
 // whether a leaf's count marks a zone leaf
-inline bool isZoneLeaf(std::uint32_t count) { return count != kInner && (count & kZoneLeaf); }
+inline bool isZoneLeaf(std::uint32_t count) {
+  return count != kInner && (count & kZoneLeaf);
+}
 
 // K = (cells per side) / 2 at `level` over base resolution g: cell i spans
 // [-1 + i / K, -1 + (i + 1) / K]

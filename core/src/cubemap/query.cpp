@@ -42,7 +42,8 @@ std::vector<std::uint32_t> CubemapLocator::leafFaces(const Node& nd) const {
   const ZoneRange& r = zoneRanges_[e[0]];
   const Zone& z = zones_[r.zone];
   std::vector<std::uint32_t> faces;
-  for (std::uint32_t k = 0; k < r.span; ++k) faces.push_back(zoneFaces_[z.first + (r.lo + k) % z.size]);
+  for (std::uint32_t k = 0; k < r.span; ++k)
+    faces.push_back(zoneFaces_[z.first + (r.lo + k) % z.size]);
   faces.insert(faces.end(), e + 1, e + (nd.count & ~cubemap::kZoneLeaf));
   std::sort(faces.begin(), faces.end());
   return faces;

@@ -46,15 +46,19 @@ bool parallel(const std::vector<Vec3>& v, Edge e, Edge f) {
          crossDiff2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}, {d.z, d.x}) == 0;
 }
 
-std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+std::uint64_t key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t{a} << 32) | b;
+}
 
 // the faces and edges of every zone, found by chaining parallel edges across faces
 class ZoneFinder {
  public:
-  ZoneFinder(const ConvexPolyhedron& p, Vec3 c) : p_(p), v_(p.vertices().begin(), p.vertices().end()), c_(c) {
+  ZoneFinder(const ConvexPolyhedron& p, Vec3 c)
+      : p_(p), v_(p.vertices().begin(), p.vertices().end()), c_(c) {
     for (std::uint32_t f = 0; f < p.planeCount(); ++f) {
       const auto loop = p.planeLoop(f);
-      for (std::size_t i = 0; i < loop.size(); ++i) left_[key(loop[i], loop[(i + 1) % loop.size()])] = f;
+      for (std::size_t i = 0; i < loop.size(); ++i)
+        left_[key(loop[i], loop[(i + 1) % loop.size()])] = f;
     }
     zoneOf.assign(p.planeCount(), kNone);
     positionOf.assign(p.planeCount(), 0);
@@ -179,14 +183,16 @@ bool CubemapBuilder::zoneFits(const ZoneRange& r, int cf, int level, std::uint64
   std::vector<double> angles;
   const double K = levelScale(L.resolution_, level), widen = 0x1p-30;
   for (int q = 0; q < 4; ++q) {
-    const double s = -1 + static_cast<double>(i + (q == 1 || q == 2)) / K + (q == 1 || q == 2 ? widen : -widen);
+    const double s =
+        -1 + static_cast<double>(i + (q == 1 || q == 2)) / K + (q == 1 || q == 2 ? widen : -widen);
     const double t = -1 + static_cast<double>(j + (q >= 2)) / K + (q >= 2 ? widen : -widen);
     const Vec3 d = cubeDirection(cf, s, t);
     angles.push_back(angleAround({d.x, d.y, d.z}, axis, e1, e2));
   }
   for (std::uint32_t k : {1u, r.span - 1}) {
     const Vec3 a = v[L.zoneEdges_[z.first + (r.lo + k) % z.size][0]];
-    angles.push_back(angleAround({a.x - L.centre_.x, a.y - L.centre_.y, a.z - L.centre_.z}, axis, e1, e2));
+    angles.push_back(
+        angleAround({a.x - L.centre_.x, a.y - L.centre_.y, a.z - L.centre_.z}, axis, e1, e2));
   }
   double lo = 0, hi = 0;
   for (double a : angles) {
@@ -248,7 +254,8 @@ bool CubemapBuilder::rangeOf(const std::uint32_t* list, std::uint32_t count,
   std::unordered_map<std::uint32_t, std::uint32_t> votes;
   std::uint32_t best = kNone, most = 0;
   for (const std::uint32_t* f = list; f != list + count; ++f)
-    if (zoneOf[*f] != kNone && ++votes[zoneOf[*f]] > most) most = votes[zoneOf[*f]], best = zoneOf[*f];
+    if (zoneOf[*f] != kNone && ++votes[zoneOf[*f]] > most)
+      most = votes[zoneOf[*f]], best = zoneOf[*f];
   if (best == kNone || most <= kCrowdedCell3D) return false;
   std::vector<std::uint32_t> at;
   others.clear();
