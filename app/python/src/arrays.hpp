@@ -1,7 +1,9 @@
 // convexloc Python module — numpy arrays in and out, and the batch that runs between them.
 //
 // The conversion rules, the same for every locator and shape: anything numpy.asarray takes;
-// integer and floating dtypes are converted to float64 once (integers to the nearest double),
+// integer and floating dtypes are converted to float64 once, and only when every value is
+// exactly a double (an int64 beyond 2^53 or a long double that is not is a ValueError naming
+// the element; a masked array with masked elements is a TypeError);
 // booleans, complex numbers, strings and objects are a TypeError; a C-contiguous, aligned,
 // native float64 array is read where it lies, without a copy. Points come as an (M, dims)
 // array (an empty 1-D array counts as no points); a wrong shape is a ValueError naming it.
