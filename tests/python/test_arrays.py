@@ -130,7 +130,7 @@ def test_locate_xy_shapes(polar):
     assert int(polar.locate_xy(0.5, 1.0)) == convexloc.BOUNDARY
     np.testing.assert_array_equal(polar.locate_xy(list(POINTS[:, 0]), POINTS[:, 1].astype(np.float32)),
                                   CODES)
-    with pytest.raises(ValueError, match=r"y has shape \(5,\), x has shape \(6,\)"):
+    with pytest.raises(ValueError, match=r"do not broadcast together: x \(6,\), y \(5,\)"):
         polar.locate_xy(POINTS[:, 0], POINTS[:5, 1])
     with pytest.raises(TypeError, match="y must be numbers"):
         polar.locate_xy(POINTS[:, 0], ["a"] * 6)
@@ -141,12 +141,31 @@ def test_locate_xyz(cubemap):
     np.testing.assert_array_equal(cubemap.locate_xyz(x, y, z), [0, 1, 2])
 
 
-def test_threads_argument(polar):
-    np.testing.assert_array_equal(polar.locate(POINTS, threads=3), CODES)
-    with pytest.raises(ValueError, match="threads must be >= 0"):
-        polar.locate(POINTS, threads=-1)
+def test_workers_argument(polar):
+    for workers in (1, 3, -1, -2, -4096):
+        np.testing.assert_array_equal(polar.locate(POINTS, workers=workers), CODES)
+    with pytest.raises(ValueError, match="workers must be a thread count .* not 0"):
+        polar.locate(POINTS, workers=0)
+    with pytest.raises(ValueError, match=r"workers must be .*, got 4611686018427387904"):
+        polar.locate(POINTS, workers=2**62)
+    with pytest.raises(ValueError, match=r"workers must be .*, got -1180591620717411303424"):
+        polar.locate_xy(POINTS[:, 0], POINTS[:, 1], workers=-(2**70))
+    with pytest.raises(TypeError, match="workers must be an integer, got 2.5"):
+        polar.locate(POINTS, workers=2.5)
     with pytest.raises(TypeError):
-        polar.locate(POINTS, 2)  # threads is keyword-only
+        polar.locate(POINTS, 2)  # workers is keyword-only
+
+
+def test_threads_is_the_deprecated_name_of_workers(polar):
+    with pytest.warns(DeprecationWarning, match="threads= is now workers="):
+        np.testing.assert_array_equal(polar.locate(POINTS, threads=3), CODES)
+    with pytest.warns(DeprecationWarning):
+        np.testing.assert_array_equal(polar.locate(POINTS, threads=0), CODES)
+    with pytest.raises(ValueError, match="threads must be from 0 .* got -1"):
+        with pytest.warns(DeprecationWarning):
+            polar.locate(POINTS, threads=-1)
+    with pytest.raises(TypeError, match="not both"):
+        polar.locate(POINTS, workers=2, threads=2)
 
 
 def test_trace_point_shape(polar, cubemap):
@@ -161,7 +180,7 @@ def test_trace_point_shape(polar, cubemap):
 
 
 def test_conveniences_validate(square):
-    with pytest.raises(ValueError, match="polygon_vertices must be an"):
+    with pytest.raises(ValueError, match="polygon must be an"):
         convexloc.contains([1, 2, 3], [[0, 0]])
     with pytest.raises(ValueError, match="points must be an"):
         convexloc.contains(square, [[0, 0, 0]])

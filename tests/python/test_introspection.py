@@ -68,7 +68,7 @@ def test_docstrings():
         if callable(value):
             assert value.__doc__, name
     assert "O(1)" in convexloc.PolarLocator.__doc__
-    assert "threads" in convexloc.PolarLocator.locate.__doc__
+    assert "workers" in convexloc.PolarLocator.locate.__doc__
     assert "slabs per octant" in convexloc.PolarLocator.__init__.__doc__
 
 

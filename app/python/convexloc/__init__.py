@@ -34,7 +34,9 @@ from ._core import (
     WedgeLocator,
     __version__,
     contains,
+    covers,
     hull_contains,
+    hull_covers,
     read_polygon,
     read_polyhedron,
     set_vector_batches,
@@ -58,5 +60,5 @@ __all__ = [
     "Polygon", "Polyhedron", "read_polygon", "read_polyhedron",
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
-    "contains", "hull_contains", "set_vector_batches", "vector_batches",
+    "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
 ]

@@ -5,10 +5,12 @@
 // only decides what it accepts, with errors that name the argument and what was wrong.
 #include "arrays.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <thread>
 #include <type_traits>
 
 namespace convexloc::python {
@@ -121,7 +123,7 @@ std::string shapeText(const std::vector<py::ssize_t>& shape) {
   return text + (shape.size() == 1 ? ",)" : ")");
 }
 
-py::array floatArray(const py::object& values, const char* what) {
+py::array numberArray(const py::object& values, const char* what) {
   refuseMasked(values, what);
   py::array any;
   try {
@@ -132,6 +134,11 @@ py::array floatArray(const py::object& values, const char* what) {
   }
   requireNumbers(any, what);
   requireLossless(any, what);
+  return any;
+}
+
+py::array floatArray(const py::object& values, const char* what) {
+  const py::array any = numberArray(values, what);
   return numpy().attr("require")(any, numpy().attr("float64"), py::make_tuple("C", "A"));
 }
 
@@ -159,10 +166,45 @@ py::array_t<std::int64_t> indexArray(std::span<const std::uint32_t> indices) {
   return out;
 }
 
-unsigned threadCount(long threads) {
-  if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core)");
-  constexpr long kMost = 4096;
-  return static_cast<unsigned>(threads < kMost ? threads : kMost);
+long long integerArgument(const py::object& value, const char* name, long long lo, long long hi,
+                          const char* meaning) {
+  if (!PyIndex_Check(value.ptr()) || PyBool_Check(value.ptr()))
+    throw py::type_error(std::string(name) + " must be an integer, got " +
+                         std::string(py::repr(value)));
+  const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!number) throw py::error_already_set();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
+  if (overflow != 0 || v < lo || v > hi)
+    throw py::value_error(std::string(name) + " must be " + meaning + ", got " +
+                          std::string(py::str(number)));
+  return v;
+}
+
+unsigned workerCount(const py::object& workers, const py::object& threads) {
+  constexpr long long kMost = 4096;
+  const long long cores = std::max(1u, std::thread::hardware_concurrency());
+  if (!threads.is_none()) {
+    if (!(workers.is_none() || (py::isinstance<py::int_>(workers) && workers.cast<long long>() == -1)))
+      throw py::type_error("give workers= or its old name threads=, not both");
+    PyErr_WarnEx(PyExc_DeprecationWarning,
+                 "threads= is now workers= (as scipy names it; -1 for every core)", 1);
+    const long long t = integerArgument(threads, "threads", 0, kMost, "from 0 (every core) to 4096");
+    return static_cast<unsigned>(t);
+  }
+  const long long w = integerArgument(workers, "workers", -kMost, kMost,
+                                      "a thread count from 1 to 4096, or -1 for every core "
+                                      "(-2 every core but one, ...), not 0");
+  if (w == 0)
+    throw py::value_error("workers must be a thread count from 1 to 4096, or -1 for every core "
+                          "(-2 every core but one, ...), not 0");
+  return static_cast<unsigned>(w > 0 ? w : std::max(1LL, cores + 1 + w));
+}
+
+std::uint32_t resolutionOf(const py::object& resolution) {
+  return static_cast<std::uint32_t>(integerArgument(
+      resolution, "resolution", 0, std::numeric_limits<std::uint32_t>::max(),
+      "from 0 (chosen from the shape) to 4294967295"));
 }
 
 }  // namespace convexloc::python

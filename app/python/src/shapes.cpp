@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -22,6 +23,7 @@
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/text_reader.hpp"
 #include "errors.hpp"
+#include "shape_protocols.hpp"
 
 namespace convexloc::python {
 
@@ -140,15 +142,21 @@ ConvexPolyhedron readPolyhedron(const py::object& pathArg) {
 
 // === Classes
 
-// a span a shape holds, as a numpy array (a copy)
+// a span a shape holds, as a read-only numpy array: a view of the coordinates (kept alive by
+// the shape `owner`), a copy of the indices (as int64)
 template <class Item>
-py::array arrayOf(std::span<const Item> items) {
-  if constexpr (std::is_same_v<Item, std::uint32_t>)
-    return indexArray(items);
-  else if constexpr (std::is_same_v<Item, ConvexPolyhedron::Triangle>)
-    return triangleArray(items);
-  else
-    return coordinateArray<Item>(items);
+py::array arrayOf(std::span<const Item> items, py::handle owner) {
+  if constexpr (std::is_same_v<Item, Vec2> || std::is_same_v<Item, Vec3>) {
+    return coordinateView(&items.data()->x, items.size(), kDims<Item>, owner);
+  } else {
+    py::array copy;
+    if constexpr (std::is_same_v<Item, std::uint32_t>)
+      copy = indexArray(items);
+    else
+      copy = triangleArray(items);
+    copy.attr("setflags")(py::arg("write") = false);
+    return copy;
+  }
 }
 
 // the read-only property `name`: what `get` returns, as an array
@@ -156,7 +164,15 @@ template <class Shape, class Item>
 void arrayProperty(py::class_<Shape>& c, const char* name,
                    std::span<const Item> (Shape::*get)() const noexcept, const char* doc) {
   c.def_property_readonly(
-      name, [get](const Shape& s) { return arrayOf((s.*get)()); }, doc);
+      name, [get](const py::object& self) { return arrayOf((self.cast<const Shape&>().*get)(), self); },
+      doc);
+}
+
+// the history property `name` (slot `slot` of the pickled history): an index array
+template <class Shape>
+void indexHistory(py::class_<Shape>& c, const char* name, std::size_t slot,
+                  std::span<const std::uint32_t> (Shape::*get)() const noexcept, const char* doc) {
+  historyProperty(c, name, slot, [get](const Shape& s) { return arrayOf((s.*get)(), {}); }, doc);
 }
 
 // the read-only property `bounds`: the exact box as ((lo...), (hi...))
@@ -174,7 +190,10 @@ void bindPolygon(py::module_& m) {
   using P = ConvexPolygon;
   py::class_<P> c(m, "Polygon",
                   "A strictly convex polygon, validated once: counter-clockwise, repeated and "
-                  "collinear vertices dropped.");
+                  "collinear vertices dropped. Immutable: its arrays are read-only. Two polygons "
+                  "are equal when they have the same vertices in the same counter-clockwise "
+                  "order, from any start; pickle, copy and deepcopy keep the exact doubles.",
+                  py::dynamic_attr());
   c.def(py::init([](const py::object& vertices) {
           const py::array points = pointArray(vertices, 2, "vertices");
           const std::span<const Vec2> read = pointsOf<Vec2>(points);
@@ -184,15 +203,17 @@ void bindPolygon(py::module_& m) {
         py::arg("vertices"),
         "Validates the (N, 2) vertices (either orientation). Raises GeometryError naming the "
         "witness: not convex, fewer than 3 distinct vertices, a non-finite coordinate.");
-  arrayProperty(c, "vertices", &P::vertices, "(N, 2) float64: the vertices, counter-clockwise");
-  arrayProperty(c, "source_index", &P::sourceIndex, "int64: each vertex's index in the input");
+  arrayProperty(c, "vertices", &P::vertices,
+                "(N, 2) float64, read-only: the vertices, counter-clockwise");
+  indexHistory(c, "source_index", 0, &P::sourceIndex, "int64: each vertex's index in the input");
   boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
   c.def("__len__", &P::size, "the number of vertices (and of edges)");
   c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
-  c.def_property_readonly("dropped_count", &P::droppedCount,
-                          "input vertices dropped as repeated or collinear");
-  c.def_property_readonly("was_clockwise", &P::wasClockwise,
-                          "whether the input was clockwise and got reversed");
+  historyProperty(c, "dropped_count", 1, std::mem_fn(&P::droppedCount),
+                  "input vertices dropped as repeated or collinear");
+  historyProperty(c, "was_clockwise", 2, std::mem_fn(&P::wasClockwise),
+                  "whether the input was clockwise and got reversed");
+  defineShapeProtocols(c);
   c.def("__repr__", [](const P& p) {
     return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
   });
@@ -226,13 +247,17 @@ void bindPolyhedron(py::module_& m) {
   using P = ConvexPolyhedron;
   py::class_<P> c(m, "Polyhedron",
                   "A closed convex polyhedron, validated once, as triangles counter-clockwise "
-                  "seen from outside.");
+                  "seen from outside. Immutable: its arrays are read-only. Two polyhedra are "
+                  "equal when they have the same vertices and the same triangles, in any order; "
+                  "pickle, copy and deepcopy keep the exact doubles.",
+                  py::dynamic_attr());
   definePolyhedronMakers(c);
-  arrayProperty(c, "vertices", &P::vertices, "(V, 3) float64: the vertices the triangles use");
+  arrayProperty(c, "vertices", &P::vertices,
+                "(V, 3) float64, read-only: the vertices the triangles use");
   arrayProperty(c, "triangles", &P::triangles, "(F, 3) int64: counter-clockwise from outside");
   arrayProperty(c, "neighbours", &P::neighbours, "(F, 3) int64: [t, k] is across edge k of t");
-  arrayProperty(c, "source_face", &P::sourceFace, "int64: each triangle's input face");
-  arrayProperty(c, "source_vertex", &P::sourceVertex, "int64: each vertex's index in the input");
+  indexHistory(c, "source_face", 0, &P::sourceFace, "int64: each triangle's input face");
+  indexHistory(c, "source_vertex", 1, &P::sourceVertex, "int64: each vertex's index in the input");
   boundsProperty(c, "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact");
   c.def_property_readonly(
       "centre", [](const P& p) { return centreToPython(p.centre()); },
@@ -241,8 +266,9 @@ void bindPolyhedron(py::module_& m) {
   c.def_property_readonly("vertex_count", &P::vertexCount, "the number of vertices");
   c.def_property_readonly("volume", &P::volume, "the volume (for display)");
   c.def_property_readonly("area", &P::area, "the surface area (for display)");
-  c.def_property_readonly("was_inverted", &P::wasInverted,
-                          "whether the input was clockwise from outside and got reversed");
+  historyProperty(c, "was_inverted", 2, std::mem_fn(&P::wasInverted),
+                  "whether the input was clockwise from outside and got reversed");
+  defineShapeProtocols(c);
   c.def("__repr__", [](const P& p) {
     return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
            std::to_string(p.vertexCount()) + " vertices>";
