@@ -54,11 +54,14 @@ LOCATORS_3D = {cls.method: cls for cls in (HalfspaceLocator, WalkLocator, Cubema
 #: a code's name: NAMES[code] is "inside", "boundary" or "outside"
 NAMES = ("inside", "boundary", "outside")
 
+from .chunks import iter_locate, locate_chunks  # noqa: E402  (it uses the tables above)
+
 __all__ = [
     "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
     "Error", "FileError", "GeometryError", "ParseError", "UsageError",
     "Polygon", "Polyhedron", "read_polygon", "read_polyhedron",
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
+    "iter_locate", "locate_chunks",
     "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
 ]
