@@ -1,7 +1,8 @@
 """Type stubs for convexloc: exact O(1) point location in convex polygons and polyhedra."""
 
 import os
-from typing import ClassVar, Final, Generic, Sequence, TypedDict, TypeVar, Union
+from typing import (Any, Callable, ClassVar, Final, Generic, Iterable, Iterator, Sequence,
+                    TypedDict, TypeVar, Union)
 
 import numpy as np
 import numpy.typing as npt
@@ -234,6 +235,17 @@ def hull_contains(cloud: ArrayLike | Polyhedron, points: ArrayLike, *, workers: 
                   threads: int | None = None, boundary: bool | None = None) -> npt.NDArray[np.bool_]: ...
 def hull_covers(cloud: ArrayLike | Polyhedron, points: ArrayLike, *, workers: int = -1,
                 threads: int | None = None) -> npt.NDArray[np.bool_]: ...
+# === Chunk by chunk
+
+def iter_locate(source: PathLike | npt.NDArray[Any] | Iterable[ArrayLike],
+                locator: _Locator[Any, Any, Any] | Polygon | Polyhedron, *, chunk: int = ...,
+                progress: Callable[[int, int | None], object] | None = None,
+                workers: int = -1) -> Iterator[Codes]: ...
+def locate_chunks(source: PathLike | npt.NDArray[Any] | Iterable[ArrayLike],
+                  locator: _Locator[Any, Any, Any] | Polygon | Polyhedron, *, chunk: int = ...,
+                  out: Codes | None = None,
+                  progress: Callable[[int, int | None], object] | None = None,
+                  workers: int = -1) -> Codes: ...
 def set_vector_batches(enabled: bool) -> None: ...
 def vector_batches() -> bool: ...
 
