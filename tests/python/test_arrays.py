@@ -187,3 +187,47 @@ def test_conveniences_validate(square):
     with pytest.raises(ValueError, match="cloud must be an"):
         convexloc.hull_contains([[0, 0]], [[0, 0, 0]])
     assert convexloc.contains(square, np.zeros((0, 2))).dtype == np.bool_
+
+
+def explicit(locator, *columns):
+    """What the columns should give: locate() on the explicitly broadcast points."""
+    arrays = np.broadcast_arrays(*[np.asarray(c, dtype=float) for c in columns])
+    rows = np.stack([a.ravel() for a in arrays], axis=1)
+    return locator.locate(rows).reshape(arrays[0].shape)
+
+
+@pytest.mark.parametrize("x, y", [
+    (np.linspace(-0.5, 1.5, 3)[:, None], np.linspace(-0.5, 1.5, 4)[None, :]),   # (3,1) x (1,4)
+    (np.linspace(-0.5, 1.5, 9), 0.5),                                           # a scalar
+    (np.arange(24.0).reshape(2, 3, 4) / 10, np.arange(4.0)[::-1] / 3),         # (2,3,4) x (4,)
+    (np.arange(24.0).reshape(2, 3, 4).transpose(2, 0, 1) / 10, 1.0),            # transposed
+    (np.arange(60.0).reshape(6, 10)[::2, ::3] / 20, np.zeros((1, 1, 4))),       # strided views
+    (np.arange(-8, 8)[::-1] / 8, np.arange(-8, 8) / 8),                         # negative stride
+    (np.zeros((0, 1)), np.zeros((1, 5))),                                       # empty result
+])
+def test_locate_xy_broadcasts_like_a_ufunc(polar, x, y):
+    codes = polar.locate_xy(x, y)
+    expected = explicit(polar, x, y)
+    assert codes.shape == expected.shape and codes.dtype == np.int8
+    np.testing.assert_array_equal(codes, expected)
+
+
+def test_locate_xyz_broadcasts_and_reads_views(cubemap):
+    rng = np.random.default_rng(3)
+    rows = rng.integers(-2, 3, size=(5000, 3)) / 2
+    np.testing.assert_array_equal(cubemap.locate_xyz(rows[:, 0], rows[:, 1], rows[:, 2]),
+                                  cubemap.locate(rows))
+    grid = [np.linspace(-1.5, 1.5, 7).reshape(shape) for shape in ((7, 1, 1), (1, 7, 1), (1, 1, 7))]
+    codes = cubemap.locate_xyz(*grid)
+    assert codes.shape == (7, 7, 7)
+    np.testing.assert_array_equal(codes, explicit(cubemap, *grid))
+    assert set(np.unique(codes)) == {0, 1, 2}
+
+
+def test_locate_xy_on_many_threads_equals_one(polar):
+    rng = np.random.default_rng(8)
+    x = rng.integers(-2, 4, size=(300, 1)) / 2
+    y = rng.integers(-2, 4, size=(1, 700)) / 2
+    one = polar.locate_xy(x, y, workers=1)
+    np.testing.assert_array_equal(polar.locate_xy(x, y, workers=3), one)
+    np.testing.assert_array_equal(one, explicit(polar, x, y))

@@ -30,26 +30,41 @@ std::vector<py::array> broadcastColumns(const py::object* columns, std::size_t c
   return out;
 }
 
-Column columnOf(const py::array& array, py::object& keep) {
-  // one stride serves when, going out from the innermost axis longer than 1, each such axis's
-  // stride is the previous one's times that one's length (every stride 0 counts: a scalar)
-  py::ssize_t stride = 0;
+std::size_t rowLength(const py::array& broadcast) {
+  for (py::ssize_t k = broadcast.ndim(); k-- > 0;)
+    if (broadcast.shape(k) != 1) return static_cast<std::size_t>(broadcast.shape(k));
+  return 1;
+}
+
+Column columnOf(const py::array& array, std::size_t length, py::object& keep) {
+  // the last axis longer than 1 is the row; the axes outside it, those longer than 1, must
+  // step by one stride: each one's stride the next inner one's times that one's length
+  py::ssize_t inner = 0;
+  py::ssize_t outer = 0;
   py::ssize_t expected = 0;
-  bool inner = true;
+  bool found = false;
+  bool first = true;
   bool uniform = true;
   for (py::ssize_t k = array.ndim(); k-- > 0;) {
     if (array.shape(k) == 1) continue;
-    if (inner) stride = array.strides(k);
-    uniform = uniform && (inner || array.strides(k) == expected);
+    if (!found) {
+      inner = array.strides(k);
+      found = true;
+      continue;
+    }
+    if (first) outer = array.strides(k);
+    uniform = uniform && (first || array.strides(k) == expected);
     expected = array.strides(k) * array.shape(k);
-    inner = false;
+    first = false;
   }
   if (!uniform) {
     keep = py::module_::import("numpy").attr("ascontiguousarray")(array);
-    return {static_cast<const char*>(py::array(keep).data()), py::ssize_t{sizeof(double)}};
+    const auto width = static_cast<py::ssize_t>(sizeof(double));
+    return {static_cast<const char*>(py::array(keep).data()),
+            width * static_cast<py::ssize_t>(length), width};
   }
   keep = array;
-  return {static_cast<const char*>(array.data()), stride};
+  return {static_cast<const char*>(array.data()), outer, inner};
 }
 
 }  // namespace convexloc::python
