@@ -1,5 +1,6 @@
 """Type stubs for convexloc: exact O(1) point location in convex polygons and polyhedra."""
 
+import enum
 import os
 from typing import (Any, Callable, ClassVar, Final, Generic, Iterable, Iterator, Sequence,
                     TypedDict, TypeVar, Union)
@@ -7,13 +8,21 @@ from typing import (Any, Callable, ClassVar, Final, Generic, Iterable, Iterator,
 import numpy as np
 import numpy.typing as npt
 
+from . import chunks as chunks
+
 __version__: str
 
 # === Codes
 
-INSIDE: int
-BOUNDARY: int
-OUTSIDE: int
+class Location(enum.IntEnum):
+    """Where a point lies: the int8 codes every locate() returns, by name."""
+    INSIDE = 0
+    BOUNDARY = 1
+    OUTSIDE = 2
+
+INSIDE: Final = Location.INSIDE
+BOUNDARY: Final = Location.BOUNDARY
+OUTSIDE: Final = Location.OUTSIDE
 NAMES: tuple[str, str, str]
 
 ArrayLike = npt.ArrayLike
@@ -21,6 +30,7 @@ PathLike = Union[str, os.PathLike[str]]
 Codes = npt.NDArray[np.int8]
 Floats = npt.NDArray[np.float64]
 Indices = npt.NDArray[np.int64]
+Bools = npt.NDArray[np.bool_]
 
 # === Errors
 
@@ -39,56 +49,99 @@ class FileError(Error, OSError): ...
 
 class Polygon:
     """A strictly convex polygon, validated once (counter-clockwise, no repeated or
-    collinear vertices)."""
-    def __init__(self, vertices: ArrayLike) -> None: ...
-    vertices: Final[Floats]
+    collinear vertices). Immutable, picklable, compared and hashed by value."""
+    def __init__(self, vertices: ArrayLike | Any) -> None: ...
+    @staticmethod
+    def hull(points: ArrayLike) -> Polygon: ...
+    @property
+    def vertices(self) -> Floats: ...
     def __len__(self) -> int: ...
-    bounds: Final[tuple[tuple[float, float], tuple[float, float]]]
-    area: Final[float]
-    source_index: Final[Indices]
-    dropped_count: Final[int]
-    was_clockwise: Final[bool]
+    @property
+    def bounds(self) -> tuple[tuple[float, float], tuple[float, float]]: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def source_index(self) -> Indices: ...
+    @property
+    def dropped_count(self) -> int: ...
+    @property
+    def was_clockwise(self) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __hash__(self, /) -> int: ...
 
 class Polyhedron:
     """A closed convex polyhedron, validated once, as triangles counter-clockwise from
-    outside."""
+    outside. Immutable, picklable, compared and hashed by value."""
     def __init__(self, vertices: ArrayLike, faces: ArrayLike | Sequence[Sequence[int]]) -> None: ...
     @staticmethod
     def hull(points: ArrayLike) -> Polyhedron: ...
-    vertices: Final[Floats]
-    triangles: Final[Indices]
-    neighbours: Final[Indices]
-    face_count: Final[int]
-    vertex_count: Final[int]
-    centre: Final[tuple[float, float, float] | None]
-    bounds: Final[tuple[tuple[float, float, float], tuple[float, float, float]]]
-    volume: Final[float]
-    area: Final[float]
-    source_face: Final[Indices]
-    source_vertex: Final[Indices]
-    was_inverted: Final[bool]
+    @property
+    def vertices(self) -> Floats: ...
+    @property
+    def triangles(self) -> Indices: ...
+    @property
+    def neighbours(self) -> Indices: ...
+    @property
+    def face_count(self) -> int: ...
+    @property
+    def vertex_count(self) -> int: ...
+    @property
+    def centre(self) -> tuple[float, float, float] | None: ...
+    @property
+    def bounds(self) -> tuple[tuple[float, float, float], tuple[float, float, float]]: ...
+    @property
+    def volume(self) -> float: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def source_face(self) -> Indices: ...
+    @property
+    def source_vertex(self) -> Indices: ...
+    @property
+    def was_inverted(self) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __hash__(self, /) -> int: ...
 
 def read_polygon(path: PathLike) -> Polygon: ...
 def read_polyhedron(path: PathLike) -> Polyhedron: ...
 
 # === Introspection values
 
+class UniformStep(TypedDict):
+    y_min: float
+    height: float
+    value: float
+    slabs: int
+
+class PolarStep(TypedDict):
+    direction: tuple[float, float]
+    ratio: float
+    steep: bool
+    slab: int
+    slabs: int
+    base: int
+    step: int
+
 class Trace2D(TypedDict):
     method: str
     result: int
     location: str
-    outside_box: bool
-    cell: int
-    octant: int
     crowded: bool
     at_centre: bool
     by_radius: bool
     distance: float
     inner_radius: float
     outer_radius: float
+    outside_box: bool
+    cell: int
+    octant: int
     apex: tuple[float, float]
-    rays: list[tuple[int, int]]   # (vertex, sign)
-    edges: list[tuple[int, int]]  # (edge, sign)
+    rays: list[tuple[int, int]]                # (vertex, sign)
+    edges: list[tuple[int, int]]               # (edge, sign)
+    radius_filter: bool
+    probes: list[tuple[int, float, bool]]      # the slab search: (rank, y, above)
+    uniform: UniformStep
+    polar: PolarStep
 
 class Stats2D(TypedDict):
     edges: int
@@ -118,14 +171,14 @@ class Trace3D(TypedDict):
     method: str
     result: int
     location: str
-    non_finite: bool
-    at_centre: bool
-    fallback: bool
     crowded: bool
+    at_centre: bool
     by_radius: bool
     distance: float
     inner_radius: float
     outer_radius: float
+    non_finite: bool
+    fallback: bool
     centre: tuple[float, float, float] | None
     cube_face: int
     level: int
@@ -136,6 +189,9 @@ class Trace3D(TypedDict):
     path: Indices
     steps: list[tuple[int, int, int]]  # (face, edge, sign)
     faces: list[tuple[int, int]]       # (face, sign)
+    radius_filter: bool
+    direction: tuple[float, float, float]
+    cells_per_side: int
 
 class Stats3D(TypedDict):
     faces: int
@@ -170,22 +226,25 @@ class Cell3D(TypedDict):
 
 # === Locators
 
+_Shape = TypeVar("_Shape", Polygon, Polyhedron)
 _Trace = TypeVar("_Trace", Trace2D, Trace3D)
 _Stats = TypeVar("_Stats", Stats2D, Stats3D)
 _Cell = TypeVar("_Cell", Cell2D, Cell3D)
 
-class _Locator(Generic[_Trace, _Stats, _Cell]):
-    """What every locator class has."""
+class _Locator(Generic[_Shape, _Trace, _Stats, _Cell]):
+    """What every locator class has (not a runtime class)."""
     method: ClassVar[str]
     @property
-    def shape(self) -> Polygon | Polyhedron: ...
+    def shape(self) -> _Shape: ...
     def locate(self, points: ArrayLike, *, workers: int = -1, threads: int | None = None) -> Codes: ...
     def trace(self, point: ArrayLike, *, radii: bool = True) -> _Trace: ...
     def stats(self) -> _Stats: ...
     def cells(self) -> list[_Cell]: ...
 
-class _Locator2D(_Locator[Trace2D, Stats2D, Cell2D]):
-    def locate_xy(self, x: ArrayLike, y: ArrayLike, *, threads: int = 0) -> Codes: ...
+class _Locator2D(_Locator[Polygon, Trace2D, Stats2D, Cell2D]):
+    def __init__(self, polygon: Polygon, resolution: int = 0) -> None: ...
+    def locate_xy(self, x: ArrayLike, y: ArrayLike, *, workers: int = -1,
+                  threads: int | None = None) -> Codes: ...
 
 class HalfplaneLocator(_Locator2D):
     def __init__(self, polygon: Polygon) -> None: ...
@@ -198,54 +257,68 @@ class SlabLocator(_Locator2D):
 
 class UniformLocator(_Locator2D):
     def __init__(self, polygon: Polygon, resolution: int = 0) -> None: ...
-    slab_count: Final[int]
+    @property
+    def slab_count(self) -> int: ...
 
 class PolarLocator(_Locator2D):
     def __init__(self, polygon: Polygon, resolution: int = 0) -> None: ...
-    centre: Final[tuple[float, float]]
-    slabs_per_octant: Final[int]
-    box: Final[tuple[tuple[float, float], tuple[float, float]]]
+    @property
+    def centre(self) -> tuple[float, float]: ...
+    @property
+    def slabs_per_octant(self) -> int: ...
+    @property
+    def box(self) -> tuple[tuple[float, float], tuple[float, float]]: ...
 
-class _Locator3D(_Locator[Trace3D, Stats3D, Cell3D]):
-    def locate_xyz(self, x: ArrayLike, y: ArrayLike, z: ArrayLike, *, threads: int = 0) -> Codes: ...
+class _Locator3D(_Locator[Polyhedron, Trace3D, Stats3D, Cell3D]):
+    def __init__(self, polyhedron: Polyhedron, resolution: int = 0) -> None: ...
+    def locate_xyz(self, x: ArrayLike, y: ArrayLike, z: ArrayLike, *, workers: int = -1,
+                   threads: int | None = None) -> Codes: ...
 
 class HalfspaceLocator(_Locator3D):
     def __init__(self, polyhedron: Polyhedron) -> None: ...
 
 class WalkLocator(_Locator3D):
     def __init__(self, polyhedron: Polyhedron) -> None: ...
-    centre: Final[tuple[float, float, float] | None]
+    @property
+    def centre(self) -> tuple[float, float, float] | None: ...
 
 class CubemapLocator(_Locator3D):
     def __init__(self, polyhedron: Polyhedron, resolution: int = 0) -> None: ...
-    centre: Final[tuple[float, float, float] | None]
-    resolution: Final[int]
-    cube_half_size: Final[float]
+    @property
+    def centre(self) -> tuple[float, float, float] | None: ...
+    @property
+    def resolution(self) -> int: ...
+    @property
+    def cube_half_size(self) -> float: ...
 
+# the classes by method name: LOCATORS_2D["polar"](polygon) is a _Locator2D
 LOCATORS_2D: dict[str, type[_Locator2D]]
 LOCATORS_3D: dict[str, type[_Locator3D]]
 
 # === One call
 
 def contains(polygon: ArrayLike | Polygon, points: ArrayLike, *, workers: int = -1,
-             threads: int | None = None, boundary: bool | None = None) -> npt.NDArray[np.bool_]: ...
+             threads: int | None = None, boundary: bool | None = None) -> Bools: ...
 def covers(polygon: ArrayLike | Polygon, points: ArrayLike, *, workers: int = -1,
-           threads: int | None = None) -> npt.NDArray[np.bool_]: ...
+           threads: int | None = None) -> Bools: ...
 def hull_contains(cloud: ArrayLike | Polyhedron, points: ArrayLike, *, workers: int = -1,
-                  threads: int | None = None, boundary: bool | None = None) -> npt.NDArray[np.bool_]: ...
+                  threads: int | None = None, boundary: bool | None = None) -> Bools: ...
 def hull_covers(cloud: ArrayLike | Polyhedron, points: ArrayLike, *, workers: int = -1,
-                threads: int | None = None) -> npt.NDArray[np.bool_]: ...
+                threads: int | None = None) -> Bools: ...
+
 # === Chunk by chunk
 
-def iter_locate(source: PathLike | npt.NDArray[Any] | Iterable[ArrayLike],
-                locator: _Locator[Any, Any, Any] | Polygon | Polyhedron, *, chunk: int = ...,
+_Source = Union[PathLike, npt.NDArray[Any], Iterable[ArrayLike]]
+_AnyLocator = Union[_Locator2D, _Locator3D, Polygon, Polyhedron]
+
+def iter_locate(source: _Source, locator: _AnyLocator, *, chunk: int = ...,
                 progress: Callable[[int, int | None], object] | None = None,
                 workers: int = -1) -> Iterator[Codes]: ...
-def locate_chunks(source: PathLike | npt.NDArray[Any] | Iterable[ArrayLike],
-                  locator: _Locator[Any, Any, Any] | Polygon | Polyhedron, *, chunk: int = ...,
+def locate_chunks(source: _Source, locator: _AnyLocator, *, chunk: int = ...,
                   out: Codes | None = None,
                   progress: Callable[[int, int | None], object] | None = None,
                   workers: int = -1) -> Codes: ...
+
 def set_vector_batches(enabled: bool) -> None: ...
 def vector_batches() -> bool: ...
 

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "arrays.hpp"
+#include "locator_class.hpp"
 #include "bindings.hpp"
 
 namespace convexloc::python {
@@ -36,6 +37,7 @@ const ConvexPolyhedron& hullOf(const py::object& shape, std::optional<ConvexPoly
   if (py::isinstance<ConvexPolyhedron>(shape)) return shape.cast<const ConvexPolyhedron&>();
   const py::array cloud = pointArray(shape, 3, "cloud");
   const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
+  requireHullPoints(read.size());
   py::gil_scoped_release released;
   return made.emplace(ConvexPolyhedron::hullOf(read));
 }
@@ -83,11 +85,17 @@ void defineContains(py::module_& m, const char* name, bool covers, const char* s
         [body](const py::object& shape, const py::object& points, const py::object& workers,
                const py::object& threads) { return body(shape, points, workers, threads, py::none()); },
         py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
-        py::arg("threads") = py::none(), doc);
+        py::arg("threads") = py::none(),
+        signedDoc(name, keep("(" + std::string(shapeArg) + ", points, *, workers=-1, threads=None)"),
+                  doc));
   else
     m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(),
           py::arg("workers") = -1, py::arg("threads") = py::none(),
-          py::arg("boundary") = py::none(), doc);
+          py::arg("boundary") = py::none(),
+          signedDoc(name,
+                    keep("(" + std::string(shapeArg) +
+                         ", points, *, workers=-1, threads=None, boundary=None)"),
+                    doc));
 }
 
 }  // namespace

@@ -73,15 +73,18 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
   const auto& info = methodInfo(method);
   const py::arg shape(Dimension<Method>::kShape);
   if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>) {
-    const char* doc = keep("Builds the locator. resolution: " + std::string(info.resolution) +
-                           " (0 chooses from the shape).");
+    const std::string params = std::string("(self, ") + Dimension<Method>::kShape + ", resolution=0)";
+    const char* doc = signedDoc("__init__", keep(params),
+                                "Builds the locator. resolution: " + std::string(info.resolution) +
+                                    " (0 chooses from the shape).");
     c.def(py::init([](const py::object& s, const py::object& resolution) {
             return buildBound<Locator, Method>(s, resolutionOf(resolution));
           }),
           shape, py::arg("resolution") = 0, doc);
   } else {
+    const std::string params = std::string("(self, ") + Dimension<Method>::kShape + ")";
     c.def(py::init([](const py::object& s) { return buildBound<Locator, Method>(s, 0); }), shape,
-          "Builds the locator.");
+          signedDoc("__init__", keep(params), "Builds the locator."));
   }
   c.def(py::pickle(
       [](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
@@ -98,6 +101,10 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
 
 // the docstring of locate and of locate_xy / locate_xyz
 inline const char* locateDoc(int dims, bool columns) {
+  const char* name = columns ? (dims == 2 ? "locate_xy" : "locate_xyz") : "locate";
+  const char* params = columns ? (dims == 2 ? "(self, x, y, *, workers=-1, threads=None)"
+                                            : "(self, x, y, z, *, workers=-1, threads=None)")
+                               : "(self, points, *, workers=-1, threads=None)";
   const std::string what =
       columns ? std::string("Locates the points whose coordinates are the elements of x, y") +
                     (dims == 3 ? ", z" : "") +
@@ -105,7 +112,7 @@ inline const char* locateDoc(int dims, bool columns) {
                     "broadcast shape."
               : "Locates (M, " + std::to_string(dims) +
                     ") points: an (M,) int8 array of INSIDE, BOUNDARY or OUTSIDE.";
-  return keep(what +
+  return signedDoc(name, params, what +
               " Exact for the doubles given (NaN and infinite coordinates are OUTSIDE). Runs "
               "without the GIL, on up to `workers` threads for large batches (-1: one per "
               "core, as scipy's workers=; threads= is its deprecated old name, 0 meaning "
@@ -161,18 +168,21 @@ void defineIntrospection(py::class_<Bound<Locator>>& c, Method method) {
           return traceToPython(l.trace(p));
       },
       py::arg("point"), py::kw_only(), py::arg("radii") = true,
+      signedDoc("trace", "(self, point, *, radii=True)",
       "What locating one point does: a dict of the cell chosen, the tests made with their "
       "signs, and the result (as a code and as a name). radii=False runs the polar and "
       "cube-map queries without convexloc's radius filter, as the paper describes them (the "
-      "cell's edges or faces decide); the answer is the same.");
+      "cell's edges or faces decide); the answer is the same."));
   c.def(
       "stats", [](const Bound<Locator>& b) { return statsToPython(b.locator.stats()); },
-      "The size and shape of the subdivision: a dict (cells, entries, max_per_cell, bytes, "
-      "build_seconds, histogram, ...).");
+      signedDoc("stats", "(self)",
+                "The size and shape of the subdivision: a dict (cells, entries, max_per_cell, "
+                "bytes, build_seconds, histogram, ...)."));
   c.def(
       "cells", [](const Bound<Locator>& b) { return cellsToPython(b.locator.cells()); },
-      "The subdivision as a list of dicts, one per cell: its geometry to draw and the indices "
-      "it holds. Empty for a method without cells.");
+      signedDoc("cells", "(self)",
+                "The subdivision as a list of dicts, one per cell: its geometry to draw and the "
+                "indices it holds. Empty for a method without cells."));
   const std::string name(methodInfo(method).name);
   c.def_property_readonly_static(
       "method", [name](const py::object&) { return name; }, "the method's name");
@@ -206,9 +216,13 @@ py::class_<Bound<Locator>> bindLocator(py::module_& m, const char* name, Method 
   defineInit(c, method);
   defineLocate<Locator, Method>(c);
   defineIntrospection(c, method);
-  c.def("__repr__", [name = std::string(name)](const Bound<Locator>& b) {
-    return "<convexloc." + name + " over " + std::to_string(b.locator.stats().cells) + " cells>";
-  });
+  c.def(
+      "__repr__",
+      [name = std::string(name)](const Bound<Locator>& b) {
+        return "<convexloc." + name + " over " + std::to_string(b.locator.stats().cells) +
+               " cells>";
+      },
+      signedDoc("__repr__", "(self, /)", "Return repr(self)."));
   return c;
 }
 

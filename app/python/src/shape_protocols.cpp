@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "bindings.hpp"
 #include "errors.hpp"
 
 namespace convexloc::python {
@@ -105,7 +106,9 @@ void defineEquality(py::class_<Shape>& c) {
         if (!py::isinstance<Shape>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
         return py::bool_(canonical(a) == canonical(other.cast<const Shape&>()));
       },
-      py::is_operator(), "Whether the shapes are the same (see the class's docstring).");
+      py::is_operator(),
+      signedDoc("__eq__", "(self, other, /)",
+                "Whether the shapes are the same (see the class's docstring)."));
   c.def(
       "__hash__",
       [](const py::object& self) {
@@ -117,7 +120,7 @@ void defineEquality(py::class_<Shape>& c) {
         }
         return state["_hash"];
       },
-      "A hash consistent with ==, computed once.");
+      signedDoc("__hash__", "(self, /)", "A hash consistent with ==, computed once."));
 }
 
 // === Pickling

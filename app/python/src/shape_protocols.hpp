@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "convexloc/polygon.hpp"
+#include "bindings.hpp"
 #include "convexloc/polyhedron.hpp"
 
 namespace convexloc::python {
@@ -35,7 +36,9 @@ void pickleAnyProtocol(py::class_<T>& c) {
       [](const py::object& self, const py::object&) {
         return py::module_::import("builtins").attr("object").attr("__reduce_ex__")(self, 2);
       },
-      py::arg("protocol"), "As protocol 2 (and above) reduce: the state, then __setstate__.");
+      py::arg("protocol"),
+      signedDoc("__reduce_ex__", "(self, protocol, /)",
+                "As protocol 2 (and above) reduce: the state, then __setstate__."));
 }
 
 // a read-only numpy view of `count` rows of `dims` doubles at `data`, kept alive by `owner`
