@@ -115,7 +115,18 @@ def _signed(function):
 read_polygon = _signed(_core.read_polygon)
 read_polyhedron = _signed(_core.read_polyhedron)
 
+from . import types  # noqa: E402
 from .chunks import iter_locate, locate_chunks  # noqa: E402  (it uses the tables above)
+from .types import (  # noqa: E402
+    Cell2D,
+    Cell3D,
+    PolarStep,
+    Stats2D,
+    Stats3D,
+    Trace2D,
+    Trace3D,
+    UniformStep,
+)
 
 __all__ = [
     "Location", "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
@@ -124,5 +135,6 @@ __all__ = [
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
     "iter_locate", "locate_chunks",
+    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
     "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
 ]

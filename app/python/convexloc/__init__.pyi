@@ -1,14 +1,18 @@
 """Type stubs for convexloc: exact O(1) point location in convex polygons and polyhedra."""
 
 import enum
-import os
 from typing import (Any, Callable, ClassVar, Final, Generic, Iterable, Iterator, Sequence,
-                    TypedDict, TypeVar, Union)
+                    TypeVar, Union)
 
 import numpy as np
 import numpy.typing as npt
 
 from . import chunks as chunks
+from . import types as types
+from .types import (ArrayLike, Bools, Cell2D as Cell2D, Cell3D as Cell3D, Codes, Floats,
+                    Indices, PathLike, PolarStep as PolarStep, Stats2D as Stats2D,
+                    Stats3D as Stats3D, Trace2D as Trace2D, Trace3D as Trace3D,
+                    UniformStep as UniformStep)
 
 __version__: str
 
@@ -24,13 +28,6 @@ INSIDE: Final = Location.INSIDE
 BOUNDARY: Final = Location.BOUNDARY
 OUTSIDE: Final = Location.OUTSIDE
 NAMES: tuple[str, str, str]
-
-ArrayLike = npt.ArrayLike
-PathLike = Union[str, os.PathLike[str]]
-Codes = npt.NDArray[np.int8]
-Floats = npt.NDArray[np.float64]
-Indices = npt.NDArray[np.int64]
-Bools = npt.NDArray[np.bool_]
 
 # === Errors
 
@@ -104,125 +101,6 @@ class Polyhedron:
 
 def read_polygon(path: PathLike) -> Polygon: ...
 def read_polyhedron(path: PathLike) -> Polyhedron: ...
-
-# === Introspection values
-
-class UniformStep(TypedDict):
-    y_min: float
-    height: float
-    value: float
-    slabs: int
-
-class PolarStep(TypedDict):
-    direction: tuple[float, float]
-    ratio: float
-    steep: bool
-    slab: int
-    slabs: int
-    base: int
-    step: int
-
-class Trace2D(TypedDict):
-    method: str
-    result: int
-    location: str
-    crowded: bool
-    at_centre: bool
-    by_radius: bool
-    distance: float
-    inner_radius: float
-    outer_radius: float
-    outside_box: bool
-    cell: int
-    octant: int
-    apex: tuple[float, float]
-    rays: list[tuple[int, int]]                # (vertex, sign)
-    edges: list[tuple[int, int]]               # (edge, sign)
-    radius_filter: bool
-    probes: list[tuple[int, float, bool]]      # the slab search: (rank, y, above)
-    uniform: UniformStep
-    polar: PolarStep
-
-class Stats2D(TypedDict):
-    edges: int
-    cells: int
-    entries: int
-    max_per_cell: int
-    mean_per_cell: float
-    crowded_cells: int
-    bytes: int
-    bytes_per_edge: float
-    build_seconds: float
-    histogram: list[int]
-
-class Cell2D(TypedDict):
-    index: int
-    octant: int
-    outline: Floats  # (k, 2)
-    dir_lo: tuple[float, float]
-    dir_hi: tuple[float, float]
-    hit_lo: tuple[float, float]
-    hit_hi: tuple[float, float]
-    y0: float
-    y1: float
-    edges: Indices
-
-class Trace3D(TypedDict):
-    method: str
-    result: int
-    location: str
-    crowded: bool
-    at_centre: bool
-    by_radius: bool
-    distance: float
-    inner_radius: float
-    outer_radius: float
-    non_finite: bool
-    fallback: bool
-    centre: tuple[float, float, float] | None
-    cube_face: int
-    level: int
-    cell_i: int
-    cell_j: int
-    s: float
-    t: float
-    path: Indices
-    steps: list[tuple[int, int, int]]  # (face, edge, sign)
-    faces: list[tuple[int, int]]       # (face, sign)
-    radius_filter: bool
-    direction: tuple[float, float, float]
-    cells_per_side: int
-
-class Stats3D(TypedDict):
-    faces: int
-    vertices: int
-    cells: int
-    nodes: int
-    entries: int
-    max_per_cell: int
-    mean_per_cell: float
-    crowded_cells: int
-    resolution: int
-    max_level: int
-    centred: bool
-    bytes: int
-    bytes_per_face: float
-    build_seconds: float
-    histogram: list[int]
-
-class Cell3D(TypedDict):
-    index: int
-    cube_face: int
-    level: int
-    i: int
-    j: int
-    s0: float
-    s1: float
-    t0: float
-    t1: float
-    apex: tuple[float, float, float]
-    corners: Floats  # (4, 3)
-    faces: Indices
 
 # === Locators
 
@@ -322,4 +200,13 @@ def locate_chunks(source: _Source, locator: _AnyLocator, *, chunk: int = ...,
 def set_vector_batches(enabled: bool) -> None: ...
 def vector_batches() -> bool: ...
 
-__all__: list[str]
+__all__ = [
+    "Location", "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
+    "Error", "FileError", "GeometryError", "ParseError", "UsageError",
+    "Polygon", "Polyhedron", "read_polygon", "read_polyhedron",
+    "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
+    "HalfspaceLocator", "WalkLocator", "CubemapLocator",
+    "iter_locate", "locate_chunks",
+    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
+    "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
+]

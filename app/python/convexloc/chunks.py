@@ -10,9 +10,11 @@ from __future__ import annotations
 import itertools
 import os
 import warnings
-from typing import Any, Callable, Iterable, Iterator, Optional, Union
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any, Optional, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from . import LOCATORS_2D, LOCATORS_3D, ParseError, Polygon, Polyhedron
 
@@ -22,7 +24,9 @@ __all__ = ["iter_locate", "locate_chunks"]
 DEFAULT_CHUNK = 1 << 20
 
 Progress = Callable[[int, Optional[int]], Any]
-Source = Union[str, "os.PathLike[str]", np.ndarray, Iterable[Any]]
+Source = Union[str, "os.PathLike[str]", npt.NDArray[Any], Iterable[Any]]
+Codes = npt.NDArray[np.int8]
+Floats = npt.NDArray[np.float64]
 
 
 def _locator(shape_or_locator: Any) -> Any:
@@ -43,7 +47,7 @@ def _parse_error(path: str, line: int, problem: str) -> ParseError:
     return error
 
 
-def _text_rows(path: str, lines: list[str], first: int, dims: int) -> np.ndarray:
+def _text_rows(path: str, lines: list[str], first: int, dims: int) -> Floats:
     """The points of `lines` (line `first` of the file onwards): numpy's parser, and where it
     fails, a line by line pass that names the line."""
     try:
@@ -59,7 +63,7 @@ def _text_rows(path: str, lines: list[str], first: int, dims: int) -> np.ndarray
     return _text_rows_checked(path, lines, first, dims)
 
 
-def _text_rows_checked(path: str, lines: list[str], first: int, dims: int) -> np.ndarray:
+def _text_rows_checked(path: str, lines: list[str], first: int, dims: int) -> Floats:
     rows = []
     for k, text in enumerate(lines):
         fields = text.split("#", 1)[0].split()
@@ -83,7 +87,7 @@ def _is_float(text: str) -> bool:
     return True
 
 
-def _text_chunks(path: str, chunk: int, dims: int) -> Iterator[np.ndarray]:
+def _text_chunks(path: str, chunk: int, dims: int) -> Iterator[Floats]:
     with open(path, encoding="utf-8") as f:
         first = 1
         while True:
@@ -113,7 +117,7 @@ def _chunks(source: Source, chunk: int, dims: int) -> tuple[Iterator[Any], Optio
 
 
 def iter_locate(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
-                progress: Optional[Progress] = None, workers: int = -1) -> Iterator[np.ndarray]:
+                progress: Optional[Progress] = None, workers: int = -1) -> Iterator[Codes]:
     """Yields the int8 codes of each chunk of `source` in turn (see the module's docstring),
     located by `locator` (a locator, or a Polygon / Polyhedron for its O(1) locator).
     progress(done, total) is called after each chunk: points located so far, and the total
@@ -133,8 +137,8 @@ def iter_locate(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
 
 
 def locate_chunks(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
-                  out: Optional[np.ndarray] = None, progress: Optional[Progress] = None,
-                  workers: int = -1) -> np.ndarray:
+                  out: Optional[Codes] = None, progress: Optional[Progress] = None,
+                  workers: int = -1) -> Codes:
     """The int8 codes of every point of `source`, located chunk by chunk (see iter_locate):
     written into `out` when given (an int8 array of the points' count, e.g. a np.memmap, so
     that nothing grows with the input), else returned as a new array."""

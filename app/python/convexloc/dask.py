@@ -19,12 +19,18 @@ import hashlib
 import pickle
 import threading
 from collections import OrderedDict
-from typing import Any, Sequence, Union
+from collections.abc import Callable, Sequence
+from typing import Any, Union, cast
 
 import numpy as np
+import numpy.typing as npt
+from dask.array import core as _array
+from dask.array.core import Array
+from dask.delayed import delayed
 
-import dask
-import dask.array as da
+# dask.array's functions carry no annotations: these names give them their types here
+asarray: Callable[..., Array] = _array.asarray
+map_blocks: Callable[..., Array] = _array.map_blocks
 
 from . import LOCATORS_2D, LOCATORS_3D, Polygon, Polyhedron
 
@@ -55,20 +61,25 @@ class LocatorSpec:
         return f"<convexloc.dask.LocatorSpec {self.key[:12]} ({len(self.payload)} bytes)>"
 
 
+def _table(dims: int) -> dict[str, Any]:
+    """The locator classes of a dimension by method name."""
+    return dict(LOCATORS_2D) if dims == 2 else dict(LOCATORS_3D)
+
+
 def spec_of(shape_or_locator: Any, method: str | None = None) -> LocatorSpec:
     """The spec of a Polygon or Polyhedron with a method name (None: polar or cubemap), or of
     a locator (then method must be None or the locator's own)."""
     if isinstance(shape_or_locator, (Polygon, Polyhedron)):
         dims = 2 if isinstance(shape_or_locator, Polygon) else 3
-        table = LOCATORS_2D if dims == 2 else LOCATORS_3D
+        table = _table(dims)
         name = DEFAULT_METHOD[dims] if method is None else method
         if name not in table:
             raise ValueError(f"method must be one of {', '.join(table)} for a "
                              f"{type(shape_or_locator).__name__}, got {name!r}")
         return LocatorSpec(pickle.dumps(("shape", name, shape_or_locator), protocol=5), dims)
     cls = type(shape_or_locator)
-    for dims, table in ((2, LOCATORS_2D), (3, LOCATORS_3D)):
-        if table.get(getattr(cls, "method", None)) is cls:
+    for dims in (2, 3):
+        if _table(dims).get(getattr(cls, "method", "")) is cls:
             if method is not None and method != cls.method:
                 raise ValueError(f"method={method!r} given with a {cls.__name__}: pass the "
                                  f"shape to choose a method, or method=None")
@@ -93,7 +104,7 @@ def locator_of(spec: LocatorSpec) -> Any:
         if locator is None:
             kind, name, obj = pickle.loads(spec.payload)
             if kind == "shape":
-                locator = (LOCATORS_2D if spec.dims == 2 else LOCATORS_3D)[name](obj)
+                locator = _table(spec.dims)[name](obj)
             else:
                 locator = obj  # unpickling a locator rebuilt it
             _builds[spec.key] = _builds.get(spec.key, 0) + 1
@@ -115,20 +126,28 @@ def build_counts() -> dict[str, tuple[int, int]]:
 # === The chunk functions (run on the workers)
 
 
-def _locate_rows(block: np.ndarray, spec: LocatorSpec, workers: int) -> np.ndarray:
-    return locator_of(spec).locate(block, workers=workers)
+Codes = npt.NDArray[np.int8]
 
 
-def _locate_columns(*blocks_and_spec: Any, workers: int) -> np.ndarray:
+def _locate_rows(block: npt.NDArray[np.float64], spec: LocatorSpec, workers: int) -> Codes:
+    codes: Codes = locator_of(spec).locate(block, workers=workers)
+    return codes
+
+
+def _locate_columns(*blocks_and_spec: Any, workers: int) -> Codes:
     *blocks, spec = blocks_and_spec
     locator = locator_of(spec)
+    codes: Codes
     if spec.dims == 2:
-        return locator.locate_xy(*blocks, workers=workers)
-    return locator.locate_xyz(*blocks, workers=workers)
+        codes = locator.locate_xy(*blocks, workers=workers)
+    else:
+        codes = locator.locate_xyz(*blocks, workers=workers)
+    return codes
 
 
 def _locate_frame(frame: Any, columns: Sequence[str], spec: LocatorSpec, workers: int) -> Any:
-    import pandas
+    # Debian's pandas ships no type information
+    import pandas  # type: ignore[import]
 
     values = [frame[c].to_numpy() for c in columns]
     codes = _locate_columns(*values, spec, workers=workers)
@@ -137,11 +156,11 @@ def _locate_frame(frame: Any, columns: Sequence[str], spec: LocatorSpec, workers
 
 # === The API
 
-PointsArg = Union[da.Array, np.ndarray, Sequence[Union[da.Array, np.ndarray]]]
+PointsArg = Union[Array, npt.NDArray[Any], Sequence[Union[Array, npt.NDArray[Any]]]]
 
 
 def locate(points: PointsArg, shape_or_locator: Any, method: str | None = None, *,
-           workers: int = 1) -> da.Array:
+           workers: int = 1) -> Array:
     """Locates Dask points against a shape (or a locator): a lazy int8 Dask array of
     INSIDE (0), BOUNDARY (1), OUTSIDE (2), exact.
 
@@ -152,20 +171,20 @@ def locate(points: PointsArg, shape_or_locator: Any, method: str | None = None, 
     locator, its own method and resolution are used. workers: threads per chunk (1 leaves
     the parallelism to Dask)."""
     spec = spec_of(shape_or_locator, method)
-    shared = dask.delayed(spec, pure=True)  # one task every chunk depends on
+    shared = delayed(spec, pure=True)  # one task every chunk depends on
     if isinstance(points, (tuple, list)):
         if len(points) != spec.dims:
             raise ValueError(f"points: {len(points)} coordinate arrays given, the shape needs "
                              f"{spec.dims}")
-        columns = [da.asarray(c) for c in points]
-        return da.map_blocks(_locate_columns, *columns, shared, workers=workers,
+        columns = [asarray(c) for c in points]
+        return map_blocks(_locate_columns, *columns, shared, workers=workers,
                              dtype=np.int8, meta=np.empty((0,) * max(c.ndim for c in columns),
                                                           dtype=np.int8))
-    rows = da.asarray(points)
+    rows = asarray(points)
     if rows.ndim != 2 or rows.shape[1] != spec.dims:
         raise ValueError(f"points must be an (M, {spec.dims}) array, got shape {rows.shape}")
-    rows = rows.rechunk({1: -1})
-    return da.map_blocks(_locate_rows, rows, shared, workers, drop_axis=1, dtype=np.int8,
+    rows = cast(Array, getattr(rows, "rechunk")({1: -1}))  # (an untyped method)
+    return map_blocks(_locate_rows, rows, shared, workers, drop_axis=1, dtype=np.int8,
                          meta=np.empty((0,), dtype=np.int8))
 
 
@@ -181,6 +200,6 @@ def locate_dataframe(frame: Any, shape_or_locator: Any, method: str | None = Non
     missing = [c for c in names if c not in frame.columns]
     if missing:
         raise ValueError(f"columns {missing} are not in the frame (it has {list(frame.columns)})")
-    shared = dask.delayed(spec, pure=True)
+    shared = delayed(spec, pure=True)
     return frame.map_partitions(_locate_frame, names, shared, workers,
                                 meta=("location", np.int8))

@@ -6,13 +6,15 @@ Each timing is the best of several runs on the same points; the ratio is columns
 """
 
 import time
+from typing import Any, Callable
 
 import numpy as np
+import numpy.typing as npt
 
 import convexloc
 
 
-def best(run, repeats=7):
+def best(run: Callable[[], object], repeats: int = 7) -> float:
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
@@ -21,7 +23,7 @@ def best(run, repeats=7):
     return min(times)
 
 
-def compare(name, locator, points):
+def compare(name: str, locator: Any, points: npt.NDArray[np.float64]) -> None:
     m = len(points)
     columns = [np.ascontiguousarray(points[:, k]) for k in range(points.shape[1])]
     views = [points[:, k] for k in range(points.shape[1])]  # strided views of the rows
@@ -36,7 +38,7 @@ def compare(name, locator, points):
           f"({stacked / rows:4.2f}x)")
 
 
-def main():
+def main() -> None:
     rng = np.random.default_rng(0)
     t = 2 * np.pi * np.arange(1024) / 1024
     polygon = convexloc.Polygon(np.column_stack([np.cos(t), np.sin(t)]))

@@ -15,26 +15,31 @@ import argparse
 import os
 import threading
 import time
+from typing import Union
 
 import numpy as np
+import numpy.typing as npt
 
 import convexloc
 import convexloc.dask
 
 
-def chunk(seed, size, dims):
+Counts = npt.NDArray[np.int64]
+
+
+def chunk(seed: int, size: int, dims: int) -> npt.NDArray[np.float64]:
     """Chunk `seed`'s points: uniform in [-1.2, 1.2]^dims."""
     return np.random.default_rng(seed).uniform(-1.2, 1.2, size=(size, dims))
 
 
-def counts_of(codes):
+def counts_of(codes: npt.NDArray[np.int8]) -> Counts:
     """INSIDE, BOUNDARY, OUTSIDE counts of a chunk's answers and sum(i * code[i]), an
     order-sensitive check, as a (1, 4) array."""
     check = np.dot(np.arange(len(codes), dtype=np.int64), codes.astype(np.int64))
     return np.append(np.bincount(codes, minlength=3), check)[None, :]
 
 
-def make_shape(dims):
+def make_shape(dims: int) -> Union[convexloc.Polygon, convexloc.Polyhedron]:
     if dims == 2:
         t = 2 * np.pi * np.arange(1024) / 1024
         return convexloc.Polygon(np.column_stack([np.cos(t), np.sin(t)]))
@@ -43,7 +48,8 @@ def make_shape(dims):
     return convexloc.Polyhedron.hull(cloud / np.linalg.norm(cloud, axis=1)[:, None])
 
 
-def one_process(shape, chunks, size, dims):
+def one_process(shape: Union[convexloc.Polygon, convexloc.Polyhedron], chunks: int, size: int,
+                dims: int) -> Counts:
     locator = (convexloc.PolarLocator if dims == 2 else convexloc.CubemapLocator)(shape)
     total = np.zeros(4, dtype=np.int64)
     for i in range(chunks):
@@ -51,7 +57,8 @@ def one_process(shape, chunks, size, dims):
     return total
 
 
-def with_dask(shape, chunks, size, dims, workers, kill):
+def with_dask(shape: Union[convexloc.Polygon, convexloc.Polyhedron], chunks: int, size: int,
+              dims: int, workers: int, kill: float) -> tuple[Counts, float]:
     import dask.array as da
     import distributed
 
@@ -68,7 +75,7 @@ def with_dask(shape, chunks, size, dims, workers, kill):
     if kill:
         victim = sorted(client.scheduler_info()["workers"])[0]
 
-        def shoot():
+        def shoot() -> None:
             time.sleep(kill)
             try:
                 client.run(os._exit, 1, workers=[victim])
@@ -84,7 +91,7 @@ def with_dask(shape, chunks, size, dims, workers, kill):
     return total, seconds
 
 
-def main():
+def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--points", type=int, default=10**8)
     parser.add_argument("--chunk", type=int, default=2**20)
