@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <list>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -59,11 +60,15 @@ Bound<Locator> buildBound(const py::object& shape, std::uint32_t resolution) {
                          (Dimension<Method>::kPlanar ? "Polygon" : "Polyhedron") + ", got " +
                          std::string(py::str(shape.get_type().attr("__name__"))));
   const Shape& s = shape.cast<const Shape&>();
-  py::gil_scoped_release released;
-  if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>)
-    return Bound<Locator>{Locator(s, resolution), shape, resolution};
-  else
-    return Bound<Locator>{Locator(s), shape, resolution};
+  std::optional<Locator> built;
+  {
+    py::gil_scoped_release released;  // the build; `shape` is copied (a reference taken) after
+    if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>)
+      built.emplace(s, resolution);
+    else
+      built.emplace(s);
+  }
+  return Bound<Locator>{std::move(*built), shape, resolution};
 }
 
 // the constructor (from the shape, and a resolution where the method has one) and pickling
