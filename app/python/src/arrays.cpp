@@ -87,18 +87,20 @@ void requireLossless(const py::array& any, const char* what) {
   py::ssize_t bad = -1;
   if (kind == 'i') bad = firstInexact<std::int64_t>(dense);
   if (kind == 'u') bad = firstInexact<std::uint64_t>(dense);
-  if (kind == 'f' && dense.itemsize() == sizeof(long double)) bad = firstInexact<long double>(dense);
+  if (kind == 'f' && dense.itemsize() == sizeof(long double))
+    bad = firstInexact<long double>(dense);
   if (kind == 'f' && dense.itemsize() != sizeof(long double))
     throw py::type_error(std::string(what) + ": " + std::string(py::str(py::object(dtype))) +
                          " is not supported (float64, long double or narrower)");
   if (bad < 0) return;
   const std::vector<py::ssize_t> shape(any.shape(), any.shape() + any.ndim());
   const py::object value = dense.attr("flat")[py::int_(bad)];
-  const py::object nearest = kind == 'f' ? py::object(py::float_(value))
-                                          : py::object(py::int_(py::float_(value)));
-  const std::string exact = kind == 'f' ? std::string(py::str(numpy().attr("format_float_positional")(
-                                              value, py::arg("unique") = true)))
-                                        : std::string(py::str(value));
+  const py::object nearest =
+      kind == 'f' ? py::object(py::float_(value)) : py::object(py::int_(py::float_(value)));
+  const std::string exact = kind == 'f'
+                                ? std::string(py::str(numpy().attr("format_float_positional")(
+                                      value, py::arg("unique") = true)))
+                                : std::string(py::str(value));
   throw py::value_error(std::string(what) + elementText(shape, bad) + " = " + exact +
                         " is not exactly a float64 (the nearest is " +
                         std::string(py::repr(nearest)) +
@@ -185,26 +187,29 @@ unsigned workerCount(const py::object& workers, const py::object& threads) {
   constexpr long long kMost = 4096;
   const long long cores = std::max(1u, std::thread::hardware_concurrency());
   if (!threads.is_none()) {
-    if (!(workers.is_none() || (py::isinstance<py::int_>(workers) && workers.cast<long long>() == -1)))
+    if (!(workers.is_none() ||
+          (py::isinstance<py::int_>(workers) && workers.cast<long long>() == -1)))
       throw py::type_error("give workers= or its old name threads=, not both");
     PyErr_WarnEx(PyExc_DeprecationWarning,
                  "threads= is now workers= (as scipy names it; -1 for every core)", 1);
-    const long long t = integerArgument(threads, "threads", 0, kMost, "from 0 (every core) to 4096");
+    const long long t =
+        integerArgument(threads, "threads", 0, kMost, "from 0 (every core) to 4096");
     return static_cast<unsigned>(t);
   }
   const long long w = integerArgument(workers, "workers", -kMost, kMost,
                                       "a thread count from 1 to 4096, or -1 for every core "
                                       "(-2 every core but one, ...), not 0");
   if (w == 0)
-    throw py::value_error("workers must be a thread count from 1 to 4096, or -1 for every core "
-                          "(-2 every core but one, ...), not 0");
+    throw py::value_error(
+        "workers must be a thread count from 1 to 4096, or -1 for every core "
+        "(-2 every core but one, ...), not 0");
   return static_cast<unsigned>(w > 0 ? w : std::max(1LL, cores + 1 + w));
 }
 
 std::uint32_t resolutionOf(const py::object& resolution) {
-  return static_cast<std::uint32_t>(integerArgument(
-      resolution, "resolution", 0, std::numeric_limits<std::uint32_t>::max(),
-      "from 0 (chosen from the shape) to 4294967295"));
+  return static_cast<std::uint32_t>(
+      integerArgument(resolution, "resolution", 0, std::numeric_limits<std::uint32_t>::max(),
+                      "from 0 (chosen from the shape) to 4294967295"));
 }
 
 }  // namespace convexloc::python

@@ -107,7 +107,8 @@ py::array_t<std::int8_t> locateColumns(const Locator& locator,
   std::array<py::object, kDims<Point>> kept;
   std::array<Column, kDims<Point>> read;
   for (std::size_t k = 0; k < read.size(); ++k) read[k] = columnOf(arrays[k], length, kept[k]);
-  auto codes = codeArray(std::vector<py::ssize_t>(arrays[0].shape(), arrays[0].shape() + arrays[0].ndim()));
+  auto codes =
+      codeArray(std::vector<py::ssize_t>(arrays[0].shape(), arrays[0].shape() + arrays[0].ndim()));
   const std::span<Location> out = locationsOf(codes);
   const std::size_t n = out.size();
   if (n == 0) return codes;  // (then a row may be empty: nothing to divide by)

@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "arrays.hpp"
-#include "locator_class.hpp"
 #include "bindings.hpp"
+#include "locator_class.hpp"
 
 namespace convexloc::python {
 
@@ -69,8 +69,8 @@ bool boundaryCounts(bool covers, const py::object& boundary) {
 // Defines `name`(shape, points, *, workers=-1): makes the shape when it is not one already
 // (with `make`), then answers with Locator; `covers` says whether the boundary counts.
 template <class Locator, class Point, class Shape, class Make>
-void defineContains(py::module_& m, const char* name, bool covers, const char* shapeArg,
-                    Make make, const char* doc) {
+void defineContains(py::module_& m, const char* name, bool covers, const char* shapeArg, Make make,
+                    const char* doc) {
   auto body = [make, covers](const py::object& shape, const py::object& points,
                              const py::object& workers, const py::object& threads,
                              const py::object& boundary) {
@@ -83,15 +83,17 @@ void defineContains(py::module_& m, const char* name, bool covers, const char* s
     m.def(
         name,
         [body](const py::object& shape, const py::object& points, const py::object& workers,
-               const py::object& threads) { return body(shape, points, workers, threads, py::none()); },
+               const py::object& threads) {
+          return body(shape, points, workers, threads, py::none());
+        },
         py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
         py::arg("threads") = py::none(),
-        signedDoc(name, keep("(" + std::string(shapeArg) + ", points, *, workers=-1, threads=None)"),
+        signedDoc(name,
+                  keep("(" + std::string(shapeArg) + ", points, *, workers=-1, threads=None)"),
                   doc));
   else
-    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(),
-          py::arg("workers") = -1, py::arg("threads") = py::none(),
-          py::arg("boundary") = py::none(),
+    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
+          py::arg("threads") = py::none(), py::arg("boundary") = py::none(),
           signedDoc(name,
                     keep("(" + std::string(shapeArg) +
                          ", points, *, workers=-1, threads=None, boundary=None)"),

@@ -18,10 +18,10 @@
 #include <type_traits>
 
 #include "arrays.hpp"
-#include "columns.hpp"
-#include "shape_protocols.hpp"
 #include "bindings.hpp"
+#include "columns.hpp"
 #include "convexloc/methods.hpp"
+#include "shape_protocols.hpp"
 
 namespace convexloc::python {
 
@@ -78,7 +78,8 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
   const auto& info = methodInfo(method);
   const py::arg shape(Dimension<Method>::kShape);
   if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>) {
-    const std::string params = std::string("(self, ") + Dimension<Method>::kShape + ", resolution=0)";
+    const std::string params =
+        std::string("(self, ") + Dimension<Method>::kShape + ", resolution=0)";
     const char* doc = signedDoc("__init__", keep(params),
                                 "Builds the locator. resolution: " + std::string(info.resolution) +
                                     " (0 chooses from the shape).");
@@ -91,14 +92,14 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
     c.def(py::init([](const py::object& s) { return buildBound<Locator, Method>(s, 0); }), shape,
           signedDoc("__init__", keep(params), "Builds the locator."));
   }
-  c.def(py::pickle(
-      [](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
-      [](const py::tuple& state) {
-        if (state.size() != 3 || state[0].cast<int>() != 1)
-          throw py::value_error("cannot unpickle this locator: it was pickled by another "
-                                "version of convexloc");
-        return buildBound<Locator, Method>(state[1], state[2].cast<std::uint32_t>());
-      }));
+  c.def(py::pickle([](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
+                   [](const py::tuple& state) {
+                     if (state.size() != 3 || state[0].cast<int>() != 1)
+                       throw py::value_error(
+                           "cannot unpickle this locator: it was pickled by another "
+                           "version of convexloc");
+                     return buildBound<Locator, Method>(state[1], state[2].cast<std::uint32_t>());
+                   }));
   pickleAnyProtocol(c);
   c.def_property_readonly(
       "shape", [](const Bound<Locator>& b) { return b.shape; }, "the shape it was built from");
@@ -117,11 +118,13 @@ inline const char* locateDoc(int dims, bool columns) {
                     "broadcast shape."
               : "Locates (M, " + std::to_string(dims) +
                     ") points: an (M,) int8 array of INSIDE, BOUNDARY or OUTSIDE.";
-  return signedDoc(name, params, what +
-              " Exact for the doubles given (NaN and infinite coordinates are OUTSIDE). Runs "
-              "without the GIL, on up to `workers` threads for large batches (-1: one per "
-              "core, as scipy's workers=; threads= is its deprecated old name, 0 meaning "
-              "every core).");
+  return signedDoc(
+      name, params,
+      what +
+          " Exact for the doubles given (NaN and infinite coordinates are OUTSIDE). Runs "
+          "without the GIL, on up to `workers` threads for large batches (-1: one per "
+          "core, as scipy's workers=; threads= is its deprecated old name, 0 meaning "
+          "every core).");
 }
 
 // locate, and the same from separate coordinate arrays
@@ -173,11 +176,12 @@ void defineIntrospection(py::class_<Bound<Locator>>& c, Method method) {
           return traceToPython(l.trace(p));
       },
       py::arg("point"), py::kw_only(), py::arg("radii") = true,
-      signedDoc("trace", "(self, point, *, radii=True)",
-      "What locating one point does: a dict of the cell chosen, the tests made with their "
-      "signs, and the result (as a code and as a name). radii=False runs the polar and "
-      "cube-map queries without convexloc's radius filter, as the paper describes them (the "
-      "cell's edges or faces decide); the answer is the same."));
+      signedDoc(
+          "trace", "(self, point, *, radii=True)",
+          "What locating one point does: a dict of the cell chosen, the tests made with their "
+          "signs, and the result (as a code and as a name). radii=False runs the polar and "
+          "cube-map queries without convexloc's radius filter, as the paper describes them (the "
+          "cell's edges or faces decide); the answer is the same."));
   c.def(
       "stats", [](const Bound<Locator>& b) { return statsToPython(b.locator.stats()); },
       signedDoc("stats", "(self)",
@@ -215,8 +219,9 @@ py::class_<Bound<Locator>> bindLocator(py::module_& m, const char* name, Method 
   std::string doc = std::string(info.name) + ", " + std::string(info.cost);
   if (!info.costNote.empty()) doc += " " + std::string(info.costNote);
   doc += ": " + std::string(info.summary) + ".";
-  doc += " Pickle, copy and deepcopy carry the shape and the resolution; the tables are "
-         "rebuilt on load.";
+  doc +=
+      " Pickle, copy and deepcopy carry the shape and the resolution; the tables are "
+      "rebuilt on load.";
   py::class_<Bound<Locator>> c(m, name, keep(doc));
   defineInit(c, method);
   defineLocate<Locator, Method>(c);

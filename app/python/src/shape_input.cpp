@@ -70,8 +70,10 @@ ConvexPolygon polygonHull(const py::object& pointsArg) {
     hull.emplace(convexHull(read));
   }
   if (hull->size() < 3) {
-    const std::string count = std::to_string(read.size()) + (read.size() == 1 ? " point" : " points");
-    if (read.size() < 3) geometryError("a hull needs at least 3 points not on one line, got " + count);
+    const std::string count =
+        std::to_string(read.size()) + (read.size() == 1 ? " point" : " points");
+    if (read.size() < 3)
+      geometryError("a hull needs at least 3 points not on one line, got " + count);
     geometryError("the hull of the " + count + " has no area: they all lie on one line");
   }
   py::gil_scoped_release released;

@@ -44,7 +44,8 @@ bool before(Vec3 a, Vec3 b) {
 // a polygon's vertices, counter-clockwise from its lexicographically smallest one
 std::vector<Vec2> canonical(const ConvexPolygon& p) {
   const std::span<const Vec2> v = p.vertices();
-  const auto first = std::min_element(v.begin(), v.end(), [](Vec2 a, Vec2 b) { return before(a, b); });
+  const auto first =
+      std::min_element(v.begin(), v.end(), [](Vec2 a, Vec2 b) { return before(a, b); });
   std::vector<Vec2> out;
   out.reserve(v.size());
   for (auto it = first; it != v.end(); ++it) out.push_back(plain(*it));
@@ -103,7 +104,8 @@ void defineEquality(py::class_<Shape>& c) {
   c.def(
       "__eq__",
       [](const Shape& a, const py::object& other) -> py::object {
-        if (!py::isinstance<Shape>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        if (!py::isinstance<Shape>(other))
+          return py::reinterpret_borrow<py::object>(Py_NotImplemented);
         return py::bool_(canonical(a) == canonical(other.cast<const Shape&>()));
       },
       py::is_operator(),
@@ -128,8 +130,8 @@ void defineEquality(py::class_<Shape>& c) {
 // an (N, dims) float64 array holding `points` in a pickled state, checked
 template <class Point>
 std::vector<Point> pointsFromState(const py::handle& item) {
-  const py::array rows = pointArray(py::reinterpret_borrow<py::object>(item), kDims<Point>,
-                                    "pickled vertices");
+  const py::array rows =
+      pointArray(py::reinterpret_borrow<py::object>(item), kDims<Point>, "pickled vertices");
   const std::span<const Point> read = pointsOf<Point>(rows);
   return {read.begin(), read.end()};
 }
@@ -172,9 +174,8 @@ void defineShapeProtocols(py::class_<ConvexPolygon>& c) {
   c.def(py::pickle(
       [](const py::object& self) {
         const auto& p = self.cast<const ConvexPolygon&>();
-        const py::tuple history = py::make_tuple(self.attr("source_index"),
-                                                 self.attr("dropped_count"),
-                                                 self.attr("was_clockwise"));
+        const py::tuple history = py::make_tuple(
+            self.attr("source_index"), self.attr("dropped_count"), self.attr("was_clockwise"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec2>(p.vertices()), history);
       },
       [](const py::tuple& state) {
@@ -190,11 +191,11 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
   c.def(py::pickle(
       [](const py::object& self) {
         const auto& p = self.cast<const ConvexPolyhedron&>();
-        py::array_t<std::uint32_t> triangles({static_cast<py::ssize_t>(p.faceCount()), py::ssize_t{3}});
+        py::array_t<std::uint32_t> triangles(
+            {static_cast<py::ssize_t>(p.faceCount()), py::ssize_t{3}});
         std::copy_n(p.triangles().data()->data(), 3 * p.faceCount(), triangles.mutable_data());
-        const py::tuple history = py::make_tuple(self.attr("source_face"),
-                                                 self.attr("source_vertex"),
-                                                 self.attr("was_inverted"));
+        const py::tuple history = py::make_tuple(
+            self.attr("source_face"), self.attr("source_vertex"), self.attr("was_inverted"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec3>(p.vertices()), triangles,
                               history);
       },
@@ -204,7 +205,8 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
         mesh.vertices = pointsFromState<Vec3>(items[1]);
         const auto triangles = items[2].cast<py::array_t<std::uint32_t, py::array::c_style>>();
         const std::uint32_t* t = triangles.data();
-        for (py::ssize_t f = 0; f < triangles.shape(0); ++f) mesh.addFace({t[3 * f], t[3 * f + 1], t[3 * f + 2]});
+        for (py::ssize_t f = 0; f < triangles.shape(0); ++f)
+          mesh.addFace({t[3 * f], t[3 * f + 1], t[3 * f + 2]});
         std::optional<ConvexPolyhedron> made;
         {
           py::gil_scoped_release released;

@@ -14,8 +14,8 @@
 #include <span>
 #include <type_traits>
 
-#include "convexloc/polygon.hpp"
 #include "bindings.hpp"
+#include "convexloc/polygon.hpp"
 #include "convexloc/polyhedron.hpp"
 
 namespace convexloc::python {

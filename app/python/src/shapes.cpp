@@ -153,7 +153,8 @@ template <class Shape, class Item>
 void arrayProperty(py::class_<Shape>& c, const char* name,
                    std::span<const Item> (Shape::*get)() const noexcept, const char* doc) {
   c.def_property_readonly(
-      name, [get](const py::object& self) { return arrayOf((self.cast<const Shape&>().*get)(), self); },
+      name,
+      [get](const py::object& self) { return arrayOf((self.cast<const Shape&>().*get)(), self); },
       doc);
 }
 
@@ -161,7 +162,8 @@ void arrayProperty(py::class_<Shape>& c, const char* name,
 template <class Shape>
 void indexHistory(py::class_<Shape>& c, const char* name, std::size_t slot,
                   std::span<const std::uint32_t> (Shape::*get)() const noexcept, const char* doc) {
-  historyProperty(c, name, slot, [get](const Shape& s) { return arrayOf((s.*get)(), {}); }, doc);
+  historyProperty(
+      c, name, slot, [get](const Shape& s) { return arrayOf((s.*get)(), {}); }, doc);
 }
 
 // the read-only property `bounds`: the exact box as ((lo...), (hi...))
@@ -201,7 +203,8 @@ void bindPolygon(py::module_& m) {
                 "(N, 2) float64, read-only: the vertices, counter-clockwise");
   indexHistory(c, "source_index", 0, &P::sourceIndex, "int64: each vertex's index in the input");
   boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
-  c.def("__len__", &P::size, signedDoc("__len__", "(self, /)", "the number of vertices (and of edges)"));
+  c.def("__len__", &P::size,
+        signedDoc("__len__", "(self, /)", "the number of vertices (and of edges)"));
   c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
   historyProperty(c, "dropped_count", 1, std::mem_fn(&P::droppedCount),
                   "input vertices dropped as repeated or collinear");
@@ -210,7 +213,9 @@ void bindPolygon(py::module_& m) {
   defineShapeProtocols(c);
   c.def(
       "__repr__",
-      [](const P& p) { return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>"; },
+      [](const P& p) {
+        return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
+      },
       signedDoc("__repr__", "(self, /)", "Return repr(self)."));
 }
 
