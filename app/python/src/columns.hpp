@@ -4,7 +4,7 @@
 // The arrays broadcast together as numpy's ufuncs do ((3, 1) with (1, 4) gives (3, 4)). Seen
 // without its length-1 axes, the broadcast shape is rows x a last axis; a float64 array whose
 // rows lie at one stride (any 1-D view, a contiguous block, a broadcast row or column) is read
-// where it lies; any other is converted once. The points are gathered block by block into a
+// where it lies; any other is converted once. The points are gathered 256 at a time into a
 // small buffer on each thread's stack and located through the locator's own batch path, so
 // no (M, dims) copy is ever made.
 #pragma once
@@ -71,7 +71,9 @@ void gather(Point* block, std::size_t n, const std::array<const char*, kDims<Poi
 template <class Locator, class Point>
 void locateRange(const Locator& locator, const std::array<Column, kDims<Point>>& columns,
                  std::size_t length, std::span<Location> out, std::size_t begin, std::size_t end) {
-  constexpr std::size_t kBlock = 1024;
+  // small blocks: the hardware keeps streaming the columns in while the locator works on one,
+  // where a large block's gather would be a pass of its own that waits on memory
+  constexpr std::size_t kBlock = 256;
   std::array<Point, kBlock> block;
   std::size_t row = begin / length;
   std::size_t at = begin % length;
