@@ -108,3 +108,25 @@ def test_stubs_cover_the_module():
             if issubclass(value, int):  # an IntEnum: its own members, not int's methods
                 public -= set(dir(int))
             assert public <= members[name], (name, public - members[name])
+
+
+def test_the_typed_dicts_have_exactly_the_runtime_keys(square, cube):
+    """convexloc.types (what the stubs re-export) names every key trace(), stats() and
+    cells() return, and no other, for every method; the nested dicts too."""
+    T = convexloc.types
+    for cls in convexloc.LOCATORS_2D.values():
+        locator = cls(square)
+        trace = locator.trace((0.25, 0.75))
+        assert set(trace) == set(T.Trace2D.__annotations__), cls.__name__
+        assert set(trace["uniform"]) == set(T.UniformStep.__annotations__)
+        assert set(trace["polar"]) == set(T.PolarStep.__annotations__)
+        assert set(locator.stats()) == set(T.Stats2D.__annotations__), cls.__name__
+        for cell in locator.cells():
+            assert set(cell) == set(T.Cell2D.__annotations__), cls.__name__
+    for cls in convexloc.LOCATORS_3D.values():
+        locator = cls(cube)
+        assert set(locator.trace((0.1, 0.2, 0.3))) == set(T.Trace3D.__annotations__), cls.__name__
+        assert set(locator.stats()) == set(T.Stats3D.__annotations__), cls.__name__
+        for cell in locator.cells():
+            assert set(cell) == set(T.Cell3D.__annotations__), cls.__name__
+    assert convexloc.CubemapLocator(cube).cells()  # the cell check above ran
