@@ -390,6 +390,13 @@ void PolyhedronBuilder::throwReflex(std::uint32_t firstReflex, std::uint32_t fir
                                     bool reflexIsMinority) const {
   const std::uint32_t h = reflexIsMinority ? firstReflex : firstConvex;
   const std::uint32_t t = h / 3, k = h % 3, u = out_.neighbours_[t][k];
+  const std::uint32_t a = out_.triangles_[t][k], b = out_.triangles_[t][(k + 1) % 3];
+  // two triangles of one input face: the face itself is not planar, and the edge between
+  // them is a diagonal its triangulation drew, not one the input has
+  if (out_.sourceFace_[t] == out_.sourceFace_[u])
+    throw GeometryError("not convex: " + faceName(t) + " is not planar: it folds inward along " +
+                            "the diagonal from " + vertexName(a) + " to " + vertexName(b),
+                        triangleLine(t));
   throw GeometryError("not convex: reflex " +
                           edgeName(out_.triangles_[t][k], out_.triangles_[t][(k + 1) % 3]) +
                           " between " + faceName(t) + " and " + faceName(u),
