@@ -10,7 +10,9 @@
 #   --bench     build-bench/ Release, g++: convexloc-bench with GEOS and CGAL beside it
 #                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox, and
 #                            python3-shapely, python3-scipy for tests/bench/python_peers.py)
-# Every variant installs pybind11-dev, python3-numpy and python3-pytest: the plain and bench
+# Every variant installs pybind11-dev, python3-numpy and python3-pytest (and, for the Python
+# module's Dask path and its type checks, python3-dask, python3-distributed, python3-pandas and
+# python3-mypy): the plain and bench
 # builds make the Python module (build*/python; the sanitized and fuzz builds leave it out).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,7 +32,8 @@ done
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libqhull-dev libcli11-dev libgtest-dev
           libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
           xvfb xauth libgl1-mesa-dri clang-14 libclang-rt-14-dev
-          python3-dev pybind11-dev python3-numpy python3-pytest)
+          python3-dev pybind11-dev python3-numpy python3-pytest
+          python3-dask python3-distributed python3-pandas python3-mypy)
 if [[ $variant == bench ]]; then
   packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-shapely python3-scipy)
 fi

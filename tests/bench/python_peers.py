@@ -2,11 +2,11 @@
 """convexloc's Python batch against what Python users reach for, on the same points in one run.
 
 2D, a regular N-gon, points uniform in its bounding box (+5%):
-  convexloc   PolarLocator(polygon).locate(points, threads=1)
+  convexloc   PolarLocator(polygon).locate(points, workers=1)
   shapely     shapely.vectorized.contains(prepared polygon, x, y)   (Shapely 1.8, GEOS)
   numpy       the half-plane test of eq. (1), vectorised over the points, edge by edge
 3D, the hull of points on an ellipsoid with about F triangles, points uniform in its box:
-  convexloc   CubemapLocator(polyhedron).locate(points, threads=1)
+  convexloc   CubemapLocator(polyhedron).locate(points, workers=1)
   Delaunay    scipy.spatial.Delaunay(hull vertices).find_simplex(points) >= 0
   numpy       the half-space test of eq. (2), face by face (small F only)
 
@@ -91,8 +91,8 @@ def bench_2d(cl, sizes, points_count, rng):
         vertices = regular_polygon(n)
         points = rng.uniform(-1.05, 1.05, size=(points_count, 2))
         polar = cl.PolarLocator(cl.Polygon(vertices))
-        ours = per_point(lambda: polar.locate(points, threads=1), points_count)
-        ours_all = per_point(lambda: polar.locate(points, threads=0), points_count)
+        ours = per_point(lambda: polar.locate(points, workers=1), points_count)
+        ours_all = per_point(lambda: polar.locate(points, workers=-1), points_count)
         prepared = prep(ShapelyPolygon(vertices))
         m_shapely = prefix_for(3e-6, points_count, budget=3.0)
         x, y = points[:m_shapely, 0].copy(), points[:m_shapely, 1].copy()
@@ -137,8 +137,8 @@ def bench_3d(cl, sizes, points_count, rng, delaunay_limit):
         lo, hi = np.array(polyhedron.bounds)
         points = rng.uniform(lo - 0.05 * (hi - lo), hi + 0.05 * (hi - lo), size=(points_count, 3))
         cubemap = cl.CubemapLocator(polyhedron)
-        ours = per_point(lambda: cubemap.locate(points, threads=1), points_count)
-        ours_all = per_point(lambda: cubemap.locate(points, threads=0), points_count)
+        ours = per_point(lambda: cubemap.locate(points, workers=1), points_count)
+        ours_all = per_point(lambda: cubemap.locate(points, workers=-1), points_count)
         delaunay_time, m_delaunay = None, 0
         if polyhedron.face_count <= delaunay_limit:
             tri = Delaunay(polyhedron.vertices)

@@ -22,6 +22,33 @@ def env_path(name):
     return Path(value)
 
 
+# === The documentation's code blocks
+
+
+def doc_code_blocks():
+    """Every ```python block of docs/python.md and of the README's "From Python" section, as
+    (label, code) pairs; the label names the file and the block's first line."""
+    root = env_path("CONVEXLOC_SOURCE_DIR")
+    blocks = []
+    for name in ("docs/python.md", "README.md"):
+        text = (root / name).read_text()
+        if name == "README.md":
+            start = text.index("\n## From Python\n")
+            end = text.find("\n## ", start + 1)
+            text = text[start:end if end >= 0 else len(text)]
+        lines = text.splitlines()
+        k = 0
+        while k < len(lines):
+            if lines[k].strip() == "```python":
+                first = k + 1
+                k += 1
+                while lines[k].strip() != "```":
+                    k += 1
+                blocks.append((f"{name}:{first + 1}", "\n".join(lines[first:k]) + "\n"))
+            k += 1
+    return blocks
+
+
 # === Shapes
 
 

@@ -190,17 +190,15 @@ def test_conveniences_equal_locators():
     polar = convexloc.PolarLocator(convexloc.Polygon(vertices))
     points = query_points_2d(vertices, polar)
     codes = polar.locate(points)
-    np.testing.assert_array_equal(convexloc.contains(vertices, points), codes != convexloc.OUTSIDE)
-    np.testing.assert_array_equal(convexloc.contains(vertices, points, boundary=False),
-                                  codes == convexloc.INSIDE)
+    np.testing.assert_array_equal(convexloc.covers(vertices, points), codes != convexloc.OUTSIDE)
+    np.testing.assert_array_equal(convexloc.contains(vertices, points), codes == convexloc.INSIDE)
     cloud = hull_points(8, 300)
     hull = convexloc.Polyhedron.hull(cloud)
     cubemap = convexloc.CubemapLocator(hull)
     q = np.concatenate([np.random.default_rng(1).uniform(-3, 3, (5000, 3)), ulp_ring(hull.vertices)])
     codes = cubemap.locate(q)
-    np.testing.assert_array_equal(convexloc.hull_contains(cloud, q), codes != convexloc.OUTSIDE)
-    np.testing.assert_array_equal(convexloc.hull_contains(hull, q, boundary=False),
-                                  codes == convexloc.INSIDE)
+    np.testing.assert_array_equal(convexloc.hull_covers(cloud, q), codes != convexloc.OUTSIDE)
+    np.testing.assert_array_equal(convexloc.hull_contains(hull, q), codes == convexloc.INSIDE)
 
 
 def test_2d_trace_steps_and_paper_mode():

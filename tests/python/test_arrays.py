@@ -130,7 +130,7 @@ def test_locate_xy_shapes(polar):
     assert int(polar.locate_xy(0.5, 1.0)) == convexloc.BOUNDARY
     np.testing.assert_array_equal(polar.locate_xy(list(POINTS[:, 0]), POINTS[:, 1].astype(np.float32)),
                                   CODES)
-    with pytest.raises(ValueError, match=r"y has shape \(5,\), x has shape \(6,\)"):
+    with pytest.raises(ValueError, match=r"do not broadcast together: x \(6,\), y \(5,\)"):
         polar.locate_xy(POINTS[:, 0], POINTS[:5, 1])
     with pytest.raises(TypeError, match="y must be numbers"):
         polar.locate_xy(POINTS[:, 0], ["a"] * 6)
@@ -141,12 +141,31 @@ def test_locate_xyz(cubemap):
     np.testing.assert_array_equal(cubemap.locate_xyz(x, y, z), [0, 1, 2])
 
 
-def test_threads_argument(polar):
-    np.testing.assert_array_equal(polar.locate(POINTS, threads=3), CODES)
-    with pytest.raises(ValueError, match="threads must be >= 0"):
-        polar.locate(POINTS, threads=-1)
+def test_workers_argument(polar):
+    for workers in (1, 3, -1, -2, -4096):
+        np.testing.assert_array_equal(polar.locate(POINTS, workers=workers), CODES)
+    with pytest.raises(ValueError, match="workers must be a thread count .* not 0"):
+        polar.locate(POINTS, workers=0)
+    with pytest.raises(ValueError, match=r"workers must be .*, got 4611686018427387904"):
+        polar.locate(POINTS, workers=2**62)
+    with pytest.raises(ValueError, match=r"workers must be .*, got -1180591620717411303424"):
+        polar.locate_xy(POINTS[:, 0], POINTS[:, 1], workers=-(2**70))
+    with pytest.raises(TypeError, match="workers must be an integer, got 2.5"):
+        polar.locate(POINTS, workers=2.5)
     with pytest.raises(TypeError):
-        polar.locate(POINTS, 2)  # threads is keyword-only
+        polar.locate(POINTS, 2)  # workers is keyword-only
+
+
+def test_threads_is_the_deprecated_name_of_workers(polar):
+    with pytest.warns(DeprecationWarning, match="threads= is now workers="):
+        np.testing.assert_array_equal(polar.locate(POINTS, threads=3), CODES)
+    with pytest.warns(DeprecationWarning):
+        np.testing.assert_array_equal(polar.locate(POINTS, threads=0), CODES)
+    with pytest.raises(ValueError, match="threads must be from 0 .* got -1"):
+        with pytest.warns(DeprecationWarning):
+            polar.locate(POINTS, threads=-1)
+    with pytest.raises(TypeError, match="not both"):
+        polar.locate(POINTS, workers=2, threads=2)
 
 
 def test_trace_point_shape(polar, cubemap):
@@ -161,10 +180,54 @@ def test_trace_point_shape(polar, cubemap):
 
 
 def test_conveniences_validate(square):
-    with pytest.raises(ValueError, match="polygon_vertices must be an"):
+    with pytest.raises(ValueError, match="polygon must be an"):
         convexloc.contains([1, 2, 3], [[0, 0]])
     with pytest.raises(ValueError, match="points must be an"):
         convexloc.contains(square, [[0, 0, 0]])
     with pytest.raises(ValueError, match="cloud must be an"):
         convexloc.hull_contains([[0, 0]], [[0, 0, 0]])
     assert convexloc.contains(square, np.zeros((0, 2))).dtype == np.bool_
+
+
+def explicit(locator, *columns):
+    """What the columns should give: locate() on the explicitly broadcast points."""
+    arrays = np.broadcast_arrays(*[np.asarray(c, dtype=float) for c in columns])
+    rows = np.stack([a.ravel() for a in arrays], axis=1)
+    return locator.locate(rows).reshape(arrays[0].shape)
+
+
+@pytest.mark.parametrize("x, y", [
+    (np.linspace(-0.5, 1.5, 3)[:, None], np.linspace(-0.5, 1.5, 4)[None, :]),   # (3,1) x (1,4)
+    (np.linspace(-0.5, 1.5, 9), 0.5),                                           # a scalar
+    (np.arange(24.0).reshape(2, 3, 4) / 10, np.arange(4.0)[::-1] / 3),         # (2,3,4) x (4,)
+    (np.arange(24.0).reshape(2, 3, 4).transpose(2, 0, 1) / 10, 1.0),            # transposed
+    (np.arange(60.0).reshape(6, 10)[::2, ::3] / 20, np.zeros((1, 1, 4))),       # strided views
+    (np.arange(-8, 8)[::-1] / 8, np.arange(-8, 8) / 8),                         # negative stride
+    (np.zeros((0, 1)), np.zeros((1, 5))),                                       # empty result
+])
+def test_locate_xy_broadcasts_like_a_ufunc(polar, x, y):
+    codes = polar.locate_xy(x, y)
+    expected = explicit(polar, x, y)
+    assert codes.shape == expected.shape and codes.dtype == np.int8
+    np.testing.assert_array_equal(codes, expected)
+
+
+def test_locate_xyz_broadcasts_and_reads_views(cubemap):
+    rng = np.random.default_rng(3)
+    rows = rng.integers(-2, 3, size=(5000, 3)) / 2
+    np.testing.assert_array_equal(cubemap.locate_xyz(rows[:, 0], rows[:, 1], rows[:, 2]),
+                                  cubemap.locate(rows))
+    grid = [np.linspace(-1.5, 1.5, 7).reshape(shape) for shape in ((7, 1, 1), (1, 7, 1), (1, 1, 7))]
+    codes = cubemap.locate_xyz(*grid)
+    assert codes.shape == (7, 7, 7)
+    np.testing.assert_array_equal(codes, explicit(cubemap, *grid))
+    assert set(np.unique(codes)) == {0, 1, 2}
+
+
+def test_locate_xy_on_many_threads_equals_one(polar):
+    rng = np.random.default_rng(8)
+    x = rng.integers(-2, 4, size=(300, 1)) / 2
+    y = rng.integers(-2, 4, size=(1, 700)) / 2
+    one = polar.locate_xy(x, y, workers=1)
+    np.testing.assert_array_equal(polar.locate_xy(x, y, workers=3), one)
+    np.testing.assert_array_equal(one, explicit(polar, x, y))

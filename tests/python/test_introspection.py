@@ -68,7 +68,7 @@ def test_docstrings():
         if callable(value):
             assert value.__doc__, name
     assert "O(1)" in convexloc.PolarLocator.__doc__
-    assert "threads" in convexloc.PolarLocator.locate.__doc__
+    assert "workers" in convexloc.PolarLocator.locate.__doc__
     assert "slabs per octant" in convexloc.PolarLocator.__init__.__doc__
 
 
@@ -82,6 +82,7 @@ def stub_names():
             names.add(node.name)
             own = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
             own |= {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
+            own |= {t.id for n in node.body if isinstance(n, ast.Assign) for t in n.targets}
             for base in node.bases:
                 if isinstance(base, ast.Subscript):  # a generic base: _Locator[...]
                     base = base.value
@@ -92,6 +93,8 @@ def stub_names():
             names.add(node.target.id)
         elif isinstance(node, ast.FunctionDef):
             names.add(node.name)
+        elif isinstance(node, ast.ImportFrom):  # re-exported: "from .types import X as X"
+            names |= {a.asname for a in node.names if a.asname == a.name}
     return names, members
 
 
@@ -100,6 +103,30 @@ def test_stubs_cover_the_module():
     assert set(convexloc.__all__) <= names
     for name in convexloc.__all__:
         value = getattr(convexloc, name)
-        if isinstance(value, type) and not issubclass(value, Exception):
+        if isinstance(value, type) and not issubclass(value, (Exception, dict)):
             public = {m for m in dir(value) if not m.startswith("_")}
+            if issubclass(value, int):  # an IntEnum: its own members, not int's methods
+                public -= set(dir(int))
             assert public <= members[name], (name, public - members[name])
+
+
+def test_the_typed_dicts_have_exactly_the_runtime_keys(square, cube):
+    """convexloc.types (what the stubs re-export) names every key trace(), stats() and
+    cells() return, and no other, for every method; the nested dicts too."""
+    T = convexloc.types
+    for cls in convexloc.LOCATORS_2D.values():
+        locator = cls(square)
+        trace = locator.trace((0.25, 0.75))
+        assert set(trace) == set(T.Trace2D.__annotations__), cls.__name__
+        assert set(trace["uniform"]) == set(T.UniformStep.__annotations__)
+        assert set(trace["polar"]) == set(T.PolarStep.__annotations__)
+        assert set(locator.stats()) == set(T.Stats2D.__annotations__), cls.__name__
+        for cell in locator.cells():
+            assert set(cell) == set(T.Cell2D.__annotations__), cls.__name__
+    for cls in convexloc.LOCATORS_3D.values():
+        locator = cls(cube)
+        assert set(locator.trace((0.1, 0.2, 0.3))) == set(T.Trace3D.__annotations__), cls.__name__
+        assert set(locator.stats()) == set(T.Stats3D.__annotations__), cls.__name__
+        for cell in locator.cells():
+            assert set(cell) == set(T.Cell3D.__annotations__), cls.__name__
+    assert convexloc.CubemapLocator(cube).cells()  # the cell check above ran

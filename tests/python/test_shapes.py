@@ -61,10 +61,18 @@ def test_polyhedron_errors():
     tetra = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
     with pytest.raises(convexloc.GeometryError, match="open"):
         convexloc.Polyhedron(tetra, [[0, 2, 1], [0, 1, 3], [0, 3, 2]])
-    with pytest.raises(ValueError, match="face 1 has vertex index -1"):
+    # a negative index and one past the end are the same problem, the same exception
+    with pytest.raises(convexloc.GeometryError,
+                       match=r"^face 1 refers to vertex -1, but the vertices are 0 to 3$"):
         convexloc.Polyhedron(tetra, [[0, 2, 1], [0, 1, -1]])
-    with pytest.raises(ValueError, match="face 0 has vertex index -2"):
+    with pytest.raises(convexloc.GeometryError,
+                       match=r"^face 0 refers to vertex -2, but the vertices are 0 to 3$"):
         convexloc.Polyhedron(tetra, np.array([[0, 2, -2]]))
+    with pytest.raises(convexloc.GeometryError,
+                       match=r"^face 1 refers to vertex 4, but the vertices are 0 to 3$"):
+        convexloc.Polyhedron(tetra, [[0, 2, 1], [0, 1, 4]])
+    with pytest.raises(convexloc.GeometryError, match=r"face 1 refers to vertex 2361183241434822606848,"):
+        convexloc.Polyhedron(tetra, [[0, 2, 1], [0, 1, 2**71]])
     with pytest.raises(convexloc.GeometryError):
         convexloc.Polyhedron(tetra, [[0, 2, 1], [0, 1, 7], [0, 3, 2], [1, 2, 3]])
     with pytest.raises(TypeError, match="not a vertex index"):
@@ -154,3 +162,16 @@ def test_messages_equal_the_cli(tmp_path):
         assert str(caught.value) == message, path
         compared += 1
     assert compared >= 20
+
+
+def test_a_non_planar_face_is_named_once():
+    # a square base lifted at one corner, folding inward: the error names the face once and
+    # says the edge is the diagonal its triangulation drew, not an edge the input has
+    vertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0.1], [0, 1, 0], [0.5, 0.5, 1]]
+    faces = [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4], [0, 3, 2, 1]]
+    with pytest.raises(convexloc.GeometryError) as caught:
+        convexloc.Polyhedron(vertices, faces)
+    message = str(caught.value)
+    assert message.startswith("not convex: face 4 is not planar: it folds inward along the "
+                              "diagonal from vertex ")
+    assert "face 4 and face 4" not in message and message.count("face 4") == 1

@@ -8,15 +8,18 @@ Build a shape once, then a locator over it; locate any number of points at once:
     >>> polar.locate(np.array([[0.5, 0.5], [0.5, 1.0], [2.0, 0.0]]))
     array([0, 1, 2], dtype=int8)
 
-The codes are INSIDE (0), BOUNDARY (1) and OUTSIDE (2), exact for the doubles given: a point
-is on the boundary only when it lies exactly on it. One call does both steps:
-contains(polygon_vertices, points) and hull_contains(cloud, points).
+The codes are Location.INSIDE (0), BOUNDARY (1) and OUTSIDE (2), exact for the doubles
+given: a point is on the boundary only when it lies exactly on it. One call does both steps:
+contains(polygon, points) (the interior, as Shapely names it), covers(polygon, points) (the
+boundary counts), and hull_contains / hull_covers(cloud, points) for the hull of a 3D cloud.
 """
 
+import enum as _enum
+import functools as _functools
+import inspect as _inspect
+
+from . import _core
 from ._core import (
-    BOUNDARY,
-    INSIDE,
-    OUTSIDE,
     CubemapLocator,
     Error,
     FileError,
@@ -34,12 +37,29 @@ from ._core import (
     WedgeLocator,
     __version__,
     contains,
+    covers,
     hull_contains,
-    read_polygon,
-    read_polyhedron,
+    hull_covers,
     set_vector_batches,
     vector_batches,
 )
+
+
+class Location(_enum.IntEnum):
+    """Where a point lies: the int8 codes every locate() returns, by name
+    (Location(codes[i]) names one; they compare equal to the plain ints)."""
+
+    INSIDE = _core.INSIDE
+    BOUNDARY = _core.BOUNDARY
+    OUTSIDE = _core.OUTSIDE
+
+
+INSIDE = Location.INSIDE
+BOUNDARY = Location.BOUNDARY
+OUTSIDE = Location.OUTSIDE
+
+#: a code's name: NAMES[code] is "inside", "boundary" or "outside"
+NAMES = ("inside", "boundary", "outside")
 
 #: the 2D locator classes by method name, in the paper's order
 LOCATORS_2D = {
@@ -49,14 +69,72 @@ LOCATORS_2D = {
 #: the 3D locator classes by method name
 LOCATORS_3D = {cls.method: cls for cls in (HalfspaceLocator, WalkLocator, CubemapLocator)}
 
-#: a code's name: NAMES[code] is "inside", "boundary" or "outside"
-NAMES = ("inside", "boundary", "outside")
+
+def _signature_of(function):
+    """The inspect.Signature in the first line of a pybind11 docstring, "name(a: T, *,
+    b: U = 1) -> R" (defaults that are not Python literals are kept as their text)."""
+    line = function.__doc__.splitlines()[0]
+    inside = line[line.index("(") + 1:line.rindex(")")]
+    parts, depth, start = [], 0, 0
+    for k, c in enumerate(inside):
+        depth += c in "([{"
+        depth -= c in ")]}"
+        if c == "," and depth == 0:
+            parts.append(inside[start:k].strip())
+            start = k + 1
+    parts.append(inside[start:].strip())
+    parameters, kind = [], _inspect.Parameter.POSITIONAL_OR_KEYWORD
+    for part in filter(None, parts):
+        if part == "*":
+            kind = _inspect.Parameter.KEYWORD_ONLY
+            continue
+        name, _, default = part.partition("=")
+        name = name.split(":")[0].strip()
+        value = _inspect.Parameter.empty
+        if default:
+            try:
+                value = eval(default.strip(), {"__builtins__": {}})  # a literal: 0, None, False
+            except Exception:
+                value = default.strip()
+        parameters.append(_inspect.Parameter(name, kind, default=value))
+    return _inspect.Signature(parameters)
+
+
+def _signed(function):
+    """`function` (a pybind11 builtin) behind a Python function that inspect.signature reads."""
+
+    @_functools.wraps(function)
+    def wrapper(*args, **kwargs):
+        return function(*args, **kwargs)
+
+    wrapper.__signature__ = _signature_of(function)
+    wrapper.__module__ = __name__
+    return wrapper
+
+
+read_polygon = _signed(_core.read_polygon)
+read_polyhedron = _signed(_core.read_polyhedron)
+
+from . import types  # noqa: E402
+from .chunks import iter_locate, locate_chunks  # noqa: E402  (it uses the tables above)
+from .types import (  # noqa: E402
+    Cell2D,
+    Cell3D,
+    PolarStep,
+    Stats2D,
+    Stats3D,
+    Trace2D,
+    Trace3D,
+    UniformStep,
+)
 
 __all__ = [
-    "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
+    "Location", "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
     "Error", "FileError", "GeometryError", "ParseError", "UsageError",
     "Polygon", "Polyhedron", "read_polygon", "read_polyhedron",
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
-    "contains", "hull_contains", "set_vector_batches", "vector_batches",
+    "iter_locate", "locate_chunks",
+    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
+    "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
 ]

@@ -14,8 +14,10 @@ cell's square on the cube around the centre and the faces it lists.
 
 import sys
 from pathlib import Path
+from typing import Any, Protocol, Sequence, Union
 
 import numpy as np
+import numpy.typing as npt
 
 import convexloc
 
@@ -24,37 +26,55 @@ import convexloc
 FILLS = ("#dbe8f6", "#9dc3e6", "#5b9bd5", "#2e75b6")
 
 
-def fill_for(count):
+Points = Any  # an (N, 2) array or a sequence of (x, y)
+Point = Union[Sequence[float], npt.NDArray[np.float64]]
+Box = tuple[tuple[float, float], tuple[float, float]]
+
+
+def fill_for(count: int) -> str:
     return FILLS[min(count, len(FILLS)) - 1] if count else "#ffffff"
 
 
 # === Two ways to draw the same primitives
 
 
+class Canvas(Protocol):
+    """What both canvases draw."""
+
+    def polygon(self, points: Points, fill: str = "none", stroke: str = "#404040",
+                width: float = 0.5, alpha: float = 1.0) -> None: ...
+
+    def dot(self, p: Point, colour: str = "#c00000") -> None: ...
+
+    def save(self, path: Path, title: str) -> list[Path]: ...
+
+
 class SvgCanvas:
     """Polygons, lines and dots in an SVG file, y up, scaled to fit `bounds`."""
 
-    def __init__(self, bounds, size=640, margin=20):
+    def __init__(self, bounds: Box, size: int = 640, margin: int = 20) -> None:
         (self.x0, self.y0), (x1, y1) = bounds
         self.scale = (size - 2 * margin) / max(x1 - self.x0, y1 - self.y0)
-        self.margin, self.items = margin, []
+        self.margin = margin
+        self.items: list[str] = []
         self.width = round((x1 - self.x0) * self.scale) + 2 * margin
         self.height = round((y1 - self.y0) * self.scale) + 2 * margin
 
-    def _xy(self, p):
+    def _xy(self, p: Point) -> tuple[float, float]:
         return (self.margin + (p[0] - self.x0) * self.scale,
                 self.height - self.margin - (p[1] - self.y0) * self.scale)
 
-    def polygon(self, points, fill="none", stroke="#404040", width=0.5, alpha=1.0):
+    def polygon(self, points: Points, fill: str = "none", stroke: str = "#404040",
+                width: float = 0.5, alpha: float = 1.0) -> None:
         text = " ".join("%.2f,%.2f" % self._xy(p) for p in points)
         self.items.append(f'<polygon points="{text}" fill="{fill}" fill-opacity="{alpha}" '
                           f'stroke="{stroke}" stroke-width="{width}"/>')
 
-    def dot(self, p, colour="#c00000"):
+    def dot(self, p: Point, colour: str = "#c00000") -> None:
         x, y = self._xy(p)
         self.items.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="3" fill="{colour}"/>')
 
-    def save(self, path, title):
+    def save(self, path: Path, title: str) -> list[Path]:
         body = "\n".join(self.items)
         Path(path).write_text(
             f'<svg xmlns="http://www.w3.org/2000/svg" width="{self.width}" height="{self.height}">\n'
@@ -66,7 +86,7 @@ class SvgCanvas:
 class MatplotlibCanvas:
     """The same primitives on a matplotlib figure."""
 
-    def __init__(self, bounds):
+    def __init__(self, bounds: Box) -> None:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
@@ -78,17 +98,18 @@ class MatplotlibCanvas:
         self.axes.set_xlim(x0, x1)
         self.axes.set_ylim(y0, y1)
 
-    def polygon(self, points, fill="none", stroke="#404040", width=0.5, alpha=1.0):
+    def polygon(self, points: Points, fill: str = "none", stroke: str = "#404040",
+                width: float = 0.5, alpha: float = 1.0) -> None:
         from matplotlib.patches import Polygon
         face = "none" if fill == "none" else fill
         self.axes.add_patch(Polygon(np.asarray(points), closed=True, facecolor=face,
                                     alpha=None if fill == "none" else alpha,
                                     edgecolor=stroke, linewidth=width))
 
-    def dot(self, p, colour="#c00000"):
+    def dot(self, p: Point, colour: str = "#c00000") -> None:
         self.axes.plot([p[0]], [p[1]], "o", color=colour, markersize=4)
 
-    def save(self, path, title):
+    def save(self, path: Path, title: str) -> list[Path]:
         self.axes.set_title(title)
         png = Path(path).with_suffix(".png")
         self.figure.savefig(path)
@@ -97,7 +118,7 @@ class MatplotlibCanvas:
         return [path, png]
 
 
-def canvas(bounds, use_matplotlib):
+def canvas(bounds: Box, use_matplotlib: bool) -> Canvas:
     if use_matplotlib:
         try:
             return MatplotlibCanvas(bounds)
@@ -106,16 +127,16 @@ def canvas(bounds, use_matplotlib):
     return SvgCanvas(bounds)
 
 
-def padded(lo, hi, pad=0.05):
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    d = (hi - lo).max() * pad
-    return (tuple(lo - d), tuple(hi + d))
+def padded(lo: Sequence[float], hi: Sequence[float], pad: float = 0.05) -> Box:
+    low, high = np.asarray(lo, float), np.asarray(hi, float)
+    d = (high - low).max() * pad
+    return ((float(low[0] - d), float(low[1] - d)), (float(high[0] + d), float(high[1] + d)))
 
 
 # === Fig. 6: polar slabs
 
 
-def figure6(path, use_matplotlib=True):
+def figure6(path: Path, use_matplotlib: bool = True) -> list[Path]:
     """The polar cells of a convex polygon, filled by the number of edges each lists."""
     t = np.sort(np.random.default_rng(6).uniform(0, 2 * np.pi, 11))
     polygon = convexloc.Polygon(np.column_stack([1.6 * np.cos(t), np.sin(t)]))
@@ -133,17 +154,18 @@ def figure6(path, use_matplotlib=True):
 # === Fig. 7: the cube map
 
 
-def view(points, yaw=0.6, pitch=0.45):
+def view(points: npt.ArrayLike, yaw: float = 0.6,
+         pitch: float = 0.45) -> npt.NDArray[np.float64]:
     """Points seen obliquely from above: turned by `yaw` about z, tilted by `pitch` toward the
     viewer, who looks along +y; returns (screen x, screen y = up, depth toward the viewer)."""
     cy, sy, cp, sp = np.cos(yaw), np.sin(yaw), np.cos(pitch), np.sin(pitch)
     turn = np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
     tilt = np.array([[1, 0, 0], [0, cp, -sp], [0, sp, cp]])
-    p = np.asarray(points) @ turn.T @ tilt.T
+    p = np.asarray(points, dtype=np.float64) @ turn.T @ tilt.T
     return np.stack([p[..., 0], p[..., 2], -p[..., 1]], axis=-1)
 
 
-def figure7(path, use_matplotlib=True):
+def figure7(path: Path, use_matplotlib: bool = True) -> list[Path]:
     """The cube-map cells around the centre of a convex polyhedron, filled by the faces each
     lists: the far cube faces behind the polyhedron, the near ones outlined in front."""
     cloud = np.random.default_rng(7).normal(size=(40, 3)) * [1.0, 0.8, 0.6]
@@ -156,11 +178,11 @@ def figure7(path, use_matplotlib=True):
     draw = canvas(padded(flat.min(axis=0), flat.max(axis=0)), use_matplotlib)
     far = [k for k in range(len(cells)) if screen[k][:, 2].mean() < centre[2]]
     near = [k for k in range(len(cells)) if k not in set(far)]
-    for k in sorted(far, key=lambda k: screen[k][:, 2].mean()):
+    for k in sorted(far, key=lambda k: float(screen[k][:, 2].mean())):
         draw.polygon(screen[k][:, :2], fill=fill_for(len(cells[k]["faces"])), stroke="#7f7f7f")
     corners = view(polyhedron.vertices)
     triangles = polyhedron.triangles
-    for tri in sorted(triangles, key=lambda t: corners[t, 2].mean()):
+    for tri in sorted(triangles, key=lambda t: float(corners[t, 2].mean())):
         a, b, c = corners[tri]
         if np.cross(b[:2] - a[:2], c[:2] - a[:2]) > 0:  # seen from outside
             draw.polygon(corners[tri, :2], fill="#f4b183", stroke="#843c0c", alpha=0.85)
@@ -170,7 +192,7 @@ def figure7(path, use_matplotlib=True):
     return draw.save(path, 'Fig. 7: "spherical" decomposition of a convex polyhedron')
 
 
-def main(argv):
+def main(argv: list[str]) -> None:
     """figures.py [--svg] [OUTPUT_DIR]: --svg writes the SVG itself even with matplotlib."""
     flags = [a for a in argv[1:] if a.startswith("--")]
     places = [a for a in argv[1:] if not a.startswith("--")]

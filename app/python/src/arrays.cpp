@@ -5,7 +5,13 @@
 // only decides what it accepts, with errors that name the argument and what was wrong.
 #include "arrays.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
+#include <thread>
+#include <type_traits>
 
 namespace convexloc::python {
 
@@ -29,6 +35,88 @@ void requireNumbers(const py::array& array, const char* what) {
   throw py::type_error(std::string(what) + " must be numbers (integer or float), got " + why);
 }
 
+// "[3, 1]": element `flat` (C order) of an array of `shape`, as numpy indexes it
+std::string elementText(const std::vector<py::ssize_t>& shape, py::ssize_t flat) {
+  std::vector<py::ssize_t> index(shape.size());
+  for (std::size_t k = shape.size(); k-- > 0;) {
+    index[k] = flat % shape[k];
+    flat /= shape[k];
+  }
+  std::string text = "[";
+  for (std::size_t k = 0; k < index.size(); ++k) text += (k ? ", " : "") + std::to_string(index[k]);
+  return text + "]";
+}
+
+// whether the integer v is exactly a double (every |v| <= 2^53 is; beyond, only some)
+template <class Int>
+bool exactInteger(Int v) {
+  const double d = static_cast<double>(v);
+  constexpr double kLimit = 2.0 * static_cast<double>(std::numeric_limits<Int>::max() / 2 + 1);
+  return d < kLimit && static_cast<Int>(d) == v;  // d < 2^63 (2^64) makes the cast defined
+}
+
+// whether the long double v is exactly a double (NaN counts: it stays NaN)
+bool exactLong(long double v) {
+  return std::isnan(v) || static_cast<long double>(static_cast<double>(v)) == v;
+}
+
+// The flat index (C order) of the first element of `array` that T does not hold exactly as a
+// double, or -1. `array` holds T, C-contiguous.
+template <class T>
+py::ssize_t firstInexact(const py::array& array) {
+  const T* values = static_cast<const T*>(array.data());
+  const py::ssize_t count = array.size();
+  for (py::ssize_t i = 0; i < count; ++i) {
+    if constexpr (std::is_integral_v<T>) {
+      if (!exactInteger(values[i])) return i;
+    } else if (!exactLong(values[i])) {
+      return i;
+    }
+  }
+  return -1;
+}
+
+// ValueError unless every element converts to a double without rounding: int64 and uint64
+// beyond 2^53 and long double may not (narrower types always do)
+void requireLossless(const py::array& any, const char* what) {
+  const py::dtype dtype = any.dtype();
+  const char kind = dtype.kind();
+  const bool wide = (kind == 'i' || kind == 'u') ? dtype.itemsize() > 4 : dtype.itemsize() > 8;
+  if (!wide) return;
+  const py::array dense = numpy().attr("ascontiguousarray")(any, dtype.attr("newbyteorder")("="));
+  py::ssize_t bad = -1;
+  if (kind == 'i') bad = firstInexact<std::int64_t>(dense);
+  if (kind == 'u') bad = firstInexact<std::uint64_t>(dense);
+  if (kind == 'f' && dense.itemsize() == sizeof(long double))
+    bad = firstInexact<long double>(dense);
+  if (kind == 'f' && dense.itemsize() != sizeof(long double))
+    throw py::type_error(std::string(what) + ": " + std::string(py::str(py::object(dtype))) +
+                         " is not supported (float64, long double or narrower)");
+  if (bad < 0) return;
+  const std::vector<py::ssize_t> shape(any.shape(), any.shape() + any.ndim());
+  const py::object value = dense.attr("flat")[py::int_(bad)];
+  const py::object nearest =
+      kind == 'f' ? py::object(py::float_(value)) : py::object(py::int_(py::float_(value)));
+  const std::string exact = kind == 'f'
+                                ? std::string(py::str(numpy().attr("format_float_positional")(
+                                      value, py::arg("unique") = true)))
+                                : std::string(py::str(value));
+  throw py::value_error(std::string(what) + elementText(shape, bad) + " = " + exact +
+                        " is not exactly a float64 (the nearest is " +
+                        std::string(py::repr(nearest)) +
+                        "); convexloc does not round its input: pass float64 values");
+}
+
+// TypeError for a masked array with any element masked (numpy.asarray would drop the mask)
+void refuseMasked(const py::object& values, const char* what) {
+  const py::module_ ma = numpy().attr("ma");
+  if (!py::isinstance(values, ma.attr("MaskedArray"))) return;
+  if (!py::bool_(ma.attr("getmaskarray")(values).attr("any")())) return;
+  throw py::type_error(std::string(what) +
+                       ": a masked array with masked elements (their values are not points); "
+                       "keep the unmasked points or pass .filled(numpy.nan) (NaN is OUTSIDE)");
+}
+
 }  // namespace
 
 std::string shapeText(const std::vector<py::ssize_t>& shape) {
@@ -37,7 +125,8 @@ std::string shapeText(const std::vector<py::ssize_t>& shape) {
   return text + (shape.size() == 1 ? ",)" : ")");
 }
 
-py::array floatArray(const py::object& values, const char* what) {
+py::array numberArray(const py::object& values, const char* what) {
+  refuseMasked(values, what);
   py::array any;
   try {
     any = numpy().attr("asarray")(values);
@@ -46,6 +135,12 @@ py::array floatArray(const py::object& values, const char* what) {
     throw py::value_error(std::string(what) + ": " + py::str(e.value()).cast<std::string>());
   }
   requireNumbers(any, what);
+  requireLossless(any, what);
+  return any;
+}
+
+py::array floatArray(const py::object& values, const char* what) {
+  const py::array any = numberArray(values, what);
   return numpy().attr("require")(any, numpy().attr("float64"), py::make_tuple("C", "A"));
 }
 
@@ -73,10 +168,48 @@ py::array_t<std::int64_t> indexArray(std::span<const std::uint32_t> indices) {
   return out;
 }
 
-unsigned threadCount(long threads) {
-  if (threads < 0) throw py::value_error("threads must be >= 0 (0: one per core)");
-  constexpr long kMost = 4096;
-  return static_cast<unsigned>(threads < kMost ? threads : kMost);
+long long integerArgument(const py::object& value, const char* name, long long lo, long long hi,
+                          const char* meaning) {
+  if (!PyIndex_Check(value.ptr()) || PyBool_Check(value.ptr()))
+    throw py::type_error(std::string(name) + " must be an integer, got " +
+                         std::string(py::repr(value)));
+  const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!number) throw py::error_already_set();
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
+  if (overflow != 0 || v < lo || v > hi)
+    throw py::value_error(std::string(name) + " must be " + meaning + ", got " +
+                          std::string(py::str(number)));
+  return v;
+}
+
+unsigned workerCount(const py::object& workers, const py::object& threads) {
+  constexpr long long kMost = 4096;
+  const long long cores = std::max(1u, std::thread::hardware_concurrency());
+  if (!threads.is_none()) {
+    if (!(workers.is_none() ||
+          (py::isinstance<py::int_>(workers) && workers.cast<long long>() == -1)))
+      throw py::type_error("give workers= or its old name threads=, not both");
+    PyErr_WarnEx(PyExc_DeprecationWarning,
+                 "threads= is now workers= (as scipy names it; -1 for every core)", 1);
+    const long long t =
+        integerArgument(threads, "threads", 0, kMost, "from 0 (every core) to 4096");
+    return static_cast<unsigned>(t);
+  }
+  const long long w = integerArgument(workers, "workers", -kMost, kMost,
+                                      "a thread count from 1 to 4096, or -1 for every core "
+                                      "(-2 every core but one, ...), not 0");
+  if (w == 0)
+    throw py::value_error(
+        "workers must be a thread count from 1 to 4096, or -1 for every core "
+        "(-2 every core but one, ...), not 0");
+  return static_cast<unsigned>(w > 0 ? w : std::max(1LL, cores + 1 + w));
+}
+
+std::uint32_t resolutionOf(const py::object& resolution) {
+  return static_cast<std::uint32_t>(
+      integerArgument(resolution, "resolution", 0, std::numeric_limits<std::uint32_t>::max(),
+                      "from 0 (chosen from the shape) to 4294967295"));
 }
 
 }  // namespace convexloc::python

@@ -1,7 +1,9 @@
 // convexloc Python module — numpy arrays in and out, and the batch that runs between them.
 //
 // The conversion rules, the same for every locator and shape: anything numpy.asarray takes;
-// integer and floating dtypes are converted to float64 once (integers to the nearest double),
+// integer and floating dtypes are converted to float64 once, and only when every value is
+// exactly a double (an int64 beyond 2^53 or a long double that is not is a ValueError naming
+// the element; a masked array with masked elements is a TypeError);
 // booleans, complex numbers, strings and objects are a TypeError; a C-contiguous, aligned,
 // native float64 array is read where it lies, without a copy. Points come as an (M, dims)
 // array (an empty 1-D array counts as no points); a wrong shape is a ValueError naming it.
@@ -12,7 +14,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -34,6 +35,10 @@ static_assert(sizeof(Location) == sizeof(std::int8_t));
 template <class Point>
 inline constexpr int kDims = sizeof(Point) / sizeof(double);
 
+// numbers as a numpy array of integers or floating-point numbers, each exactly a double (the
+// input itself when it is an array already, in any layout); `what` names the argument
+py::array numberArray(const py::object& values, const char* what);
+
 // numbers as one C-contiguous, aligned, native float64 array (the input itself when it is
 // one already), of any shape; `what` names the argument in errors
 py::array floatArray(const py::object& values, const char* what);
@@ -47,8 +52,17 @@ py::array_t<std::int8_t> codeArray(const std::vector<py::ssize_t>& shape);
 // "(3, 2)": a shape as numpy prints it
 std::string shapeText(const std::vector<py::ssize_t>& shape);
 
-// the threads argument of a batch, checked: 0 means one per core
-unsigned threadCount(long threads);
+// the integer argument `name`, checked: a Python int (or anything with __index__) in
+// [lo, hi], else ValueError naming the value given (TypeError for a non-integer)
+long long integerArgument(const py::object& value, const char* name, long long lo, long long hi,
+                          const char* meaning);
+
+// the threads of a batch from workers= (as scipy: k > 0 threads, -1 every core, -k every core
+// but k - 1) or from its deprecated old name threads= (0: every core); 0 means every core
+unsigned workerCount(const py::object& workers, const py::object& threads);
+
+// the resolution argument of a locator, checked (0 chooses from the shape)
+std::uint32_t resolutionOf(const py::object& resolution);
 
 // one point given as `dims` numbers, for trace()
 template <class Point>
@@ -86,11 +100,10 @@ inline std::span<Location> locationsOf(py::array_t<std::int8_t>& codes) {
 }
 
 // Locates every row of `points` ((M, dims) array-like) with the GIL released, on up to
-// `threads` threads; returns the (M,) int8 codes.
+// `workers` threads (0: one per core); returns the (M,) int8 codes.
 template <class Locator, class Point>
 py::array_t<std::int8_t> locateRows(const Locator& locator, const py::object& points,
-                                    long threads) {
-  const unsigned workers = threadCount(threads);
+                                    unsigned workers) {
   const py::array rows = pointArray(points, kDims<Point>, "points");
   auto codes = codeArray({rows.shape(0)});
   const std::span<const Point> in = pointsOf<Point>(rows);
@@ -98,46 +111,6 @@ py::array_t<std::int8_t> locateRows(const Locator& locator, const py::object& po
   {
     py::gil_scoped_release released;
     locateParallel(locator, in, out, workers);
-  }
-  return codes;
-}
-
-// point i of the coordinate columns `axes`
-template <class Point>
-Point pointAt(const std::vector<const double*>& axes, std::size_t i) {
-  if constexpr (kDims<Point> == 2)
-    return {axes[0][i], axes[1][i]};
-  else
-    return {axes[0][i], axes[1][i], axes[2][i]};
-}
-
-// Locates the points whose coordinates are the elements of `columns` (x, y[, z]: arrays of
-// one shape, any shape, 0-d included) with the GIL released; the codes have that shape.
-template <class Locator, class Point>
-py::array_t<std::int8_t> locateColumns(const Locator& locator,
-                                       const std::array<py::object, kDims<Point>>& columns,
-                                       long threads) {
-  static constexpr const char* kNames[] = {"x", "y", "z"};
-  const unsigned workers = threadCount(threads);
-  std::vector<py::array> flat;
-  std::vector<py::ssize_t> shape;
-  for (std::size_t k = 0; k < columns.size(); ++k) {
-    flat.push_back(floatArray(columns[k], kNames[k]));
-    const std::vector<py::ssize_t> own(flat[k].shape(), flat[k].shape() + flat[k].ndim());
-    if (k == 0) shape = own;
-    if (own != shape)
-      throw py::value_error(std::string(kNames[k]) + " has shape " + shapeText(own) +
-                            ", x has shape " + shapeText(shape) + ": they must be equal");
-  }
-  auto codes = codeArray(shape);
-  const std::span<Location> out = locationsOf(codes);
-  std::vector<const double*> axes;
-  for (const py::array& a : flat) axes.push_back(static_cast<const double*>(a.data()));
-  {
-    py::gil_scoped_release released;
-    std::vector<Point> points(out.size());
-    for (std::size_t i = 0; i < points.size(); ++i) points[i] = pointAt<Point>(axes, i);
-    locateParallel(locator, std::span<const Point>(points), out, workers);
   }
   return codes;
 }

@@ -3,6 +3,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -23,6 +25,23 @@ void bindLocators2D(py::module_& m);
 void bindLocators3D(py::module_& m);
 // contains, hull_contains (conveniences.cpp)
 void bindConveniences(py::module_& m);
+
+// === Shapes from Python values (shape_input.cpp)
+
+// a polygon from (N, 2) vertices or from an object with a Polygon __geo_interface__ (or such
+// a GeoJSON mapping): its exterior ring; GeometryError for holes
+ConvexPolygon polygonFrom(const py::object& vertices);
+// the polygon that is the exact convex hull of (M, 2) points (core's convexHull)
+ConvexPolygon polygonHull(const py::object& points);
+// GeometryError naming the count when fewer than 4 points cannot make a 3D hull
+void requireHullPoints(std::size_t count);
+// vertex index `index` of face `face`, checked against the vertex count (GeometryError)
+std::uint32_t faceVertex(const py::handle& index, std::size_t vertexCount, std::size_t face);
+
+// === Text signatures: inspect.signature reads "name(params)\n--\n\n" at a docstring's start
+
+// the docstring `doc` led by the signature of `name` with `params` ("(self, x, *, k=0)")
+const char* signedDoc(const char* name, const char* params, const std::string& doc);
 
 // === Introspection as plain Python values: dicts, lists, tuples and numpy arrays
 

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "locator_class.hpp"
 
 namespace convexloc::python {
 
@@ -25,7 +26,7 @@ py::array_t<bool> insideOf(py::array_t<std::int8_t>& codes, bool boundary) {
 // the polygon itself, or the one its vertices make
 const ConvexPolygon& polygonOf(const py::object& shape, std::optional<ConvexPolygon>& made) {
   if (py::isinstance<ConvexPolygon>(shape)) return shape.cast<const ConvexPolygon&>();
-  const py::array vertices = pointArray(shape, 2, "polygon_vertices");
+  const py::array vertices = pointArray(shape, 2, "polygon");
   const std::span<const Vec2> read = pointsOf<Vec2>(vertices);
   py::gil_scoped_release released;
   return made.emplace(read);
@@ -36,6 +37,7 @@ const ConvexPolyhedron& hullOf(const py::object& shape, std::optional<ConvexPoly
   if (py::isinstance<ConvexPolyhedron>(shape)) return shape.cast<const ConvexPolyhedron&>();
   const py::array cloud = pointArray(shape, 3, "cloud");
   const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
+  requireHullPoints(read.size());
   py::gil_scoped_release released;
   return made.emplace(ConvexPolyhedron::hullOf(read));
 }
@@ -43,44 +45,85 @@ const ConvexPolyhedron& hullOf(const py::object& shape, std::optional<ConvexPoly
 // builds Locator over `shape` without the GIL, then answers the batch as booleans
 template <class Locator, class Point, class Shape>
 py::array_t<bool> containsIn(const Shape& shape, const py::object& points, bool boundary,
-                             long threads) {
+                             unsigned workers) {
   std::optional<Locator> locator;
   {
     py::gil_scoped_release released;
     locator.emplace(shape);
   }
-  auto codes = locateRows<Locator, Point>(*locator, points, threads);
+  auto codes = locateRows<Locator, Point>(*locator, points, workers);
   return insideOf(codes, boundary);
 }
 
-// Defines `name`(shape, points, *, boundary=True, threads=0): makes the shape when it is
-// not one already (with `make`), then answers with Locator.
+// whether the boundary counts: `covers`, unless the deprecated boundary= of contains says
+bool boundaryCounts(bool covers, const py::object& boundary) {
+  if (boundary.is_none()) return covers;
+  if (covers) throw py::type_error("covers takes no boundary= (the boundary always counts)");
+  PyErr_WarnEx(PyExc_DeprecationWarning,
+               "contains(..., boundary=) is deprecated: contains is the interior only, as in "
+               "Shapely; covers counts the boundary",
+               1);
+  return boundary.cast<bool>();
+}
+
+// Defines `name`(shape, points, *, workers=-1): makes the shape when it is not one already
+// (with `make`), then answers with Locator; `covers` says whether the boundary counts.
 template <class Locator, class Point, class Shape, class Make>
-void defineContains(py::module_& m, const char* name, const char* shapeArg, Make make,
+void defineContains(py::module_& m, const char* name, bool covers, const char* shapeArg, Make make,
                     const char* doc) {
-  m.def(
-      name,
-      [make](const py::object& shape, const py::object& points, bool boundary, long threads) {
-        std::optional<Shape> made;
-        return containsIn<Locator, Point>(make(shape, made), points, boundary, threads);
-      },
-      py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("boundary") = true,
-      py::arg("threads") = 0, doc);
+  auto body = [make, covers](const py::object& shape, const py::object& points,
+                             const py::object& workers, const py::object& threads,
+                             const py::object& boundary) {
+    const bool counts = boundaryCounts(covers, boundary);
+    const unsigned w = workerCount(workers, threads);
+    std::optional<Shape> made;
+    return containsIn<Locator, Point>(make(shape, made), points, counts, w);
+  };
+  if (covers)
+    m.def(
+        name,
+        [body](const py::object& shape, const py::object& points, const py::object& workers,
+               const py::object& threads) {
+          return body(shape, points, workers, threads, py::none());
+        },
+        py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
+        py::arg("threads") = py::none(),
+        signedDoc(name,
+                  keep("(" + std::string(shapeArg) + ", points, *, workers=-1, threads=None)"),
+                  doc));
+  else
+    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
+          py::arg("threads") = py::none(), py::arg("boundary") = py::none(),
+          signedDoc(name,
+                    keep("(" + std::string(shapeArg) +
+                         ", points, *, workers=-1, threads=None, boundary=None)"),
+                    doc));
 }
 
 }  // namespace
 
 void bindConveniences(py::module_& m) {
   defineContains<PolarLocator, Vec2, ConvexPolygon>(
-      m, "contains", "polygon_vertices", &polygonOf,
-      "For each of the (M, 2) points, whether it lies in the convex polygon (its (N, 2) "
-      "vertices, or a Polygon): an (M,) bool array, exact. A point on the boundary counts "
-      "unless boundary=False. Builds a PolarLocator, then locates the batch.");
+      m, "contains", false, "polygon", &polygonOf,
+      "For each of the (M, 2) points, whether it lies strictly inside the convex polygon (a "
+      "Polygon, or its (N, 2) vertices): an (M,) bool array, exact. The interior only, as "
+      "Shapely's contains; covers() counts the boundary too (boundary=True is the deprecated "
+      "old way to ask for that). Builds a PolarLocator, then locates the batch.");
+  defineContains<PolarLocator, Vec2, ConvexPolygon>(
+      m, "covers", true, "polygon", &polygonOf,
+      "For each of the (M, 2) points, whether it lies inside or on the boundary of the convex "
+      "polygon (a Polygon, or its (N, 2) vertices): an (M,) bool array, exact, as Shapely's "
+      "covers. Builds a PolarLocator, then locates the batch.");
   defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
-      m, "hull_contains", "cloud", &hullOf,
-      "For each of the (M, 3) points, whether it lies in the convex hull of the (K, 3) cloud "
-      "(or in a Polyhedron): an (M,) bool array, exact for the hull Qhull gives. A point on "
-      "the boundary counts unless boundary=False. Builds a CubemapLocator, then locates.");
+      m, "hull_contains", false, "cloud", &hullOf,
+      "For each of the (M, 3) points, whether it lies strictly inside the convex hull of the "
+      "(K, 3) cloud (or inside a Polyhedron): an (M,) bool array, exact (the exact hull). "
+      "hull_covers() counts the boundary too. Builds a CubemapLocator, then locates.");
+  defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
+      m, "hull_covers", true, "cloud", &hullOf,
+      "For each of the (M, 3) points, whether it lies inside or on the convex hull of the "
+      "(K, 3) cloud (or of a Polyhedron): an (M,) bool array, exact (the exact hull). "
+      "Builds a CubemapLocator, then locates.");
 }
 
 }  // namespace convexloc::python

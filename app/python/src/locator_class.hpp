@@ -1,9 +1,10 @@
 // convexloc Python module — one Python class per locator, written once for 2D and 3D.
 //
 // Every class has the same face: built from a shape (and a resolution where the method has
-// one) with the GIL released; locate(points, threads=) and locate_xy / locate_xyz through
+// one) with the GIL released; locate(points, workers=) and locate_xy / locate_xyz through
 // arrays.hpp's batch; trace(point), stats(), cells() as plain values (bindings.hpp). A
-// locator holds its own copy of the shape's geometry, so the shape may go away after.
+// locator holds its own copy of the shape's geometry and a reference to the shape object
+// (what pickling carries).
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -12,12 +13,15 @@
 #include <cstdint>
 #include <limits>
 #include <list>
+#include <optional>
 #include <string>
 #include <type_traits>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "columns.hpp"
 #include "convexloc/methods.hpp"
+#include "shape_protocols.hpp"
 
 namespace convexloc::python {
 
@@ -37,81 +41,134 @@ inline const char* keep(std::string text) {
   return kept.emplace_back(std::move(text)).c_str();
 }
 
-// the resolution argument, checked
-inline std::uint32_t resolutionOf(long resolution) {
-  if (resolution < 0 || resolution > std::numeric_limits<std::uint32_t>::max())
-    throw py::value_error("resolution must be >= 0 (0 chooses from the shape), got " +
-                          std::to_string(resolution));
-  return static_cast<std::uint32_t>(resolution);
+// A locator as the Python class holds it: with the shape it was built from (the Python
+// object, shared, not copied) and the resolution asked for, which is what pickling carries:
+// a locator is rebuilt on load, from the shape's exact doubles and that resolution.
+template <class Locator>
+struct Bound {
+  Locator locator;
+  py::object shape;
+  std::uint32_t resolution = 0;
+};
+
+// the locator of `shape`, built without the GIL, with `resolution` where the method has one
+template <class Locator, class Method>
+Bound<Locator> buildBound(const py::object& shape, std::uint32_t resolution) {
+  using Shape = typename Dimension<Method>::Shape;
+  if (!py::isinstance<Shape>(shape))
+    throw py::type_error(std::string(Dimension<Method>::kShape) + " must be a convexloc." +
+                         (Dimension<Method>::kPlanar ? "Polygon" : "Polyhedron") + ", got " +
+                         std::string(py::str(shape.get_type().attr("__name__"))));
+  const Shape& s = shape.cast<const Shape&>();
+  std::optional<Locator> built;
+  {
+    py::gil_scoped_release released;  // the build; `shape` is copied (a reference taken) after
+    if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>)
+      built.emplace(s, resolution);
+    else
+      built.emplace(s);
+  }
+  return Bound<Locator>{std::move(*built), shape, resolution};
 }
 
-// the constructor: from the shape, and a resolution where the method has one
+// the constructor (from the shape, and a resolution where the method has one) and pickling
 template <class Locator, class Method>
-void defineInit(py::class_<Locator>& c, Method method) {
+void defineInit(py::class_<Bound<Locator>>& c, Method method) {
   using Shape = typename Dimension<Method>::Shape;
   const auto& info = methodInfo(method);
   const py::arg shape(Dimension<Method>::kShape);
   if constexpr (std::is_constructible_v<Locator, const Shape&, std::uint32_t>) {
-    const char* doc = keep("Builds the locator. resolution: " + std::string(info.resolution) +
-                           " (0 chooses from the shape).");
-    c.def(py::init([](const Shape& s, long resolution) {
-            const std::uint32_t r = resolutionOf(resolution);
-            py::gil_scoped_release released;
-            return Locator(s, r);
+    const std::string params =
+        std::string("(self, ") + Dimension<Method>::kShape + ", resolution=0)";
+    const char* doc = signedDoc("__init__", keep(params),
+                                "Builds the locator. resolution: " + std::string(info.resolution) +
+                                    " (0 chooses from the shape).");
+    c.def(py::init([](const py::object& s, const py::object& resolution) {
+            return buildBound<Locator, Method>(s, resolutionOf(resolution));
           }),
           shape, py::arg("resolution") = 0, doc);
   } else {
-    c.def(py::init([](const Shape& s) {
-            py::gil_scoped_release released;
-            return Locator(s);
-          }),
-          shape, "Builds the locator.");
+    const std::string params = std::string("(self, ") + Dimension<Method>::kShape + ")";
+    c.def(py::init([](const py::object& s) { return buildBound<Locator, Method>(s, 0); }), shape,
+          signedDoc("__init__", keep(params), "Builds the locator."));
   }
+  c.def(py::pickle([](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
+                   [](const py::tuple& state) {
+                     if (state.size() != 3 || state[0].cast<int>() != 1)
+                       throw py::value_error(
+                           "cannot unpickle this locator: it was pickled by another "
+                           "version of convexloc");
+                     return buildBound<Locator, Method>(state[1], state[2].cast<std::uint32_t>());
+                   }));
+  pickleAnyProtocol(c);
+  c.def_property_readonly(
+      "shape", [](const Bound<Locator>& b) { return b.shape; }, "the shape it was built from");
+}
+
+// the docstring of locate and of locate_xy / locate_xyz
+inline const char* locateDoc(int dims, bool columns) {
+  const char* name = columns ? (dims == 2 ? "locate_xy" : "locate_xyz") : "locate";
+  const char* params = columns ? (dims == 2 ? "(self, x, y, *, workers=-1, threads=None)"
+                                            : "(self, x, y, z, *, workers=-1, threads=None)")
+                               : "(self, points, *, workers=-1, threads=None)";
+  const std::string what =
+      columns ? std::string("Locates the points whose coordinates are the elements of x, y") +
+                    (dims == 3 ? ", z" : "") +
+                    ", broadcast together as numpy's ufuncs do; the int8 answer has the "
+                    "broadcast shape."
+              : "Locates (M, " + std::to_string(dims) +
+                    ") points: an (M,) int8 array of INSIDE, BOUNDARY or OUTSIDE.";
+  return signedDoc(
+      name, params,
+      what +
+          " Exact for the doubles given (NaN and infinite coordinates are OUTSIDE). Runs "
+          "without the GIL, on up to `workers` threads for large batches (-1: one per "
+          "core, as scipy's workers=; threads= is its deprecated old name, 0 meaning "
+          "every core).");
 }
 
 // locate, and the same from separate coordinate arrays
 template <class Locator, class Method>
-void defineLocate(py::class_<Locator>& c) {
+void defineLocate(py::class_<Bound<Locator>>& c) {
   using Point = typename Dimension<Method>::Point;
   constexpr int dims = kDims<Point>;
+  const auto workers = py::arg("workers") = -1;
+  const auto threads = py::arg("threads") = py::none();
   c.def(
       "locate",
-      [](const Locator& l, const py::object& points, long threads) {
-        return locateRows<Locator, Point>(l, points, threads);
+      [](const Bound<Locator>& b, const py::object& points, const py::object& w,
+         const py::object& t) {
+        return locateRows<Locator, Point>(b.locator, points, workerCount(w, t));
       },
-      py::arg("points"), py::kw_only(), py::arg("threads") = 0,
-      keep("Locates (M, " + std::to_string(dims) +
-           ") points: an (M,) int8 array of INSIDE, BOUNDARY or OUTSIDE, exact for the doubles "
-           "given (NaN and infinite coordinates are OUTSIDE). Runs without the GIL, on up to "
-           "`threads` threads for large batches (0: one per core)."));
+      py::arg("points"), py::kw_only(), workers, threads, locateDoc(dims, false));
   const char* columns = Dimension<Method>::kColumns;
-  const char* doc = keep(
-      "Locates the points whose coordinates are the elements of arrays of "
-      "one shape; the int8 answer has that shape. As locate() otherwise.");
   if constexpr (dims == 2)
     c.def(
         columns,
-        [](const Locator& l, const py::object& x, const py::object& y, long threads) {
-          return locateColumns<Locator, Point>(l, {x, y}, threads);
+        [](const Bound<Locator>& b, const py::object& x, const py::object& y, const py::object& w,
+           const py::object& t) {
+          return locateColumns<Locator, Point>(b.locator, {x, y}, workerCount(w, t));
         },
-        py::arg("x"), py::arg("y"), py::kw_only(), py::arg("threads") = 0, doc);
+        py::arg("x"), py::arg("y"), py::kw_only(), workers, threads, locateDoc(dims, true));
   else
     c.def(
         columns,
-        [](const Locator& l, const py::object& x, const py::object& y, const py::object& z,
-           long threads) {
-          return locateColumns<Locator, Point>(l, {x, y, z}, threads);
+        [](const Bound<Locator>& b, const py::object& x, const py::object& y, const py::object& z,
+           const py::object& w, const py::object& t) {
+          return locateColumns<Locator, Point>(b.locator, {x, y, z}, workerCount(w, t));
         },
-        py::arg("x"), py::arg("y"), py::arg("z"), py::kw_only(), py::arg("threads") = 0, doc);
+        py::arg("x"), py::arg("y"), py::arg("z"), py::kw_only(), workers, threads,
+        locateDoc(dims, true));
 }
 
 // trace, stats, cells and the method's name
 template <class Locator, class Method>
-void defineIntrospection(py::class_<Locator>& c, Method method) {
+void defineIntrospection(py::class_<Bound<Locator>>& c, Method method) {
   using Point = typename Dimension<Method>::Point;
   c.def(
       "trace",
-      [](const Locator& l, const py::object& point, bool radii) {
+      [](const Bound<Locator>& b, const py::object& point, bool radii) {
+        const Locator& l = b.locator;
         const Point p = onePoint<Point>(point);
         if constexpr (requires { l.trace(p, TraceOptions{}); })
           return traceToPython(l.trace(p, TraceOptions{.radii = radii}));
@@ -119,18 +176,22 @@ void defineIntrospection(py::class_<Locator>& c, Method method) {
           return traceToPython(l.trace(p));
       },
       py::arg("point"), py::kw_only(), py::arg("radii") = true,
-      "What locating one point does: a dict of the cell chosen, the tests made with their "
-      "signs, and the result (as a code and as a name). radii=False runs the polar and "
-      "cube-map queries without convexloc's radius filter, as the paper describes them (the "
-      "cell's edges or faces decide); the answer is the same.");
+      signedDoc(
+          "trace", "(self, point, *, radii=True)",
+          "What locating one point does: a dict of the cell chosen, the tests made with their "
+          "signs, and the result (as a code and as a name). radii=False runs the polar and "
+          "cube-map queries without convexloc's radius filter, as the paper describes them (the "
+          "cell's edges or faces decide); the answer is the same."));
   c.def(
-      "stats", [](const Locator& l) { return statsToPython(l.stats()); },
-      "The size and shape of the subdivision: a dict (cells, entries, max_per_cell, bytes, "
-      "build_seconds, histogram, ...).");
+      "stats", [](const Bound<Locator>& b) { return statsToPython(b.locator.stats()); },
+      signedDoc("stats", "(self)",
+                "The size and shape of the subdivision: a dict (cells, entries, max_per_cell, "
+                "bytes, build_seconds, histogram, ...)."));
   c.def(
-      "cells", [](const Locator& l) { return cellsToPython(l.cells()); },
-      "The subdivision as a list of dicts, one per cell: its geometry to draw and the indices "
-      "it holds. Empty for a method without cells.");
+      "cells", [](const Bound<Locator>& b) { return cellsToPython(b.locator.cells()); },
+      signedDoc("cells", "(self)",
+                "The subdivision as a list of dicts, one per cell: its geometry to draw and the "
+                "indices it holds. Empty for a method without cells."));
   const std::string name(methodInfo(method).name);
   c.def_property_readonly_static(
       "method", [name](const py::object&) { return name; }, "the method's name");
@@ -138,25 +199,40 @@ void defineIntrospection(py::class_<Locator>& c, Method method) {
 
 // the read-only property `centre` of a locator that has one
 template <class Locator>
-void defineCentre(py::class_<Locator>& c, const char* doc) {
+void defineCentre(py::class_<Bound<Locator>>& c, const char* doc) {
   c.def_property_readonly(
-      "centre", [](const Locator& l) { return centreToPython(l.centre()); }, doc);
+      "centre", [](const Bound<Locator>& b) { return centreToPython(b.locator.centre()); }, doc);
+}
+
+// the read-only property `name`: what the locator's `get` returns
+template <class Locator, class Value>
+void locatorProperty(py::class_<Bound<Locator>>& c, const char* name,
+                     Value (Locator::*get)() const noexcept, const char* doc) {
+  c.def_property_readonly(
+      name, [get](const Bound<Locator>& b) { return (b.locator.*get)(); }, doc);
 }
 
 // The Python class for `Locator`, which implements `method`.
 template <class Locator, class Method>
-py::class_<Locator> bindLocator(py::module_& m, const char* name, Method method) {
+py::class_<Bound<Locator>> bindLocator(py::module_& m, const char* name, Method method) {
   const auto& info = methodInfo(method);
   std::string doc = std::string(info.name) + ", " + std::string(info.cost);
   if (!info.costNote.empty()) doc += " " + std::string(info.costNote);
   doc += ": " + std::string(info.summary) + ".";
-  py::class_<Locator> c(m, name, keep(doc));
+  doc +=
+      " Pickle, copy and deepcopy carry the shape and the resolution; the tables are "
+      "rebuilt on load.";
+  py::class_<Bound<Locator>> c(m, name, keep(doc));
   defineInit(c, method);
   defineLocate<Locator, Method>(c);
   defineIntrospection(c, method);
-  c.def("__repr__", [name = std::string(name)](const Locator& l) {
-    return "<convexloc." + name + " over " + std::to_string(l.stats().cells) + " cells>";
-  });
+  c.def(
+      "__repr__",
+      [name = std::string(name)](const Bound<Locator>& b) {
+        return "<convexloc." + name + " over " + std::to_string(b.locator.stats().cells) +
+               " cells>";
+      },
+      signedDoc("__repr__", "(self, /)", "Return repr(self)."));
   return c;
 }
 

@@ -9,11 +9,10 @@ void bindLocators3D(py::module_& m) {
   defineCentre(walk, "(x, y, z) strictly inside, or None (then every query tests all faces)");
   auto cubemap = bindLocator<CubemapLocator>(m, "CubemapLocator", Method3D::Cubemap);
   defineCentre(cubemap, "(x, y, z): the centre of the cube map, or None (then no cells)");
-  cubemap
-      .def_property_readonly("resolution", &CubemapLocator::resolution,
-                             "G: the base grid is G x G on each cube face (0: no cells)")
-      .def_property_readonly("cube_half_size", &CubemapLocator::cubeHalfSize,
-                             "half the side of the cube around the centre that cells() draws on");
+  locatorProperty(cubemap, "resolution", &CubemapLocator::resolution,
+                  "G: the base grid is G x G on each cube face (0: no cells)");
+  locatorProperty(cubemap, "cube_half_size", &CubemapLocator::cubeHalfSize,
+                  "half the side of the cube around the centre that cells() draws on");
 }
 
 }  // namespace convexloc::python

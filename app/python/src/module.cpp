@@ -3,6 +3,15 @@
 #include "convexloc/batch.hpp"
 #include "errors.hpp"
 
+#include <list>
+#include <string>
+
+const char* convexloc::python::signedDoc(const char* name, const char* params,
+                                         const std::string& doc) {
+  static std::list<std::string> kept;  // pybind11 keeps docstrings by pointer
+  return kept.emplace_back(std::string(name) + params + "\n--\n\n" + doc).c_str();
+}
+
 PYBIND11_MODULE(_core, m) {
   namespace py = pybind11;
   namespace cl = convexloc;
@@ -11,12 +20,18 @@ PYBIND11_MODULE(_core, m) {
   m.attr("INSIDE") = static_cast<int>(cl::Location::Inside);
   m.attr("BOUNDARY") = static_cast<int>(cl::Location::Boundary);
   m.attr("OUTSIDE") = static_cast<int>(cl::Location::Outside);
+  using convexloc::python::signedDoc;
   convexloc::python::registerErrors(m);
   convexloc::python::bindShapes(m);
+  py::options options;  // from here on the docstrings lead with text signatures
+  options.disable_function_signatures();
   convexloc::python::bindLocators2D(m);
   convexloc::python::bindLocators3D(m);
   convexloc::python::bindConveniences(m);
   m.def("set_vector_batches", &cl::setVectorBatches, py::arg("enabled"),
-        "Whether batches may use the AVX2 code where the CPU has it (answers are the same).");
-  m.def("vector_batches", &cl::vectorBatches, "Whether batches use the AVX2 code.");
+        signedDoc("set_vector_batches", "(enabled)",
+                  "Whether batches may use the AVX2 code where the CPU has it (answers are the "
+                  "same)."));
+  m.def("vector_batches", &cl::vectorBatches,
+        signedDoc("vector_batches", "()", "Whether batches use the AVX2 code."));
 }

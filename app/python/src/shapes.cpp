@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -22,6 +23,7 @@
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/text_reader.hpp"
 #include "errors.hpp"
+#include "shape_protocols.hpp"
 
 namespace convexloc::python {
 
@@ -40,14 +42,6 @@ py::array_t<std::int64_t> triangleArray(std::span<const ConvexPolyhedron::Triang
 
 // === Arrays in
 
-// a vertex index of face `f`, checked to fit the 32-bit indices of a mesh
-std::uint32_t vertexIndex(long long value, std::size_t f) {
-  if (value < 0 || value > std::numeric_limits<std::uint32_t>::max())
-    throw py::value_error("faces: face " + std::to_string(f) + " has vertex index " +
-                          std::to_string(value) + ", which no vertex has");
-  return static_cast<std::uint32_t>(value);
-}
-
 // faces given as an (F, k) integer array: every face has k vertices
 bool addFaceRows(MeshData& mesh, const py::object& faces) {
   py::array rows;
@@ -63,7 +57,8 @@ bool addFaceRows(MeshData& mesh, const py::object& faces) {
   const auto width = static_cast<std::size_t>(ints.shape(1));
   std::vector<std::uint32_t> face(width);
   for (std::size_t f = 0; f < count; ++f) {
-    for (std::size_t k = 0; k < width; ++k) face[k] = vertexIndex(ints.data()[f * width + k], f);
+    for (std::size_t k = 0; k < width; ++k)
+      face[k] = faceVertex(py::int_(ints.data()[f * width + k]), mesh.vertices.size(), f);
     mesh.addFace(face);
   }
   return true;
@@ -79,11 +74,7 @@ void addFaceLists(MeshData& mesh, const py::object& faces) {
       if (!PyIndex_Check(index.ptr()))
         throw py::type_error("faces: face " + std::to_string(f) + " holds " +
                              std::string(py::repr(index)) + ", not a vertex index");
-      const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(index.ptr()));
-      if (!number) throw py::error_already_set();
-      int overflow = 0;
-      const long long value = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
-      face.push_back(vertexIndex(overflow ? -1 : value, f));
+      face.push_back(faceVertex(index, mesh.vertices.size(), f));
     }
     mesh.addFace(face);
     ++f;
@@ -141,15 +132,21 @@ ConvexPolyhedron readPolyhedron(const py::object& pathArg, bool hull) {
 
 // === Classes
 
-// a span a shape holds, as a numpy array (a copy)
+// a span a shape holds, as a read-only numpy array: a view of the coordinates (kept alive by
+// the shape `owner`), a copy of the indices (as int64)
 template <class Item>
-py::array arrayOf(std::span<const Item> items) {
-  if constexpr (std::is_same_v<Item, std::uint32_t>)
-    return indexArray(items);
-  else if constexpr (std::is_same_v<Item, ConvexPolyhedron::Triangle>)
-    return triangleArray(items);
-  else
-    return coordinateArray<Item>(items);
+py::array arrayOf(std::span<const Item> items, py::handle owner) {
+  if constexpr (std::is_same_v<Item, Vec2> || std::is_same_v<Item, Vec3>) {
+    return coordinateView(&items.data()->x, items.size(), kDims<Item>, owner);
+  } else {
+    py::array copy;
+    if constexpr (std::is_same_v<Item, std::uint32_t>)
+      copy = indexArray(items);
+    else
+      copy = triangleArray(items);
+    copy.attr("setflags")(py::arg("write") = false);
+    return copy;
+  }
 }
 
 // the read-only property `name`: what `get` returns, as an array
@@ -157,7 +154,17 @@ template <class Shape, class Item>
 void arrayProperty(py::class_<Shape>& c, const char* name,
                    std::span<const Item> (Shape::*get)() const noexcept, const char* doc) {
   c.def_property_readonly(
-      name, [get](const Shape& s) { return arrayOf((s.*get)()); }, doc);
+      name,
+      [get](const py::object& self) { return arrayOf((self.cast<const Shape&>().*get)(), self); },
+      doc);
+}
+
+// the history property `name` (slot `slot` of the pickled history): an index array
+template <class Shape>
+void indexHistory(py::class_<Shape>& c, const char* name, std::size_t slot,
+                  std::span<const std::uint32_t> (Shape::*get)() const noexcept, const char* doc) {
+  historyProperty(
+      c, name, slot, [get](const Shape& s) { return arrayOf((s.*get)(), {}); }, doc);
 }
 
 // the read-only property `bounds`: the exact box as ((lo...), (hi...))
@@ -173,30 +180,44 @@ void boundsProperty(py::class_<Shape>& c, const char* doc) {
 
 void bindPolygon(py::module_& m) {
   using P = ConvexPolygon;
+  py::options options;  // the docstrings lead with text signatures instead
+  options.disable_function_signatures();
   py::class_<P> c(m, "Polygon",
                   "A strictly convex polygon, validated once: counter-clockwise, repeated and "
-                  "collinear vertices dropped.");
-  c.def(py::init([](const py::object& vertices) {
-          const py::array points = pointArray(vertices, 2, "vertices");
-          const std::span<const Vec2> read = pointsOf<Vec2>(points);
-          py::gil_scoped_release released;
-          return P(read);
-        }),
-        py::arg("vertices"),
-        "Validates the (N, 2) vertices (either orientation). Raises GeometryError naming the "
-        "witness: not convex, fewer than 3 distinct vertices, a non-finite coordinate.");
-  arrayProperty(c, "vertices", &P::vertices, "(N, 2) float64: the vertices, counter-clockwise");
-  arrayProperty(c, "source_index", &P::sourceIndex, "int64: each vertex's index in the input");
+                  "collinear vertices dropped. Immutable: its arrays are read-only. Two polygons "
+                  "are equal when they have the same vertices in the same counter-clockwise "
+                  "order, from any start; pickle, copy and deepcopy keep the exact doubles.",
+                  py::dynamic_attr());
+  c.def(py::init(&polygonFrom), py::arg("vertices"),
+        signedDoc("__init__", "(self, vertices)",
+                  "Validates the (N, 2) vertices (either orientation), or the exterior ring of "
+                  "an object with a Polygon __geo_interface__ (a Shapely polygon; holes are a "
+                  "GeometryError). Raises GeometryError naming the witness: not convex, fewer "
+                  "than 3 distinct vertices, a non-finite coordinate."));
+  c.def_static("hull", &polygonHull, py::arg("points"),
+               signedDoc("hull", "(points)",
+                         "The exact convex hull of (M, 2) points as a Polygon: every point "
+                         "inside or on it, every vertex one of the points (exact predicates). "
+                         "GeometryError when the points are fewer than 3, not finite or all on "
+                         "one line."));
+  arrayProperty(c, "vertices", &P::vertices,
+                "(N, 2) float64, read-only: the vertices, counter-clockwise");
+  indexHistory(c, "source_index", 0, &P::sourceIndex, "int64: each vertex's index in the input");
   boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
-  c.def("__len__", &P::size, "the number of vertices (and of edges)");
+  c.def("__len__", &P::size,
+        signedDoc("__len__", "(self, /)", "the number of vertices (and of edges)"));
   c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
-  c.def_property_readonly("dropped_count", &P::droppedCount,
-                          "input vertices dropped as repeated or collinear");
-  c.def_property_readonly("was_clockwise", &P::wasClockwise,
-                          "whether the input was clockwise and got reversed");
-  c.def("__repr__", [](const P& p) {
-    return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
-  });
+  historyProperty(c, "dropped_count", 1, std::mem_fn(&P::droppedCount),
+                  "input vertices dropped as repeated or collinear");
+  historyProperty(c, "was_clockwise", 2, std::mem_fn(&P::wasClockwise),
+                  "whether the input was clockwise and got reversed");
+  defineShapeProtocols(c);
+  c.def(
+      "__repr__",
+      [](const P& p) {
+        return "<convexloc.Polygon with " + std::to_string(p.size()) + " vertices>";
+      },
+      signedDoc("__repr__", "(self, /)", "Return repr(self)."));
 }
 
 // the constructor from a mesh, and the hull of a cloud
@@ -207,33 +228,42 @@ void definePolyhedronMakers(py::class_<ConvexPolyhedron>& c) {
           return ConvexPolyhedron(mesh);
         }),
         py::arg("vertices"), py::arg("faces"),
-        "Validates the mesh of (V, 3) vertices and faces (an (F, k) integer array or "
-        "sequences of 0-based vertex indices; faces of more than 3 vertices are triangulated). "
-        "Raises GeometryError naming the witness.");
+        signedDoc("__init__", "(self, vertices, faces)",
+                  "Validates the mesh of (V, 3) vertices and faces (an (F, k) integer array or "
+                  "sequences of 0-based vertex indices; faces of more than 3 vertices are "
+                  "triangulated). Raises GeometryError naming the witness."));
   c.def_static(
       "hull",
       [](const py::object& points) {
         const py::array cloud = pointArray(points, 3, "points");
         const std::span<const Vec3> read = pointsOf<Vec3>(cloud);
+        requireHullPoints(read.size());
         py::gil_scoped_release released;
         return ConvexPolyhedron::hullOf(read);
       },
       py::arg("points"),
-      "The convex hull of (M, 3) points (Qhull), validated exactly. Raises GeometryError when "
-      "the points are fewer than 4, not finite or coplanar.");
+      signedDoc("hull", "(points)",
+                "The exact convex hull of (M, 3) points: every point inside or on it. Raises "
+                "GeometryError when the points are fewer than 4, not finite or coplanar."));
 }
 
 void bindPolyhedron(py::module_& m) {
   using P = ConvexPolyhedron;
+  py::options options;  // the docstrings lead with text signatures instead
+  options.disable_function_signatures();
   py::class_<P> c(m, "Polyhedron",
                   "A closed convex polyhedron, validated once, as triangles counter-clockwise "
-                  "seen from outside.");
+                  "seen from outside. Immutable: its arrays are read-only. Two polyhedra are "
+                  "equal when they have the same vertices and the same triangles, in any order; "
+                  "pickle, copy and deepcopy keep the exact doubles.",
+                  py::dynamic_attr());
   definePolyhedronMakers(c);
-  arrayProperty(c, "vertices", &P::vertices, "(V, 3) float64: the vertices the triangles use");
+  arrayProperty(c, "vertices", &P::vertices,
+                "(V, 3) float64, read-only: the vertices the triangles use");
   arrayProperty(c, "triangles", &P::triangles, "(F, 3) int64: counter-clockwise from outside");
   arrayProperty(c, "neighbours", &P::neighbours, "(F, 3) int64: [t, k] is across edge k of t");
-  arrayProperty(c, "source_face", &P::sourceFace, "int64: each triangle's input face");
-  arrayProperty(c, "source_vertex", &P::sourceVertex, "int64: each vertex's index in the input");
+  indexHistory(c, "source_face", 0, &P::sourceFace, "int64: each triangle's input face");
+  indexHistory(c, "source_vertex", 1, &P::sourceVertex, "int64: each vertex's index in the input");
   boundsProperty(c, "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact");
   c.def_property_readonly(
       "centre", [](const P& p) { return centreToPython(p.centre()); },
@@ -242,12 +272,16 @@ void bindPolyhedron(py::module_& m) {
   c.def_property_readonly("vertex_count", &P::vertexCount, "the number of vertices");
   c.def_property_readonly("volume", &P::volume, "the volume (for display)");
   c.def_property_readonly("area", &P::area, "the surface area (for display)");
-  c.def_property_readonly("was_inverted", &P::wasInverted,
-                          "whether the input was clockwise from outside and got reversed");
-  c.def("__repr__", [](const P& p) {
-    return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
-           std::to_string(p.vertexCount()) + " vertices>";
-  });
+  historyProperty(c, "was_inverted", 2, std::mem_fn(&P::wasInverted),
+                  "whether the input was clockwise from outside and got reversed");
+  defineShapeProtocols(c);
+  c.def(
+      "__repr__",
+      [](const P& p) {
+        return "<convexloc.Polyhedron with " + std::to_string(p.faceCount()) + " triangles, " +
+               std::to_string(p.vertexCount()) + " vertices>";
+      },
+      signedDoc("__repr__", "(self, /)", "Return repr(self)."));
 }
 
 }  // namespace

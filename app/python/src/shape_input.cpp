@@ -1,0 +1,102 @@
+// convexloc Python module — shapes from Python values: a polygon from vertices or from any
+// object with __geo_interface__ (Shapely's polygons among them), the exact 2D hull of points,
+// and the checks that name the user's own numbers before core sees them.
+#include <pybind11/numpy.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "convexloc/generate2d.hpp"
+#include "errors.hpp"
+
+namespace convexloc::python {
+
+namespace {
+
+// a GeometryError about a shape built in memory (no file to name)
+[[noreturn]] void geometryError(const std::string& problem) {
+  throw FileFailure(ErrorKind::Geometry, "", 0, problem);
+}
+
+// the exterior ring of a GeoJSON-like Polygon mapping, without its closing repeat
+py::object exteriorRing(const py::object& geo) {
+  const py::object kind = geo.attr("get")("type");
+  if (kind.is_none() || std::string(py::str(kind)) != "Polygon")
+    throw py::type_error("a Polygon needs a polygon's __geo_interface__, got type " +
+                         std::string(py::repr(kind)));
+  const py::list rings(geo.attr("get")("coordinates", py::list()));
+  if (rings.empty()) geometryError("the polygon's __geo_interface__ has no exterior ring");
+  if (rings.size() > 1)
+    geometryError("the polygon has " + std::to_string(rings.size() - 1) +
+                  " interior ring(s): a convex polygon has no holes");
+  py::list ring(rings[0]);
+  if (ring.size() > 1 && py::bool_(ring[0].equal(ring[ring.size() - 1]))) {
+    py::list open;
+    for (std::size_t k = 0; k + 1 < ring.size(); ++k) open.append(ring[k]);
+    ring = open;
+  }
+  return ring;
+}
+
+}  // namespace
+
+ConvexPolygon polygonFrom(const py::object& vertices) {
+  py::object source = vertices;
+  if (py::hasattr(vertices, "__geo_interface__"))
+    source = exteriorRing(vertices.attr("__geo_interface__"));
+  else if (py::isinstance<py::dict>(vertices))
+    source = exteriorRing(vertices);
+  const py::array points = pointArray(source, 2, "vertices");
+  const std::span<const Vec2> read = pointsOf<Vec2>(points);
+  py::gil_scoped_release released;
+  return ConvexPolygon(read);
+}
+
+ConvexPolygon polygonHull(const py::object& pointsArg) {
+  const py::array points = pointArray(pointsArg, 2, "points");
+  const std::span<const Vec2> read = pointsOf<Vec2>(points);
+  for (std::size_t i = 0; i < read.size(); ++i)
+    if (!std::isfinite(read[i].x) || !std::isfinite(read[i].y))
+      geometryError("points[" + std::to_string(i) + "] = (" +
+                    std::string(py::repr(py::float_(read[i].x))) + ", " +
+                    std::string(py::repr(py::float_(read[i].y))) + ") is not finite");
+  std::optional<std::vector<Vec2>> hull;
+  {
+    py::gil_scoped_release released;
+    hull.emplace(convexHull(read));
+  }
+  if (hull->size() < 3) {
+    const std::string count =
+        std::to_string(read.size()) + (read.size() == 1 ? " point" : " points");
+    if (read.size() < 3)
+      geometryError("a hull needs at least 3 points not on one line, got " + count);
+    geometryError("the hull of the " + count + " has no area: they all lie on one line");
+  }
+  py::gil_scoped_release released;
+  return ConvexPolygon(*hull);
+}
+
+void requireHullPoints(std::size_t count) {
+  if (count < 4)
+    geometryError("a hull needs at least 4 points not in one plane, got " + std::to_string(count) +
+                  (count == 1 ? " point" : " points"));
+}
+
+std::uint32_t faceVertex(const py::handle& index, std::size_t vertexCount, std::size_t face) {
+  const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(index.ptr()));
+  if (!number) throw py::error_already_set();
+  int overflow = 0;
+  const long long value = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
+  if (overflow != 0 || value < 0 || static_cast<unsigned long long>(value) >= vertexCount)
+    geometryError("face " + std::to_string(face) + " refers to vertex " +
+                  std::string(py::str(number)) + ", but " +
+                  (vertexCount == 0 ? std::string("there are no vertices")
+                                    : "the vertices are 0 to " + std::to_string(vertexCount - 1)));
+  return static_cast<std::uint32_t>(value);
+}
+
+}  // namespace convexloc::python
