@@ -7,12 +7,12 @@
 #include <string_view>
 #include <vector>
 
-#include "logic/colour.hpp"
-#include "logic/interaction.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/text.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "logic/narration/text.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;

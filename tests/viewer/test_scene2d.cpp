@@ -6,9 +6,9 @@
 #include <string>
 
 #include "convexloc/generate2d.hpp"
-#include "logic/model.hpp"
-#include "logic/presets.hpp"
-#include "logic/scene2d.hpp"
+#include "logic/app/model.hpp"
+#include "logic/scene/presets.hpp"
+#include "logic/scene/scene2d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;

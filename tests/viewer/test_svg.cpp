@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "convexloc/generate2d.hpp"
-#include "logic/camera2d.hpp"
-#include "logic/legend.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/scene2d.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/svg_writer.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/app/legend.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "writers/svg_writer.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;

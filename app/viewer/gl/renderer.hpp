@@ -12,10 +12,10 @@
 #include "convexloc/geometry.hpp"
 #include "gl/gl.hpp"
 #include "gl/shader.hpp"
-#include "logic/camera2d.hpp"
-#include "logic/colour.hpp"
-#include "logic/draw_list.hpp"
-#include "logic/no_copy.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/draw_list.hpp"
+#include "logic/base/no_copy.hpp"
 
 namespace convexloc::viewer {
 

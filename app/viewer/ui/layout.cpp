@@ -12,14 +12,14 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "logic/fit_room.hpp"
-#include "logic/label_layout.hpp"
-#include "logic/text.hpp"
+#include "logic/view/fit_room.hpp"
+#include "logic/view/label_layout.hpp"
+#include "logic/narration/text.hpp"
 #include "ui/lecture_panel.hpp"
 #include "ui/panels2d.hpp"
 #include "ui/panels3d.hpp"
 #include "ui/steps_panel.hpp"
-#include "ui/svg_export.hpp"
+#include "logic/view/scene_labels.hpp"
 #include "ui/scaling_panel.hpp"
 #include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"
@@ -373,7 +373,7 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
 
 namespace {
 
-// the Steps window's strip, and the legend's with it (logic/fit_room.hpp)
+// the Steps window's strip, and the legend's with it (logic/view/fit_room.hpp)
 void leaveRoomForSteps(ScreenRect& a, const UiState& ui, ScreenRect full, double aspect) {
   full.hi.y -= ui.captionHeight;
   CornerBoxes boxes;

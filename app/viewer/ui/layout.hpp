@@ -8,8 +8,8 @@
 
 #include "gl/renderer.hpp"
 #include "gl/scene_view.hpp"
-#include "logic/actions.hpp"
-#include "logic/model.hpp"
+#include "logic/app/actions.hpp"
+#include "logic/app/model.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "logic/figures.hpp"
+#include "logic/teach/figures.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {

@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <string>
 
-#include "logic/actions.hpp"
-#include "logic/camera2d.hpp"
-#include "logic/model.hpp"
+#include "logic/app/actions.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/app/model.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

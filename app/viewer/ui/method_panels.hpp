@@ -16,7 +16,7 @@
 #include <imgui.h>
 
 #include "convexloc/methods.hpp"
-#include "logic/text.hpp"
+#include "logic/narration/text.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {

@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "logic/lines2d.hpp"
+#include "logic/dual/lines2d.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"

@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "logic/dual_view3d.hpp"
+#include "logic/dual/dual_view3d.hpp"
 #include "ui/method_panels.hpp"
 #include "ui/views_panel.hpp"
 #include "ui/widgets.hpp"

@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "logic/text.hpp"
+#include "logic/narration/text.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {

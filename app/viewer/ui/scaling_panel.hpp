@@ -4,8 +4,8 @@
 // and --why-svg, the same measurement without a window.
 #pragma once
 
-#include "logic/model.hpp"
-#include "logic/options.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

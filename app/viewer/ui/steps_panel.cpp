@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "logic/label_layout.hpp"
+#include "logic/view/label_layout.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {

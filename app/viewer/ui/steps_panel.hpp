@@ -1,9 +1,9 @@
 // convexloc-viewer — the Steps window: the placed point's query told step by step (core's
-// trace, as logic/steps.hpp tells it), the current step highlighted in the list and its
+// trace, as logic/narration/steps.hpp tells it), the current step highlighted in the list and its
 // line marked in the method's pseudo-code, Previous / Next, Play / Pause at a speed.
 #pragma once
 
-#include "logic/model.hpp"
+#include "logic/app/model.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

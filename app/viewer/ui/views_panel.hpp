@@ -3,7 +3,7 @@
 // slider) and the button that opens Why O(1).
 #pragma once
 
-#include "logic/model.hpp"
+#include "logic/app/model.hpp"
 
 namespace convexloc::viewer {
 

@@ -1,0 +1,144 @@
+// convexloc-viewer — the build, animated.
+#include "logic/teach/build_anim.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "logic/view/camera2d.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/scene/scene3d.hpp"
+#include "logic/narration/text.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// a convex outline filled as a fan
+void fan(const std::vector<Vec2>& outline, Rgba c, DrawList& out) {
+  for (std::size_t i = 1; i + 1 < outline.size(); ++i)
+    out.triangle(at2(toGlm(outline[0])), at2(toGlm(outline[i])), at2(toGlm(outline[i + 1])), c);
+}
+
+// the mean of an outline's corners (inside it: the outline is convex)
+glm::dvec2 middleOf(const std::vector<Vec2>& outline) {
+  glm::dvec2 s{0.0};
+  for (const Vec2 p : outline) s += toGlm(p);
+  return outline.empty() ? s : s / static_cast<double>(outline.size());
+}
+
+}  // namespace
+
+std::vector<std::size_t> BuildOrder::countsAt(std::size_t k) const {
+  std::vector<std::size_t> counts(cellCount_, 0);
+  for (std::size_t e = 0; e < std::min(k, steps()); ++e)
+    for (const std::size_t c : cellsOfEdge_[e]) ++counts[c];
+  return counts;
+}
+
+void BuildPlayback::show(std::size_t k, std::size_t steps) {
+  step = std::min(k, steps);
+  playing = false;
+  carry = 0.0;
+  ++version;
+}
+
+void BuildPlayback::advance(double seconds, std::size_t steps) {
+  if (!active || !playing) return;
+  carry += seconds * edgesPerSecond;
+  const auto whole = static_cast<std::size_t>(carry);
+  if (whole == 0) return;
+  carry -= static_cast<double>(whole);
+  step = std::min(step + whole, steps);
+  if (step == steps) playing = false;
+  ++version;
+}
+
+void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal, DrawList& out) {
+  const std::vector<Cell2D>& cells = scene.cells();
+  const ConvexPolygon& poly = scene.polygon();
+  if (cells.empty()) return;
+  const BuildOrder order(cells, poly.size());
+  step = std::min(step, order.steps());
+  const std::vector<std::size_t> counts = order.countsAt(step);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool crowded = counts[c] > kCrowdedCell;
+    if (counts[c] > 0) fan(cells[c].outline, cellTint(pal, counts[c], 0, crowded), out);
+    if (crowded) out.marker(at2(middleOf(cells[c].outline)), pal.crowded, 9.0f, MarkerShape::Cross);
+  }
+  if (step == 0) return;
+  // the edge just added, and the cells that list it, flashing
+  const std::size_t e = step - 1;
+  for (const std::size_t c : order.cellsOf(e)) {
+    const std::vector<Vec2>& o = cells[c].outline;
+    fan(o, withAlpha(pal.hoverEdge, 0.22f), out);
+    for (std::size_t i = 0; i < o.size(); ++i)
+      out.segment(at2(toGlm(o[i])), at2(toGlm(o[(i + 1) % o.size()])), pal.hoverEdge, 2.0f);
+  }
+  const glm::dvec2 a = toGlm(poly.edgeStart(e)), b = toGlm(poly.edgeEnd(e));
+  out.segment(at2(a), at2(b), pal.hoverEdge, 5.0f);
+  std::string text = numbered("e", e);
+  text.append(" added: ").append(std::to_string(step)).append(" of ");
+  text.append(std::to_string(order.steps())).append(" edges");
+  // written outside the edge, along its outward normal (y down on the screen), far enough
+  // that the text's box (about 7 by 16 pixels a character) clears the edge
+  const glm::dvec2 d = b - a;
+  const double len = glm::length(d);
+  const glm::vec2 n = len > 0.0
+                          ? glm::vec2(static_cast<float>(d.y / len), static_cast<float>(d.x / len))
+                          : glm::vec2(0.0f, -1.0f);
+  const float reach =
+      12.0f + std::abs(n.x) * 3.6f * static_cast<float>(text.size()) + std::abs(n.y) * 9.0f;
+  out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, n * reach);
+}
+
+// a cube-map cell's square, filled
+void square(const Cell3D& c, Rgba colour, DrawList& out) {
+  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[1]), toGlm(c.corners[2]), colour);
+  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[2]), toGlm(c.corners[3]), colour);
+}
+
+void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces, const Palette& pal,
+                      DrawList& out) {
+  const std::vector<Cell3D>& cells = scene.cells();
+  const ConvexPolyhedron& solid = scene.polyhedron();
+  if (cells.empty()) return;
+  const BuildOrder order(cells, solid.faceCount());
+  step = std::min(step, order.steps());
+  const std::vector<std::size_t> counts = order.countsAt(step);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool crowded = counts[c] > kCrowdedCell3D;
+    const glm::dvec3 middle = 0.5 * (toGlm(cells[c].corners[0]) + toGlm(cells[c].corners[2]));
+    if (counts[c] > 0 && (farFaces >> cells[c].cubeFace & 1u))
+      square(cells[c], cellTint(pal, counts[c], 0, crowded), out);
+    if (crowded) out.marker(middle, pal.crowded, 9.0f, MarkerShape::Cross);
+  }
+  if (step == 0) return;
+  // the face just added, and the cells that list it, outlined
+  const std::size_t f = step - 1;
+  for (const std::size_t c : order.cellsOf(f)) {
+    square(cells[c], withAlpha(pal.hoverEdge, 0.22f), out);
+    for (int k = 0; k < 4; ++k)
+      out.segment(toGlm(cells[c].corners[k]), toGlm(cells[c].corners[(k + 1) % 4]), pal.hoverEdge,
+                  2.0f);
+  }
+  const auto& t = solid.triangles()[f];
+  const glm::dvec3 a = toGlm(solid.vertices()[t[0]]), b = toGlm(solid.vertices()[t[1]]),
+                   c = toGlm(solid.vertices()[t[2]]);
+  out.triangle(a, b, c, withAlpha(pal.hoverEdge, 0.6f));
+  out.segment(a, b, pal.hoverEdge, 3.0f);
+  out.segment(b, c, pal.hoverEdge, 3.0f);
+  out.segment(c, a, pal.hoverEdge, 3.0f);
+  std::string text = numbered("f", f);
+  text.append(" added: ").append(std::to_string(step)).append(" of ");
+  text.append(std::to_string(order.steps())).append(" faces");
+  out.label((a + b + c) / 3.0, std::move(text), pal.hoverEdge, {0.0f, -22.0f});
+}
+
+std::size_t buildStepCount(const Scene2D& scene) {
+  return scene.cells().empty() ? 0 : scene.polygon().size();
+}
+
+std::size_t buildStepCount(const Scene3D& scene) {
+  return scene.cells().empty() ? 0 : scene.polyhedron().faceCount();
+}
+
+}  // namespace convexloc::viewer
