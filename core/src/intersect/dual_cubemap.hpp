@@ -1,5 +1,5 @@
 // convexloc (internal) — the cube map of a polyhedron's dual, proposing a plane's extreme
-// vertices in O(1). The argument heads plane_dual.cpp.
+// vertices in O(1). The argument heads dual_cubemap.cpp.
 #pragma once
 
 #include <bit>
@@ -71,8 +71,6 @@ class DualCubemap3D {
   const CubemapLocator* locator() const noexcept { return cube_ ? &*cube_ : nullptr; }
   std::size_t dualVertices() const noexcept { return dualVertices_; }
   std::size_t dualFaces() const noexcept { return dualFaces_; }
-  // the direction grid's cells per side on each cube face
-  std::uint32_t gridSide() const noexcept { return side_; }
   // per face of the dual, the vertex of P farthest along its middle direction (the face of
   // P* that vertex is): what the viewer's dual view names; empty without a dual
   const std::vector<std::uint32_t>& labels() const noexcept { return labels_; }

@@ -11,11 +11,12 @@
 //   - the cube map of Q, Qhull's hull of the unit outward face normals (the dual itself),
 //     which lists per cell the faces of Q the cell's rays may leave through: for `info`, the
 //     viewer and the trace (how many faces a plane's cells list);
-//   - the direction grid, a cube map of directions with side g per cube face and no lists:
+//   - the direction grid, a cube map of directions with side g per cube face and no lists,
+//     its cells found and numbered as the cube map's base cells (cubemap/index.hpp):
 //     each cell proposes the vertex of P farthest along the cell's middle direction (the face
 //     of Q that direction's ray leaves through, found at build time by a floating-point climb
 //     from the previous cell's vertex) and holds a copy of that vertex's star record.
-// A star record (plane_dual.hpp) is all a climb reads of a vertex: the vertex and its
+// A star record (dual_cubemap.hpp) is all a climb reads of a vertex: the vertex and its
 // neighbours' coordinates, and where each neighbour's own record lies; one per vertex, laid
 // out on cache lines. A cell's copy (four cache lines, degree 8 at most; a vertex of higher
 // degree is found through its index instead) makes the proposal's star the one read that
@@ -36,7 +37,7 @@
 // are within a few moves of the extremes (fine surfaces, as above); where they are not (a
 // polyhedron whose vertex cones differ in size by orders of magnitude, or with vertices of
 // very high degree) the climb is longer, O(V) at worst.
-#include "intersect/plane_dual.hpp"
+#include "intersect/dual_cubemap.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -48,6 +49,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/table.hpp"
+#include "cubemap/index.hpp"
 
 namespace convexloc::detail {
 
@@ -118,40 +120,6 @@ std::uint32_t climbAlong(const VertexGraph& graph, const std::vector<Vec3>& v, V
     at = best;
   }
   return at;
-}
-
-// the cell of direction w on a grid of side g per cube face: the face of w's dominant axis
-// (and its sign), then w's other two coordinates over the dominant one's magnitude, each in
-// [-1, 1], cut into g; -1 when w is zero or not finite
-std::int64_t gridCell(Vec3 w, std::uint32_t g) noexcept {
-  const double ax = std::fabs(w.x), ay = std::fabs(w.y), az = std::fabs(w.z);
-  int axis = 2;
-  double major = w.z, u = w.x, v = w.y;
-  if (ax >= ay && ax >= az)
-    axis = 0, major = w.x, u = w.y, v = w.z;
-  else if (ay >= az)
-    axis = 1, major = w.y, u = w.z, v = w.x;
-  const double m = std::fabs(major);
-  if (!(m > 0) || !(ax + ay + az < std::numeric_limits<double>::infinity())) return -1;
-  const double half = 0.5 * g;
-  auto slot = [&](double c) {
-    return std::min(g - 1, static_cast<std::uint32_t>((c / m + 1) * half));
-  };
-  const std::int64_t face = 2 * axis + (major < 0 ? 1 : 0);
-  return (face * g + slot(u)) * g + slot(v);
-}
-
-// the direction through the centre of grid cell `c` (the inverse of gridCell)
-Vec3 gridDirection(std::size_t c, std::uint32_t g) {
-  const std::size_t face = c / (std::size_t{g} * g), i = c / g % g, j = c % g;
-  const double u = (2.0 * static_cast<double>(i) + 1) / g - 1;
-  const double v = (2.0 * static_cast<double>(j) + 1) / g - 1;
-  const double major = face % 2 ? -1.0 : 1.0;
-  switch (face / 2) {
-    case 0: return {major, u, v};
-    case 1: return {v, major, u};
-    default: return {u, v, major};
-  }
 }
 
 // The grid's side for a polyhedron of n vertices: about 2 cells per vertex, so a cell is about
@@ -238,7 +206,7 @@ DualCubemap3D::DualCubemap3D(const ConvexPolyhedron& polyhedron, const VertexGra
   grid_.assign(cells * kCellWords, 0);
   std::uint32_t at = 0;
   for (std::size_t c = 0; c < cells; ++c) {
-    at = climbAlong(graph, scaled, gridDirection(c, side_), at);
+    at = climbAlong(graph, scaled, cubemap::cellDirection(c, side_), at);
     std::uint64_t* cell = grid_.data() + c * kCellWords;
     const std::uint64_t* from = records_.data() + std::size_t{recordOf[at]} * kRecordWords;
     const std::size_t words =
@@ -272,8 +240,8 @@ Vec3 DualCubemap3D::aim(Vec3 q1, Vec3 q2, Vec3 q3) noexcept {
 bool DualCubemap3D::cells(Vec3 q1, Vec3 q2, Vec3 q3, std::int64_t& up,
                           std::int64_t& down) const noexcept {
   const Vec3 w = aim(q1, q2, q3);
-  up = gridCell(w, side_);
-  down = gridCell({-w.x, -w.y, -w.z}, side_);
+  up = cubemap::directionCell(w, side_);
+  down = cubemap::directionCell({-w.x, -w.y, -w.z}, side_);
   return up >= 0 && down >= 0;
 }
 
