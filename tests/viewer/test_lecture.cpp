@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "logic/teach/figures.hpp"
 #include "logic/app/lecture.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
+#include "logic/draw/y_gap.hpp"
 #include "logic/narration/steps.hpp"
-#include "logic/teach/y_gap.hpp"
+#include "logic/teach/figures.hpp"
 #include "ui/ui_state.hpp"
 
 namespace cv = convexloc::viewer;

@@ -282,7 +282,7 @@ TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
 TEST(Model, AskedViewReplacesTheFitOnce) {
   cv::Model m;
   cv::Options o;
-  o.view = convexloc::Vec3{1e9, -1e9, 1e-6};
+  o.view = cv::AskedView{{1e9, -1e9}, 1e-6};
   m.apply(o);
   m.camera2d.setViewport({1000.0, 800.0});
   const cv::ScreenRect area{{200.0, 0.0}, {1000.0, 800.0}};

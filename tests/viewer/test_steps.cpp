@@ -14,10 +14,10 @@
 #include "convexloc/locate3d.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
-#include "logic/narration/steps.hpp"
+#include "logic/base/format.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/draw/structure3d.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/narration/steps.hpp"
 
 namespace cv = convexloc::viewer;
 using namespace convexloc;

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "logic/base/no_copy.hpp"
+#include "gl/no_copy.hpp"
 #include "logic/app/options.hpp"
 
 struct GLFWwindow;

@@ -11,10 +11,11 @@
 
 #include <imgui.h>
 
-#include "logic/base/colour.hpp"
 #include "logic/app/legend.hpp"
 #include "logic/app/model.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/format.hpp"
+#include "logic/narration/steps.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "ui/lecture_panel.hpp"
+#include "ui/panels/lecture_panel.hpp"
 #include "writers/screenshot.hpp"
 #include "writers/svg_export.hpp"
 

@@ -4,9 +4,9 @@
 #include <imgui.h>
 
 #include "logic/app/legend.hpp"
-#include "writers/svg_writer.hpp"
-#include "ui/layout.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
+#include "writers/svg_writer.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -81,8 +81,7 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const std::string&
   s.textMuted = pal.textMuted;
   if (model.settings.showLegend) {
     s.legend = legendOf(model);
-    const double caption = s.caption.empty() ? 0.0 : 3.4 * s.fontPixels;
-    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0 + caption);
+    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0);  // the caption's lines push it up
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, s);

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -127,21 +127,8 @@ void addFills(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
 // Cuts the screen segment to the viewport grown by `m` (Liang-Barsky); false when it misses.
 bool clipToView(glm::dvec2& a, glm::dvec2& b, glm::dvec2 size, double m) {
   double t0 = 0.0, t1 = 1.0;
+  if (!clipSegment(a, b, glm::dvec2(-m), size + m, t0, t1)) return false;
   const glm::dvec2 d = b - a;
-  const double p[4] = {-d.x, d.x, -d.y, d.y};
-  const double q[4] = {a.x + m, size.x + m - a.x, a.y + m, size.y + m - a.y};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0.0) {
-      if (q[i] < 0.0) return false;
-      continue;
-    }
-    const double r = q[i] / p[i];
-    if (p[i] < 0.0)
-      t0 = std::max(t0, r);
-    else
-      t1 = std::min(t1, r);
-    if (t0 > t1) return false;
-  }
   const glm::dvec2 a0 = a;
   a = a0 + t0 * d;
   b = a0 + t1 * d;
@@ -308,8 +295,30 @@ void writeLabels(const SvgScene& s, std::string& out) {
   out += "</g>\n";
 }
 
+// the caption's font size in pixels: ImGui's caption box draws at 1.5 times the window's font,
+// which in SVG ems (see SvgScene::fontPixels) is about 1.6 times fontPixels
+double captionPixels(const SvgScene& s) {
+  return 1.6 * s.fontPixels;
+}
+
+// the caption's lines as the window breaks them (text_layout's captionLines), measured at
+// the caption's size
+std::vector<std::string> captionOf(const SvgScene& s) {
+  if (s.caption.empty()) return {};
+  const double px = captionPixels(s);
+  const double width = s.labelArea.empty() ? s.size.x : s.labelArea.hi.x - s.labelArea.lo.x;
+  return captionLines(s.caption, width, 0.5 * px,
+                      [&](std::string_view t) { return s.measure(t) * 1.6; });
+}
+
+// the height the caption's lines take at the bottom (0 without a caption)
+double captionHeight(const SvgScene& s, std::size_t lines) {
+  return lines == 0 ? 0.0 : (1.25 * static_cast<double>(lines) + 0.875) * captionPixels(s);
+}
+
 // the thinning note and the caption, along the bottom
-void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride) {
+void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride,
+                const std::vector<std::string>& caption) {
   if (stride > 1) {
     const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
                              " of " + grouped(visible) + " drawn";
@@ -317,15 +326,17 @@ void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::s
            "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
            "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
   }
-  if (s.caption.empty()) return;
-  // under the middle of the scene area, as the window's caption box
-  const double px = 1.6 * s.fontPixels;
+  // under the middle of the scene area, as the window's caption box, the last line lowest
+  const double px = captionPixels(s);
   const double x =
       s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
-  out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(s.size.y - 1.2 * px) +
-         "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
-         "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(s.caption) +
-         "</text>\n";
+  for (std::size_t k = 0; k < caption.size(); ++k) {
+    const double y = s.size.y - 1.2 * px - 1.25 * px * static_cast<double>(caption.size() - 1 - k);
+    out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(y) +
+           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
+           "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(caption[k]) +
+           "</text>\n";
+  }
 }
 
 // a legend row's swatch, `h` high, its left edge at x and its middle at y
@@ -356,7 +367,7 @@ std::string legendText(double x, double y, std::string_view text, Rgba c, bool e
 }
 
 // the legend as the window shows it: title, class rows in columns, a row per mark
-void writeLegend(const SvgScene& s, std::string& out) {
+void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
   const Legend& g = *s.legend;
   const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
   auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
@@ -371,7 +382,7 @@ void writeLegend(const SvgScene& s, std::string& out) {
   const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
   const double w = std::max({heading, classes, rows}) + 2.0 * pad;
   const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
-  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h + captionHigh);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
          "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
          "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
@@ -410,8 +421,9 @@ std::string sceneSvg(const SvgScene& s) {
   std::size_t visible = 0, stride = 1;
   writeScene(s, out, visible, stride);
   writeLabels(s, out);
-  writeNotes(s, out, visible, stride);
-  if (s.legend) writeLegend(s, out);
+  const std::vector<std::string> caption = captionOf(s);
+  writeNotes(s, out, visible, stride, caption);
+  if (s.legend) writeLegend(s, out, captionHeight(s, caption.size()));
   out += "</svg>\n";
   return out;
 }

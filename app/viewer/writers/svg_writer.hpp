@@ -16,11 +16,11 @@
 #include <glm/glm.hpp>
 
 #include "convexloc/geometry.hpp"
+#include "logic/app/legend.hpp"
 #include "logic/base/colour.hpp"
 #include "logic/base/draw_list.hpp"
-#include "logic/view/scene_labels.hpp"
-#include "logic/app/legend.hpp"
 #include "logic/base/xml.hpp"
+#include "logic/view/scene_labels.hpp"
 
 namespace convexloc::viewer {
 
@@ -53,8 +53,9 @@ struct SvgScene {
   // stroked: the picture itself comes from the draw lists)
   std::vector<std::vector<glm::dvec3>> cells;
   std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
-  std::string caption;  // written large at the bottom when not empty
-  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
+  std::string caption;  // written large at the bottom when not empty, in the window's lines
+  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels), or
+  // above the caption where there is one
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
   PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle

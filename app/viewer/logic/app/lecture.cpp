@@ -7,21 +7,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "logic/teach/figures.hpp"
 #include "logic/app/model.hpp"
+#include "logic/teach/figures.hpp"
 
 namespace convexloc::viewer {
 namespace {
 
-// options that belong to the window or the run, not to a slide
-constexpr std::string_view kNotSlideKeys[] = {"screenshot", "frames",  "size",    "shaders",
-                                              "samples",    "no-xvfb", "animate", "help",
-                                              "version",    "lecture", "export",  "svg"};
-
 // the keys that set a slide's look: the first slide's are the lecture's, a later one's
 // its own
-constexpr std::string_view kLookKeys[] = {"theme", "font-scale", "hide-ui", "show-ui",
-                                          "present"};
+constexpr std::string_view kLookKeys[] = {"theme", "font-scale", "hide-ui", "show-ui", "present"};
 
 // the line without the blanks around it
 std::string_view trimmed(std::string_view s) {
@@ -122,7 +116,7 @@ class LectureReader {
 
  private:
   bool fail(const std::string& problem) {
-    if (error_.empty()) error_ = source_ + ":" + std::to_string(line_) + ": " + problem;
+    if (error_.empty()) error_ = located(source_, line_, problem);
     return false;
   }
 
@@ -152,8 +146,7 @@ class LectureReader {
   }
 
   bool slideKey(const std::string& key, std::string_view rest) {
-    if (std::find(std::begin(kNotSlideKeys), std::end(kNotSlideKeys), key) !=
-        std::end(kNotSlideKeys))
+    if (setsTheRun(key))
       return fail("'" + key + "' is not a slide key (it sets the window or the run)");
     Slide& slide = out_.slides.back();
     std::vector<std::string> words{"--" + key};

@@ -6,12 +6,27 @@
 #include <string>
 #include <utility>
 
+#include "logic/base/format.hpp"
+#include "logic/draw/y_gap.hpp"
 #include "logic/teach/build_anim.hpp"
-#include "logic/narration/text.hpp"
-#include "logic/teach/y_gap.hpp"
 
 namespace convexloc::viewer {
 namespace {
+
+// which tints the cells show: some cell listing more than `base` and at most `crowdedAbove`
+// (tinted as listing extra), some listing more than `crowdedAbove` (crowded)
+template <class Cell>
+std::pair<bool, bool> tintsIn(const std::vector<Cell>& cells,
+                              const std::vector<std::uint32_t> Cell::*list, std::size_t base,
+                              std::size_t crowdedAbove) {
+  bool extra = false, crowded = false;
+  for (const Cell& c : cells) {
+    const std::size_t n = (c.*list).size();
+    extra |= n > base && n <= crowdedAbove;
+    crowded |= n > crowdedAbove;
+  }
+  return {extra, crowded};
+}
 
 LegendRow box(Rgba fill, Rgba edge, std::string text) {
   return {Swatch::Box, fill, edge, 1.0f, std::move(text), {}, {}};
@@ -98,12 +113,7 @@ Legend legend2D(const Model& model) {
   const Method2D m = scene.method();
   const std::size_t base = baseEdgesPerCell(m);
   // only what is drawn: a tint's row when some cell has that tint
-  const auto& cells = scene.cells();
-  const bool extra = std::any_of(cells.begin(), cells.end(), [&](const Cell2D& c) {
-    return c.edges.size() > base && c.edges.size() <= kCrowdedCell;
-  });
-  const bool crowded = std::any_of(cells.begin(), cells.end(),
-                                   [](const Cell2D& c) { return c.edges.size() > kCrowdedCell; });
+  const auto [extra, crowded] = tintsIn(scene.cells(), &Cell2D::edges, base, kCrowdedCell);
   if (model.build.active) {
     buildRows(model, pal, g);
   } else if (opt.showStructure && opt.showTints && extra) {
@@ -138,11 +148,7 @@ Legend legend3D(const Model& model) {
   const View3DOptions& opt = model.settings.view3d;
   Legend g = heading(model, scene, scene.stats().faces, "faces");
   const auto& cells = scene.cells();
-  const bool extra = std::any_of(cells.begin(), cells.end(), [](const Cell3D& c) {
-    return c.faces.size() > kBaseFacesPerCell && c.faces.size() <= kCrowdedCell3D;
-  });
-  const bool crowded = std::any_of(cells.begin(), cells.end(),
-                                   [](const Cell3D& c) { return c.faces.size() > kCrowdedCell3D; });
+  const auto [extra, crowded] = tintsIn(cells, &Cell3D::faces, kBaseFacesPerCell, kCrowdedCell3D);
   if (model.build.active) {
     buildRows(model, pal, g);
   } else if (opt.showCube && opt.showTints && extra) {

@@ -388,8 +388,8 @@ void Model::fit(ScreenRect area) {
     camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : box, area);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
-      const double scale = area.size().x / pendingView->z;
-      camera2d.set({pendingView->x, pendingView->y}, scale);
+      const double scale = area.size().x / pendingView->width;
+      camera2d.set({pendingView->centre.x, pendingView->centre.y}, scale);
       camera2d.pan(area.middle() - 0.5 * camera2d.viewport());
       pendingView.reset();
     }

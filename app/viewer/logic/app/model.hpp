@@ -9,22 +9,22 @@
 #include <string_view>
 #include <vector>
 
-#include "logic/view/camera2d.hpp"
-#include "logic/teach/build_anim.hpp"
-#include "logic/view/camera3d.hpp"
-#include "logic/base/colour.hpp"
-#include "logic/dual/lines2d.hpp"
 #include "logic/app/options.hpp"
-#include "logic/dual/planes3d.hpp"
-#include "logic/view/picking.hpp"
-#include "logic/view/scene_labels.hpp"
-#include "logic/scene/scene2d.hpp"
-#include "logic/scene/scene3d.hpp"
-#include "logic/narration/steps.hpp"
-#include "logic/teach/scaling.hpp"
-#include "logic/scene/second_view.hpp"
+#include "logic/base/colour.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/draw/structure3d.hpp"
+#include "logic/dual/lines2d.hpp"
+#include "logic/dual/planes3d.hpp"
+#include "logic/narration/steps.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/scene/scene3d.hpp"
+#include "logic/scene/second_view.hpp"
+#include "logic/teach/build_anim.hpp"
+#include "logic/teach/scaling.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/view/camera3d.hpp"
+#include "logic/view/picking.hpp"
+#include "logic/view/scene_labels.hpp"
 
 namespace convexloc::viewer {
 
@@ -82,11 +82,11 @@ class Model {
   std::vector<std::string> recent;  // files opened, newest first
 
   // === Why O(1), the split view, the build animation
-  bool whyOpen = false;    // the Why O(1) window shows
+  bool whyOpen = false;  // the Why O(1) window shows
   // its measurement, in a worker thread (held apart so that the model stays movable)
   std::unique_ptr<ScalingWorker> scaling = std::make_unique<ScalingWorker>();
-  SecondView split;        // 2D: a second method beside the current one
-  BuildPlayback build;     // the cells receiving their edges (faces) one at a time
+  SecondView split;     // 2D: a second method beside the current one
+  BuildPlayback build;  // the cells receiving their edges (faces) one at a time
   // something moves without input (a measurement, the build playing): draw every frame
   bool busy() const { return (scaling && scaling->running()) || build.playing; }
 
@@ -113,7 +113,7 @@ class Model {
   // fits the current scene's camera into `area`, or applies the asked 2D view
   void fit(ScreenRect area);
   // a 2D view to apply at the next fit instead: centre and width in world units
-  std::optional<Vec3> pendingView;
+  std::optional<AskedView> pendingView;
 
   // === The placed point's query, step by step (the shown scene's)
   // the steps of the shown scene's placed point, none without one

@@ -12,8 +12,8 @@
 #include <utility>
 
 #include "convexloc/geometry.hpp"
-#include "logic/view/camera3d.hpp"
 #include "logic/base/colour.hpp"
+#include "logic/view/camera3d.hpp"
 
 namespace convexloc::viewer {
 
@@ -34,7 +34,7 @@ struct Options {
   std::optional<std::size_t> cell;      // 3D: pin this cube-map cell
   bool solid = false;                   // --3d: the 3D scene
   std::optional<Vec2> hover;            // hover there (2D world coordinates)
-  std::optional<Vec3> view;             // 2D: look at (x, y) showing a width w of the world
+  std::optional<AskedView> view;        // 2D: look at (x, y) showing a width w of the world
   // 2D: the Lines mode (the dual problem), with the line through these two points
   std::optional<std::pair<Vec2, Vec2>> line;
   // 3D: the Planes mode (the dual problem in 3D), with the plane through these three points
@@ -69,11 +69,11 @@ struct Options {
   bool cellAuto = false;                  // 3D: --cell auto (a one-face and a crowded cell)
   std::optional<std::size_t> cellSecond;  // 3D: --cell K,L pins L beside K
   // Why O(1), the split view, the build animation
-  bool why = false;                          // open the Why O(1) window and start measuring
-  std::string whySvg;                        // measure without a window, write this SVG, exit
-  std::size_t whyMost = 1000000;             // the largest N measured
-  std::optional<std::string> split;          // 2D: this method beside the current one
-  std::optional<std::size_t> buildStep;      // 2D: the build animation at this step
+  bool why = false;                      // open the Why O(1) window and start measuring
+  std::string whySvg;                    // measure without a window, write this SVG, exit
+  std::size_t whyMost = 1000000;         // the largest N measured
+  std::optional<std::string> split;      // 2D: this method beside the current one
+  std::optional<std::size_t> buildStep;  // 2D: the build animation at this step
   // a lecture's slide with the panels shown (a table to read); excludes --hide-ui, --present
   bool showUi = false;
   bool noSteps = false;  // the Steps window hidden (the drawing still shows the step)
@@ -88,7 +88,11 @@ struct ParsedOptions {
 // parses argv[1..] (without the program name)
 ParsedOptions parseOptions(std::span<const std::string_view> args);
 
-// the --help text
+// the --help text, from the options' one declaration (logic/app/option_table.cpp)
 std::string usageText();
+
+// true for an option (a lecture key: its name without the dashes) that sets the window or
+// the run, which no slide may set; false for a slide's key or an unknown one
+bool setsTheRun(std::string_view key);
 
 }  // namespace convexloc::viewer

@@ -6,10 +6,10 @@
 #include <numbers>
 #include <string>
 
-#include "logic/view/camera2d.hpp"
+#include "logic/base/format.hpp"
+#include "logic/draw/y_gap.hpp"
 #include "logic/narration/steps.hpp"
-#include "logic/narration/text.hpp"
-#include "logic/teach/y_gap.hpp"
+#include "logic/view/camera2d.hpp"
 
 namespace convexloc::viewer {
 namespace {

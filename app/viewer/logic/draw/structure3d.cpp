@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <string>
 
+#include "logic/base/format.hpp"
+#include "logic/draw/cube_cells.hpp"
 #include "logic/narration/steps.hpp"
-#include "logic/narration/text.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -47,23 +48,17 @@ glm::dvec3 faceMiddle(const ConvexPolyhedron& p, std::uint32_t f) {
 
 // a cell's square on the drawing cube, filled
 void fillCell(const Cell3D& c, Rgba colour, DrawList& out) {
-  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[1]), toGlm(c.corners[2]), colour);
-  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[2]), toGlm(c.corners[3]), colour);
+  fillCubeCell(placeOf(c), colour, out);
 }
 
 // a cell's pyramid from the centre: its square and the four edges to the apex
 void pyramid(const Cell3D& c, Rgba colour, float width, DrawList& out) {
-  for (int k = 0; k < 4; ++k) {
-    out.segment(toGlm(c.corners[k]), toGlm(c.corners[(k + 1) % 4]), colour, width + 0.75f);
-    out.segment(toGlm(c.apex), toGlm(c.corners[k]), colour, width, 5.0f);
-  }
+  cubeCellPyramid(placeOf(c), colour, width + 0.75f, width, out);
 }
 
 Rgba signColour(const Palette& p, int sign) {
   return sign > 0 ? p.positive : (sign < 0 ? p.negative : p.zero);
 }
-
-const char* kCubeFaceNames[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 // === The query step by step: each step up to the current one drawn, the current one bold
 
@@ -198,8 +193,7 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
     if (cells.size() <= kMaxGridCells)
       for (const Cell3D& c : cells) {
         const Rgba colour = (farFaces >> c.cubeFace & 1u) ? pal.cube : faint;
-        for (int k = 0; k < 4; ++k)
-          out.segment(toGlm(c.corners[k]), toGlm(c.corners[(k + 1) % 4]), colour, 1.0f);
+        outlineCubeCell(placeOf(c), colour, 1.0f, out);
       }
     const glm::dvec3 ctr = toGlm(*scene.centre());
     const double h = scene.cubeHalfSize();
@@ -209,7 +203,7 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
       for (int f = 0; f < 6; ++f) {
         glm::dvec3 q = ctr;
         q[f / 2] += (f % 2 ? -1.0 : 1.0) * h * 1.12;
-        out.label(q, kCubeFaceNames[f], pal.textMuted);
+        out.label(q, std::string(kCubeFaceNames[f]), pal.textMuted);
       }
     }
   }

@@ -1,11 +1,11 @@
 // convexloc-viewer — the smallest y-gap, marked.
-#include "logic/teach/y_gap.hpp"
+#include "logic/draw/y_gap.hpp"
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -14,17 +14,6 @@ namespace {
 std::string largeText(double v) {
   if (v < 1e9) return grouped(static_cast<std::size_t>(v + 0.5));
   return approx(v, 3);
-}
-
-// bytes in B, kB, MB, GB, TB
-std::string largeBytes(double b) {
-  const char* unit[] = {"B", "kB", "MB", "GB", "TB", "PB"};
-  int k = 0;
-  while (b >= 1024.0 && k < 5) {
-    b /= 1024.0;
-    ++k;
-  }
-  return (k == 0 ? largeText(b) : approx(b, 3)) + " " + unit[k];
 }
 
 // an arrowhead at `tip`, pointing along (0, dir) in world units of `size`
@@ -42,11 +31,11 @@ std::string yGapCostText(const Scene2D& scene) {
   std::string s = "smallest y-gap " + approx(g->gap(), 3) +
                   "\npaper: (ymax - ymin) / gap = " + approx(g->ymax - g->ymin, 3) + " / " +
                   approx(g->gap(), 3) + "\n  = " + largeText(slabs) + " slabs, " +
-                  largeBytes(slabs * kPaperBytesPerSlab) + " at least" +
+                  binarySize(slabs * kPaperBytesPerSlab) + " at least" +
                   (slabs <= 1000.0 ? " (the ticks left)" : "");
   if (scene.method() == Method2D::Uniform)
     s += "\nconvexloc: " + grouped(scene.effectiveResolution()) + " slabs (bounded), " +
-         bytesText(scene.stats().bytes) + ";\n  crowded slabs list extra edges";
+         binarySize(scene.stats().bytes) + ";\n  crowded slabs list extra edges";
   return s;
 }
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "logic/view/camera2d.hpp"
+#include "logic/base/format.hpp"
 #include "logic/draw/structure2d.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/view/camera2d.hpp"
 
 namespace convexloc::viewer {
 namespace {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "logic/draw/cube_cells.hpp"
 #include "logic/draw/structure3d.hpp"
 
 namespace convexloc::viewer {
@@ -51,14 +52,11 @@ void dualSolid(const CubemapLocator& cube, const DualPlace3D& at, const Palette&
 // a cell of the dual's cube map: its square, its pyramid from c*, the dual faces it lists
 void dualCell(const CubemapLocator& cube, const DualPlace3D& at, const Cell3D& cell,
               const std::vector<std::uint32_t>& listed, Rgba colour, DrawList& out) {
-  glm::dvec3 k[4];
-  for (int i = 0; i < 4; ++i) k[i] = at.toWorld(cell.corners[static_cast<std::size_t>(i)]);
-  out.triangle(k[0], k[1], k[2], withAlpha(colour, 0.35f));
-  out.triangle(k[0], k[2], k[3], withAlpha(colour, 0.35f));
-  for (int i = 0; i < 4; ++i) {
-    out.segment(k[i], k[(i + 1) % 4], colour, 2.0f);
-    out.segment(at.toWorld(cell.apex), k[i], colour, 1.25f, 5.0f);
-  }
+  CubeCellPlace place;
+  for (std::size_t i = 0; i < 4; ++i) place.corners[i] = at.toWorld(cell.corners[i]);
+  place.apex = at.toWorld(cell.apex);
+  fillCubeCell(place, withAlpha(colour, 0.35f), out);
+  cubeCellPyramid(place, colour, 2.0f, 1.25f, out);
   const auto v = cube.vertices();
   for (const std::uint32_t f : listed) {
     if (f >= cube.faces().size()) continue;

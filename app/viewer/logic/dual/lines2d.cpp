@@ -210,7 +210,8 @@ std::vector<TraceLine> describeLine(const LineProbe2D& line, std::span<const Vec
                                     const PolarLocator* dual) {
   std::vector<TraceLine> out;
   const LineTrace& t = line.trace;
-  out.push_back({TraceLine::Step, "line through " + exact(line.p1) + " and " + exact(line.p2)});
+  out.push_back(
+      {TraceLine::Step, "line through " + exactText(line.p1) + " and " + exactText(line.p2)});
   out.push_back({TraceLine::Step, "f(v) = orient2d(p1, p2, v), exact"});
   if (!dualVertices.empty())
     out.push_back({TraceLine::Step, "dual P*: " + std::to_string(dualVertices.size()) +
@@ -220,13 +221,13 @@ std::vector<TraceLine> describeLine(const LineProbe2D& line, std::span<const Vec
   out.push_back({TraceLine::Result, "the line " + std::string(toString(line.hit.crossing))});
   if (line.hit.crossing != Crossing::Misses && line.entry && line.exit) {
     out.push_back({TraceLine::Step, "entry at " + hitText(line.hit.entry, line.vertices) + ": " +
-                                        exact(*line.entry)});
-    out.push_back({TraceLine::Step,
-                   "exit at " + hitText(line.hit.exit, line.vertices) + ": " + exact(*line.exit)});
+                                        exactText(*line.entry)});
+    out.push_back({TraceLine::Step, "exit at " + hitText(line.hit.exit, line.vertices) + ": " +
+                                        exactText(*line.exit)});
   }
   if (line.clipped)
-    out.push_back({TraceLine::Step, "segment p1-p2 clipped: " + exact(line.clipped->a) + " to " +
-                                        exact(line.clipped->b)});
+    out.push_back({TraceLine::Step, "segment p1-p2 clipped: " + exactText(line.clipped->a) +
+                                        " to " + exactText(line.clipped->b)});
   else
     out.push_back({TraceLine::Step, "segment p1-p2 clipped: outside"});
   return out;

@@ -15,8 +15,9 @@
 
 #include "convexloc/intersect2d.hpp"
 #include "convexloc/locate2d.hpp"
+#include "logic/base/format.hpp"
+#include "logic/narration/steps.hpp"
 #include "logic/scene/scene2d.hpp"
-#include "logic/narration/text.hpp"
 
 namespace convexloc::viewer {
 

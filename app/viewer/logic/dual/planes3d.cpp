@@ -235,9 +235,9 @@ std::vector<TraceLine> describePlane(const PlaneProbe3D& p, PlaneMethod method,
                                      std::span<const Vec3> dualVertices) {
   std::vector<TraceLine> out;
   const PlaneTrace& t = p.chosen(method);
-  out.push_back({TraceLine::Step, "plane through q1 " + exact(p.q[0])});
-  out.push_back({TraceLine::Step, "q2 " + exact(p.q[1])});
-  out.push_back({TraceLine::Step, "q3 " + exact(p.q[2])});
+  out.push_back({TraceLine::Step, "plane through q1 " + exactText(p.q[0])});
+  out.push_back({TraceLine::Step, "q2 " + exactText(p.q[1])});
+  out.push_back({TraceLine::Step, "q3 " + exactText(p.q[2])});
   out.push_back({TraceLine::Step, "G(v) = orient3d(q1, q2, q3, v), exact"});
   out.push_back({TraceLine::Heading, std::string("method ") + std::string(toString(method)) + ", " +
                                          std::string(costOf(method))});

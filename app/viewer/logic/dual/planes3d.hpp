@@ -15,8 +15,9 @@
 #include <glm/glm.hpp>
 
 #include "convexloc/intersect3d.hpp"
+#include "logic/base/format.hpp"
+#include "logic/narration/steps.hpp"
 #include "logic/scene/scene3d.hpp"
-#include "logic/narration/text.hpp"
 
 namespace convexloc::viewer {
 

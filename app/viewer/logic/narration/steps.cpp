@@ -100,10 +100,10 @@ void radiusStep(const Trace& t, StepList& l, const char* noun) {
   if (!(t.outerRadius > 0)) return;
   const std::string verdict =
       t.distance < t.innerRadius
-          ? std::string(": inside, no ") + noun + " test"
-          : (t.distance > t.outerRadius ? std::string(": outside, no ") + noun + " test"
+          ? std::string(": inside with no test")
+          : (t.distance > t.outerRadius ? std::string(": outside with no test")
                                         : std::string(": between, the ") + noun + "s decide");
-  l.add("|d| = " + compact(t.distance) + "; radii " + compact(t.innerRadius) + ".." +
+  l.add("|d| = " + compact(t.distance) + "; cell radii " + compact(t.innerRadius) + ".." +
             compact(t.outerRadius) + verdict,
         2, t.byRadius ? StepFocus::Radii : StepFocus::None, -1);  // drawn where they decide
 }
@@ -234,8 +234,6 @@ void polarSteps(const Trace2D& t, StepModel& m) {
 
 // === 3D
 
-const char* const kCubeFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
-
 // the walk's edge tests: cross where the direction lies beyond the edge
 void walkSteps(const Trace3D& t, StepList& l, int line) {
   for (const WalkTest& w : t.steps) {
@@ -268,8 +266,9 @@ void walkMethodSteps(const Trace3D& t, double scale, StepModel& m) {
 
 // the cube map's cell: the cube face, (s, t), the cell, the radii
 void cubeCellSteps(const Trace3D& t, double scale, StepList& l) {
-  l.add("d = p - x_T = " + compact(t.direction, scale) + ": cube face " + kCubeFaces[t.cubeFace], 0,
-        StepFocus::Octant, t.cubeFace);
+  l.add("d = p - x_T = " + compact(t.direction, scale) + ": cube face " +
+            std::string(kCubeFaceNames[static_cast<std::size_t>(t.cubeFace)]),
+        0, StepFocus::Octant, t.cubeFace);
   std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}) + " -> cell (" + std::to_string(t.cellI) +
                      "," + std::to_string(t.cellJ) + ") of " + std::to_string(t.cellsPerSide) +
                      "x" + std::to_string(t.cellsPerSide);
@@ -324,6 +323,38 @@ StepModel buildSteps(const Trace2D& t, Vec2 point, const ConvexPolygon& polygon)
     case Method2D::Polar: polarSteps(t, m); break;
   }
   return m;
+}
+
+namespace {
+
+// the steps as the inspector lists them
+std::vector<TraceLine> inspectorLines(const StepModel& m) {
+  std::vector<TraceLine> out;
+  out.push_back({TraceLine::Heading, m.title});
+  if (!m.note.empty()) out.push_back({TraceLine::Step, m.note});
+  std::size_t predicates = 0;
+  for (const Step& s : m.steps) {
+    const bool tested =
+        s.kind == TraceLine::Positive || s.kind == TraceLine::Negative || s.kind == TraceLine::Zero;
+    predicates += tested ? 1 : 0;
+    std::string text = s.caption;
+    if (s.kind == TraceLine::Result)
+      text +=
+          "  (" + std::to_string(predicates) + (predicates == 1 ? " predicate)" : " predicates)");
+    out.push_back({s.kind, std::move(text)});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<TraceLine> describeTrace(const Trace2D& trace, Vec2 point,
+                                     const ConvexPolygon& polygon) {
+  return inspectorLines(buildSteps(trace, point, polygon));
+}
+
+std::vector<TraceLine> describeTrace3D(const Trace3D& trace, Vec3 point, double scale) {
+  return inspectorLines(buildSteps3D(trace, point, scale));
 }
 
 int clampStep(int k, std::size_t count) {

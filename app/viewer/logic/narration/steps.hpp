@@ -1,7 +1,7 @@
-// convexloc-viewer — a query told step by step: the placed point's trace (core's, never the
-// viewer's own judgement) as a list of steps, each with a short caption, the line of the
-// method's pseudo-code it belongs to and what the drawing highlights; and the cursor that
-// plays them (next, previous, play at a speed). GL-free and ImGui-free.
+// convexloc-viewer — a query told step by step, the viewer's one narration of a trace: the placed
+// point's trace (core's, never the viewer's own judgement) as a list of steps, each with a short
+// caption, the line of the method's pseudo-code it belongs to and what the drawing highlights; and
+// the cursor that plays them (next, previous, play at a speed). GL-free and ImGui-free.
 #pragma once
 
 #include <cstddef>
@@ -11,9 +11,16 @@
 
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
-#include "logic/narration/text.hpp"
+#include "convexloc/polygon.hpp"
+#include "logic/base/format.hpp"
 
 namespace convexloc::viewer {
+
+// one line of a narration, coloured by its kind
+struct TraceLine {
+  enum Kind { Heading, Step, Positive, Zero, Negative, Result } kind = Step;
+  std::string text;
+};
 
 // what the drawing highlights for one step
 enum class StepFocus : std::uint8_t {
@@ -56,6 +63,14 @@ StepModel buildSteps(const Trace2D& trace, Vec2 point, const ConvexPolygon& poly
 // The steps of a 3D query; `scale` (the shape's size) snaps tiny coordinates to 0 for
 // display.
 StepModel buildSteps3D(const Trace3D& trace, Vec3 point, double scale);
+
+// The trace of one query as the inspector lists it: the steps' title, every step's caption
+// (the same sentences as the Steps window's) and the result with how many predicates were
+// evaluated.
+std::vector<TraceLine> describeTrace(const Trace2D& trace, Vec2 point,
+                                     const ConvexPolygon& polygon);
+// The same for a 3D query; `scale` (the shape's size) snaps tiny coordinates to 0.
+std::vector<TraceLine> describeTrace3D(const Trace3D& trace, Vec3 point, double scale);
 
 // the step shown for an asked step `k` among `count`: -1 (all shown) stays -1, a step
 // beyond the end is the last one, none below -1

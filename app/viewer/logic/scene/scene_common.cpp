@@ -2,18 +2,13 @@
 #include "logic/scene/scene_common.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "convexloc/timing.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
 
 namespace convexloc::viewer {
-
-std::string located(const std::string& source, const Error& e) {
-  if (source.empty()) return e.what();
-  if (e.line() == 0) return source + ": " + e.what();
-  return source + ":" + std::to_string(e.line()) + ": " + e.what();
-}
 
 std::string baseName(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
@@ -232,5 +227,19 @@ auto SceneState<Traits>::compare(double secondsPerMethod) const -> std::vector<T
 
 template class SceneState<Traits2D>;
 template class SceneState<Traits3D>;
+
+std::vector<std::string> shapeFilesIn(const std::string& dir) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string ext = e.path().extension().string();
+    const std::string name = e.path().filename().string();
+    if ((ext == ".txt" || ext == ".off" || ext == ".obj") &&
+        name.find("points") == std::string::npos)
+      files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 }  // namespace convexloc::viewer

@@ -63,8 +63,6 @@ struct PlacedPoint {
   Trace trace;
 };
 
-// "file:line: message", "file: message" or "message"
-std::string located(const std::string& source, const Error& e);
 // the file name of a path, for labels
 std::string baseName(const std::string& path);
 
@@ -142,7 +140,6 @@ class SceneState {
   // === Steps: how the placed point is traced, and which of its steps is shown
   // traces without the radius filter (the paper's query) when `radii` is false; retraces
   void setTraceOptions(TraceOptions options);
-  TraceOptions traceOptions() const { return traceOptions_; }
   // the step of the placed point's query shown, -1 for all (clamped where it is drawn)
   void setStep(int step);
   int step() const { return step_; }
@@ -154,7 +151,6 @@ class SceneState {
   // === Errors: the last problem, for the UI; `errorSerial` grows with each new one
   const std::string& error() const { return error_; }
   std::uint64_t errorSerial() const { return errorSerial_; }
-  void clearError() { error_.clear(); }
   void setError(std::string message);
 
   const Versions& versions() const { return versions_; }
@@ -186,7 +182,7 @@ class SceneState {
     try {
       return step();
     } catch (const Error& e) {
-      setError(located(source, e));
+      setError(located(source, e.line(), e.what()));
     } catch (const std::bad_alloc&) {
       setError(source.empty() ? "out of memory" : source + ": out of memory");
     }
@@ -221,5 +217,9 @@ class SceneState {
   std::uint64_t errorSerial_ = 0;
   Versions versions_;
 };
+
+// the shape files the viewer opens (.txt polygons, .off and .obj polyhedra) in `dir`, points
+// files left out, sorted; none when `dir` cannot be read
+std::vector<std::string> shapeFilesIn(const std::string& dir);
 
 }  // namespace convexloc::viewer

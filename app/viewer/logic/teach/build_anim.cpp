@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "logic/view/camera2d.hpp"
+#include "logic/base/format.hpp"
+#include "logic/draw/cube_cells.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/view/camera2d.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -52,13 +53,22 @@ void BuildPlayback::advance(double seconds, std::size_t steps) {
   ++version;
 }
 
+namespace {
+
+// each cell's count at `step`, which is clamped to the order's steps first
+std::vector<std::size_t> countsUpTo(const BuildOrder& order, std::size_t& step) {
+  step = std::min(step, order.steps());
+  return order.countsAt(step);
+}
+
+}  // namespace
+
 void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal, DrawList& out) {
   const std::vector<Cell2D>& cells = scene.cells();
-  const ConvexPolygon& poly = scene.polygon();
   if (cells.empty()) return;
+  const ConvexPolygon& poly = scene.polygon();
   const BuildOrder order(cells, poly.size());
-  step = std::min(step, order.steps());
-  const std::vector<std::size_t> counts = order.countsAt(step);
+  const std::vector<std::size_t> counts = countsUpTo(order, step);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const bool crowded = counts[c] > kCrowdedCell;
     if (counts[c] > 0) fan(cells[c].outline, cellTint(pal, counts[c], 0, crowded), out);
@@ -90,36 +100,27 @@ void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal
   out.label(at2(0.5 * (a + b)), std::move(text), pal.hoverEdge, n * reach);
 }
 
-// a cube-map cell's square, filled
-void square(const Cell3D& c, Rgba colour, DrawList& out) {
-  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[1]), toGlm(c.corners[2]), colour);
-  out.triangle(toGlm(c.corners[0]), toGlm(c.corners[2]), toGlm(c.corners[3]), colour);
-}
-
 void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces, const Palette& pal,
                       DrawList& out) {
   const std::vector<Cell3D>& cells = scene.cells();
-  const ConvexPolyhedron& solid = scene.polyhedron();
   if (cells.empty()) return;
-  const BuildOrder order(cells, solid.faceCount());
-  step = std::min(step, order.steps());
-  const std::vector<std::size_t> counts = order.countsAt(step);
+  const BuildOrder order(cells, scene.polyhedron().faceCount());
+  const std::vector<std::size_t> counts = countsUpTo(order, step);
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const bool crowded = counts[c] > kCrowdedCell3D;
     const glm::dvec3 middle = 0.5 * (toGlm(cells[c].corners[0]) + toGlm(cells[c].corners[2]));
     if (counts[c] > 0 && (farFaces >> cells[c].cubeFace & 1u))
-      square(cells[c], cellTint(pal, counts[c], 0, crowded), out);
+      fillCubeCell(placeOf(cells[c]), cellTint(pal, counts[c], 0, crowded), out);
     if (crowded) out.marker(middle, pal.crowded, 9.0f, MarkerShape::Cross);
   }
   if (step == 0) return;
   // the face just added, and the cells that list it, outlined
   const std::size_t f = step - 1;
   for (const std::size_t c : order.cellsOf(f)) {
-    square(cells[c], withAlpha(pal.hoverEdge, 0.22f), out);
-    for (int k = 0; k < 4; ++k)
-      out.segment(toGlm(cells[c].corners[k]), toGlm(cells[c].corners[(k + 1) % 4]), pal.hoverEdge,
-                  2.0f);
+    fillCubeCell(placeOf(cells[c]), withAlpha(pal.hoverEdge, 0.22f), out);
+    outlineCubeCell(placeOf(cells[c]), pal.hoverEdge, 2.0f, out);
   }
+  const ConvexPolyhedron& solid = scene.polyhedron();
   const auto& t = solid.triangles()[f];
   const glm::dvec3 a = toGlm(solid.vertices()[t[0]]), b = toGlm(solid.vertices()[t[1]]),
                    c = toGlm(solid.vertices()[t[2]]);

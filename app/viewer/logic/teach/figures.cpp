@@ -2,6 +2,8 @@
 #include "logic/teach/figures.hpp"
 
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace convexloc::viewer {
 namespace {
@@ -50,7 +52,10 @@ constexpr Figure kFigures[kFigureCount] = {
 }  // namespace
 
 const Figure& figure(int n) {
-  return kFigures[n >= 1 && n <= kFigureCount ? n - 1 : 0];
+  if (n < 1 || n > kFigureCount)
+    throw std::out_of_range("the paper has figures 1 to " + std::to_string(kFigureCount) +
+                            ", not " + std::to_string(n));
+  return kFigures[n - 1];
 }
 
 std::vector<std::string> figureArgs(int n) {

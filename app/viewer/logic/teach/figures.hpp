@@ -19,7 +19,7 @@ struct Figure {
   std::string_view args;     // the viewer's options that draw it, space separated
 };
 
-// figure n (1..kFigureCount); the first one for a number out of range
+// figure n (1..kFigureCount); std::out_of_range for another number (callers check it)
 const Figure& figure(int n);
 
 // figure n's options as a command line (without the program name)

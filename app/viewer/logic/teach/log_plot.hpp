@@ -11,8 +11,8 @@
 
 #include <glm/glm.hpp>
 
-#include "logic/view/camera2d.hpp"
 #include "logic/base/colour.hpp"
+#include "logic/base/screen_rect.hpp"
 #include "logic/base/xml.hpp"
 
 namespace convexloc::viewer {

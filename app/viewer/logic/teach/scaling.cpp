@@ -8,10 +8,21 @@
 #include "convexloc/generate2d.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/timing.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 
 namespace convexloc::viewer {
 namespace {
+
+// A method's measurement on `shape`, for runMethods: `measure` on the points `generate`
+// makes of it, those traced (seed + 1) and those timed (seed + 2), made once for every method.
+template <class Shape, class Generate, class Measure>
+auto measurerOn(const ScalingConfig& c, const Shape& shape, Generate generate, Measure measure) {
+  auto traced = generate(shape, c.tracedPoints, c.seed + 1, false);
+  auto timed = generate(shape, c.timedPoints, c.seed + 2, false);
+  return [&c, &shape, measure, traced = std::move(traced), timed = std::move(timed)](auto m) {
+    return measure(shape, m, traced, timed, c.minSeconds);
+  };
+}
 
 // the batch locate's time per point over `timed`, in chunks until minSeconds have passed
 template <class Locator, class Point>
@@ -240,24 +251,14 @@ void ScalingWorker::runMethods(std::span<const Method> methods, std::size_t size
 
 void ScalingWorker::runSize(std::size_t n) {
   const ConvexPolygon polygon(generatePolygon(PolygonKind::Regular, n, config_.seed));
-  const std::vector<Vec2> traced =
-      generatePoints(polygon, config_.tracedPoints, config_.seed + 1, false);
-  const std::vector<Vec2> timed =
-      generatePoints(polygon, config_.timedPoints, config_.seed + 2, false);
-  runMethods<Method2D>(kAllMethods2D, n, progress_.result.series, [&](Method2D m) {
-    return measureMethod(polygon, m, traced, timed, config_.minSeconds);
-  });
+  runMethods<Method2D>(kAllMethods2D, n, progress_.result.series,
+                       measurerOn(config_, polygon, generatePoints, measureMethod));
 }
 
 void ScalingWorker::runSize3D(std::size_t f) {
   const ConvexPolyhedron solid(generatePolyhedron(PolyhedronKind::Geodesic, f, config_.seed));
-  const std::vector<Vec3> traced =
-      generatePoints3D(solid, config_.tracedPoints, config_.seed + 1, false);
-  const std::vector<Vec3> timed =
-      generatePoints3D(solid, config_.timedPoints, config_.seed + 2, false);
-  runMethods<Method3D>(kAllMethods3D, f, progress_.result.series3d, [&](Method3D m) {
-    return measureMethod3D(solid, m, traced, timed, config_.minSeconds);
-  });
+  runMethods<Method3D>(kAllMethods3D, f, progress_.result.series3d,
+                       measurerOn(config_, solid, generatePoints3D, measureMethod3D));
 }
 
 }  // namespace convexloc::viewer

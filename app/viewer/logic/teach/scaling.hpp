@@ -17,7 +17,6 @@
 #include "convexloc/locate3d.hpp"
 #include "logic/base/colour.hpp"
 #include "logic/teach/log_plot.hpp"
-#include "logic/base/no_copy.hpp"
 
 namespace convexloc::viewer {
 
@@ -106,7 +105,8 @@ struct ScalingProgress {
 };
 
 // Runs a measurement in its own thread; cancel() and the destructor stop and join it.
-class ScalingWorker : NoCopy {
+// (it owns a thread, and its mutex keeps it from being copied or moved)
+class ScalingWorker {
  public:
   ScalingWorker() = default;
   ~ScalingWorker();

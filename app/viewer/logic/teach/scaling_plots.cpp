@@ -1,9 +1,11 @@
 // convexloc-viewer — Why O(1): the plots of a measurement, and their SVG.
 #include "logic/teach/scaling.hpp"
 
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -52,6 +54,26 @@ LogPlot plotOf(const std::vector<SeriesOf<Method>>& series, const Axis& axis, Va
 }
 
 // the 2D methods against N
+// `p` with its title, its y axis' label and the unit of its ticks
+LogPlot titled(LogPlot p, const char* title, const char* yLabel, const char* yUnit = "") {
+  p.title = title;
+  p.yLabel = yLabel;
+  p.yUnit = yUnit;
+  return p;
+}
+
+// a sample's mean predicates per query: a query deciding before any predicate (outside the
+// box, by the radii) counts 0, and the mean is kept above the axis' floor (kPredicateFloor)
+// so that it still shows
+double predicatesOf(const ScalingSample& s) {
+  return std::max(s.predicates, kPredicateFloor);
+}
+
+// a sample's time per query
+double nsOf(const ScalingSample& s) {
+  return s.nsPerQuery;
+}
+
 template <class Value>
 LogPlot plot2D(const ScalingResult& r, const ScalingConfig& c, Value value) {
   return plotOf(r.series,
@@ -113,8 +135,8 @@ PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, Scree
     line("smallest gap " + approx(m.gap, 2) + ": the paper's slabs take " +
              approx(m.paperBytes / 1e9, 3) + " GB,",
          st.text);
-    line("convexloc's polar " + bytesText(m.polarBytes) + ", uniform " + bytesText(m.uniformBytes) +
-             " (bounded by O(N))",
+    line("convexloc's polar " + binarySize(m.polarBytes) + ", uniform " +
+             binarySize(m.uniformBytes) + " (bounded by O(N))",
          st.text);
   }
   return d;
@@ -123,47 +145,33 @@ PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, Scree
 }  // namespace
 
 Rgba methodColour(Method3D m) {
-  switch (m) {
-    case Method3D::Halfspace: return hex(0x9A9A9A);
-    case Method3D::Walk: return hex(0x56B4E9);
-    case Method3D::Cubemap: return hex(0xD55E00);
-  }
-  return hex(0x999999);
+  // halfspace, walk, cubemap
+  constexpr std::uint32_t kColours[] = {0x9A9A9A, 0x56B4E9, 0xD55E00};
+  const auto i = static_cast<std::size_t>(m);
+  return hex(i < std::size(kColours) ? kColours[i] : 0x999999);
 }
 
 LogPlot predicatesPlot3D(const ScalingResult& r, const ScalingConfig& c) {
-  LogPlot p =
-      plot3D(r, c, [](const ScalingSample& s) { return std::max(s.predicates, kPredicateFloor); });
+  LogPlot p = titled(plot3D(r, c, predicatesOf), "Predicates per query (3D)",
+                     "mean plane + walk-edge tests (core's trace)");
   p.notes.insert(p.notes.begin(), "cubemap: its radii decide most queries before any plane test");
-  p.title = "Predicates per query (3D)";
-  p.yLabel = "mean plane + walk-edge tests (core's trace)";
   return p;
 }
 
 LogPlot timePlot3D(const ScalingResult& r, const ScalingConfig& c) {
-  LogPlot p = plot3D(r, c, [](const ScalingSample& s) { return s.nsPerQuery; });
-  p.title = "Time per query (3D)";
-  p.yLabel = "ns per query (batch locate)";
-  p.yUnit = " ns";
-  return p;
+  return titled(plot3D(r, c, nsOf), "Time per query (3D)", "ns per query (batch locate)", " ns");
 }
 
 Rgba methodColour(Method2D m) {
-  switch (m) {
-    case Method2D::Halfplane: return hex(0x9A9A9A);
-    case Method2D::Wedge: return hex(0x56B4E9);
-    case Method2D::Slab: return hex(0x009E73);
-    case Method2D::Uniform: return hex(0xCC79A7);
-    case Method2D::Polar: return hex(0xD55E00);
-  }
-  return hex(0x999999);
+  // halfplane, wedge, slab, uniform, polar
+  constexpr std::uint32_t kColours[] = {0x9A9A9A, 0x56B4E9, 0x009E73, 0xCC79A7, 0xD55E00};
+  const auto i = static_cast<std::size_t>(m);
+  return hex(i < std::size(kColours) ? kColours[i] : 0x999999);
 }
 
 LogPlot predicatesPlot(const ScalingResult& r, const ScalingConfig& c) {
-  // a query deciding before any predicate (outside the box, by the radii) counts 0; the
-  // mean is kept above the axis' floor (kPredicateFloor) so that it still shows
-  LogPlot p =
-      plot2D(r, c, [](const ScalingSample& s) { return std::max(s.predicates, kPredicateFloor); });
+  LogPlot p = titled(plot2D(r, c, predicatesOf), "Predicates per query",
+                     "mean edge + ray tests (core's trace)");
   PlotSeries paper{
       "polar, the paper's (edges in the cell)", methodColour(Method2D::Polar), {}, true};
   for (const ScalingSeries& s : r.series)
@@ -172,17 +180,11 @@ LogPlot predicatesPlot(const ScalingResult& r, const ScalingConfig& c) {
         paper.points.push_back(glm::dvec2(static_cast<double>(x.n), x.cellEdges));
   p.series.push_back(std::move(paper));
   p.notes.insert(p.notes.begin(), "polar: its radii decide most queries before any edge test");
-  p.title = "Predicates per query";
-  p.yLabel = "mean edge + ray tests (core's trace)";
   return p;
 }
 
 LogPlot timePlot(const ScalingResult& r, const ScalingConfig& c) {
-  LogPlot p = plot2D(r, c, [](const ScalingSample& s) { return s.nsPerQuery; });
-  p.title = "Time per query";
-  p.yLabel = "ns per query (batch locate)";
-  p.yUnit = " ns";
-  return p;
+  return titled(plot2D(r, c, nsOf), "Time per query", "ns per query (batch locate)", " ns");
 }
 
 LogPlot memoryPlot(const ScalingResult& r) {

@@ -5,18 +5,15 @@
 #include <glm/glm.hpp>
 
 #include "convexloc/geometry.hpp"
+#include "logic/base/screen_rect.hpp"
 
 namespace convexloc::viewer {
 
-// a rectangle in window pixels (y grows downward)
-struct ScreenRect {
-  glm::dvec2 lo{0.0, 0.0};
-  glm::dvec2 hi{0.0, 0.0};
-  glm::dvec2 size() const { return hi - lo; }
-  glm::dvec2 middle() const { return 0.5 * (lo + hi); }
-  bool contains(glm::dvec2 p) const {
-    return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
-  }
+// a 2D view asked for by name: the world point at the scene's middle and the width of world
+// shown across it
+struct AskedView {
+  Vec2 centre;
+  double width = 1.0;
 };
 
 // Maps world coordinates (y up) to window pixels (y down) and back. The world point

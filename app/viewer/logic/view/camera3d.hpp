@@ -45,8 +45,6 @@ class Camera3D {
   double distance() const { return distance_; }
   double yaw() const { return yaw_; }
   double pitch() const { return pitch_; }
-  // the vertical field of view, in radians
-  double fovY() const { return fovY_; }
   void set(glm::dvec3 target, double distance, double yaw, double pitch);
 
   // the eye position and the unit vectors of the view: forward, right, up
@@ -63,8 +61,6 @@ class Camera3D {
   void zoom(double factor);
   // looks at the box's middle from a distance at which its bounding sphere fills `area`
   void fit(const Bounds3& box, ScreenRect area);
-  // the radius of the scene, for the clip planes
-  void setSceneRadius(double r) { sceneRadius_ = r; }
 
   // window pixel of a world point
   Projected toScreen(glm::dvec3 world) const;
@@ -82,7 +78,7 @@ class Camera3D {
   double distance_ = 5.0;
   double yaw_ = 0.6;
   double pitch_ = 0.45;
-  double fovY_ = 0.6981317007977318;  // 40 degrees
+  double fovY_ = 0.6981317007977318;  // the vertical field of view: 40 degrees
   double sceneRadius_ = 1.0;
   glm::dvec2 areaShift_{0.0};  // pixels the fitted area's middle lies from the viewport's
 };

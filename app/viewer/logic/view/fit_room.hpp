@@ -5,7 +5,7 @@
 
 #include <glm/glm.hpp>
 
-#include "logic/view/camera2d.hpp"
+#include "logic/base/screen_rect.hpp"
 
 namespace convexloc::viewer {
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "logic/base/screen_rect.hpp"
+
 namespace convexloc::viewer {
 namespace {
 
@@ -79,21 +81,8 @@ void SegmentGrid::add(glm::dvec2 a, glm::dvec2 b) {
   if (cells_.empty() || walked_ > kWalkBudget) return;
   // clipped to the area (Liang-Barsky), then walked in steps of half a cell
   double t0 = 0.0, t1 = 1.0;
+  if (!clipSegment(a, b, area_.lo, area_.hi, t0, t1)) return;
   const glm::dvec2 d = b - a;
-  const double p[4] = {-d.x, d.x, -d.y, d.y};
-  const double q[4] = {a.x - area_.lo.x, area_.hi.x - a.x, a.y - area_.lo.y, area_.hi.y - a.y};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0.0) {
-      if (q[i] < 0.0) return;
-      continue;
-    }
-    const double t = q[i] / p[i];
-    if (p[i] < 0.0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 > t1) return;
-  }
   const glm::dvec2 from = a + d * t0, to = a + d * t1;
   const int steps = 1 + static_cast<int>(glm::length(to - from) / (0.5 * cell_));
   walked_ += static_cast<std::size_t>(steps);
@@ -186,34 +175,6 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
     placed[i].leader = true;
   }
   return placed;
-}
-
-std::vector<std::string> breakAtSpaces(std::string_view text, double width,
-                                       const MeasureText& measure, std::string_view indent) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t nl = std::min(text.find('\n', start), text.size());
-    const std::string_view para = text.substr(start, nl - start);
-    std::string line;
-    std::size_t at = 0;
-    while (at < para.size()) {
-      std::size_t end = para.find(' ', at);
-      if (end == std::string_view::npos) end = para.size();
-      const std::string_view word = para.substr(at, end - at);
-      const std::string joined = line.empty() ? std::string(word) : line + " " + std::string(word);
-      if (!line.empty() && measure(joined).x > width) {
-        lines.push_back(line);
-        line = std::string(indent) + std::string(word);
-      } else {
-        line = joined;
-      }
-      at = end + 1;
-    }
-    lines.push_back(line);
-    start = nl + 1;
-  }
-  return lines;
 }
 
 }  // namespace convexloc::viewer

@@ -13,6 +13,8 @@
 
 #include <glm/glm.hpp>
 
+#include "logic/base/text_layout.hpp"
+
 namespace convexloc::viewer {
 
 // a label to place: its anchor (window pixels), the offset its builder asked for (pixels,
@@ -83,9 +85,6 @@ class SegmentGrid {
   std::vector<unsigned char> cells_;
 };
 
-// the size of a text in window pixels
-using MeasureText = std::function<glm::dvec2(std::string_view)>;
-
 // Places the labels in order (earlier ones win a contested spot): the asked offset times
 // `scale` first, then 8 directions around the anchor at growing distances. A label whose
 // every candidate overlaps a placed label or a marker is dropped, unless essential: then
@@ -103,12 +102,5 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
 bool boxesOverlap(const LabelPlacement& a, const LabelPlacement& b, double pad = 0.0);
 // true when the placed box covers part of the disc
 bool boxCoversDisc(const LabelPlacement& box, const PixelDisc& disc);
-
-// Breaks `text` into lines no wider than `width` pixels at spaces only, so that a number
-// ("-0.2791048542272344") is never split; a word wider than the line gets a line alone.
-// Lines continuing a paragraph start with `indent`. Every wrapped text of the viewer with
-// numbers in it (trace, inspector, steps, toasts, notes) is broken by this rule.
-std::vector<std::string> breakAtSpaces(std::string_view text, double width,
-                                       const MeasureText& measure, std::string_view indent = {});
 
 }  // namespace convexloc::viewer

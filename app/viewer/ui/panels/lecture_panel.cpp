@@ -1,5 +1,5 @@
 // convexloc-viewer — the slide card, the Lecture panel, the slide keys.
-#include "ui/lecture_panel.hpp"
+#include "ui/panels/lecture_panel.hpp"
 
 #include <algorithm>
 #include <cmath>

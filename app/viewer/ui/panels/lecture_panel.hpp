@@ -8,8 +8,8 @@
 #include <string>
 
 #include "logic/app/actions.hpp"
-#include "logic/view/camera2d.hpp"
 #include "logic/app/model.hpp"
+#include "logic/view/camera2d.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {

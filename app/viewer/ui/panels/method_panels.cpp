@@ -1,5 +1,5 @@
 // convexloc-viewer — the shared panel pieces that need no template.
-#include "ui/method_panels.hpp"
+#include "ui/panels/method_panels.hpp"
 
 #include <algorithm>
 

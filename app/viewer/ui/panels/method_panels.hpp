@@ -16,7 +16,7 @@
 #include <imgui.h>
 
 #include "convexloc/methods.hpp"
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -105,7 +105,7 @@ void compareTable(const char* id, const std::vector<Row>& rows, const Palette& p
       ImGui::Text("%s", nsText(r.nsPerPoint).c_str());
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s points located, %s", grouped(r.points).c_str(),
-                        bytesText(r.bytes).c_str());
+                        binarySize(r.bytes).c_str());
     ImGui::TableNextColumn();
     ImGui::Text("%s ms", approx(r.buildMs, 2).c_str());
     ImGui::TableNextColumn();
@@ -226,7 +226,8 @@ void placedPoint(Scene& scene, const Palette& pal, bool hints, const char* hint,
   traceLines(describe(*probe), pal, colour);
   if (ImGui::SmallButton("Clear (Esc)")) scene.clearProbe();
   ImGui::SameLine();
-  if (ImGui::SmallButton("Copy coordinates")) ImGui::SetClipboardText(exact(probe->point).c_str());
+  if (ImGui::SmallButton("Copy coordinates"))
+    ImGui::SetClipboardText(exactText(probe->point).c_str());
 }
 
 }  // namespace convexloc::viewer

@@ -1,5 +1,5 @@
 // convexloc-viewer — the 2D panels.
-#include "ui/panels2d.hpp"
+#include "ui/panels/panels2d.hpp"
 
 #include <algorithm>
 #include <string>
@@ -7,8 +7,8 @@
 #include <imgui.h>
 
 #include "logic/dual/lines2d.hpp"
-#include "ui/method_panels.hpp"
-#include "ui/views_panel.hpp"
+#include "ui/panels/method_panels.hpp"
+#include "ui/panels/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -31,7 +31,7 @@ std::vector<StatLine> statLines(const Scene2D& scene) {
     if (s.crowdedCells) rows.push_back({"crowded cells", grouped(s.crowdedCells) + " (bisection)"});
   }
   if (scene.cellsOmitted()) rows.push_back({"drawing", "too many cells to draw"});
-  rows.push_back({"memory", bytesText(s.bytes) + " (" + approx(s.bytesPerEdge, 3) + " B/edge)"});
+  rows.push_back({"memory", binarySize(s.bytes) + " (" + approx(s.bytesPerEdge, 3) + " B/edge)"});
   rows.push_back({"build", approx(s.buildSeconds * 1e3, 3) + " ms"});
   if (!scene.points().empty())
     rows.push_back({"locate", nsText(scene.locateNsPerPoint()) + " ns/point"});
@@ -171,10 +171,7 @@ void inspector2D(Model& model, bool hints) {
   }
   placedPoint(
       scene, pal, hints, "click in the scene to place a point and follow its query step by step",
-      [&](const Probe& probe) {
-        return describeTrace(probe.trace, probe.point, scene.polygon(),
-                             scene.method() == Method2D::Polar ? scene.effectiveResolution() : 0);
-      });
+      [&](const Probe& probe) { return describeTrace(probe.trace, probe.point, scene.polygon()); });
   splitInspector(model);  // the split view's right half
 }
 

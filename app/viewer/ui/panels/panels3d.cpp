@@ -1,5 +1,5 @@
 // convexloc-viewer — the 3D panels.
-#include "ui/panels3d.hpp"
+#include "ui/panels/panels3d.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <imgui.h>
 
 #include "logic/dual/dual_view3d.hpp"
-#include "ui/method_panels.hpp"
-#include "ui/views_panel.hpp"
+#include "ui/panels/method_panels.hpp"
+#include "ui/panels/views_panel.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -21,8 +21,6 @@ constexpr GeneratorText kGenerator3D = {"##kind3", "Generate##3", "faces (about)
 constexpr MethodPanelText kMethodText3D = {"stats3", "##hist3", "faces", "Compare all methods##3",
                                            "compare3"};
 constexpr SliderText kGridSlider = {"auto##g", "##g", 256, "G = %d"};
-
-const char* kCubeFaces[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 // "12, 13, 40" (at most `most`)
 std::string listOf(const std::vector<std::uint32_t>& v, std::size_t most) {
@@ -37,8 +35,9 @@ std::string listOf(const std::vector<std::uint32_t>& v, std::size_t most) {
 
 // what a cell is and lists
 void cellText(const Cell3D& c) {
-  std::string what = "cell " + std::to_string(c.index) + " on cube face " + kCubeFaces[c.cubeFace] +
-                     ", (" + std::to_string(c.i) + ", " + std::to_string(c.j) + ")";
+  std::string what = "cell " + std::to_string(c.index) + " on cube face " +
+                     std::string(kCubeFaceNames[static_cast<std::size_t>(c.cubeFace)]) + ", (" +
+                     std::to_string(c.i) + ", " + std::to_string(c.j) + ")";
   if (c.level > 0) what += ", quadtree level " + std::to_string(c.level);
   textAtSpaces(what);
   textAtSpaces("lists " + std::to_string(c.faces.size()) +
@@ -63,7 +62,7 @@ std::vector<StatLine> statLines(const Scene3D& scene) {
   if (!s.centred && scene.method() != Method3D::Halfspace)
     rows.push_back({"centre", "none: every face is tested"});
   if (scene.cellsOmitted()) rows.push_back({"drawing", "too many cells to draw"});
-  rows.push_back({"memory", bytesText(s.bytes) + " (" + approx(s.bytesPerFace, 3) + " B/face)"});
+  rows.push_back({"memory", binarySize(s.bytes) + " (" + approx(s.bytesPerFace, 3) + " B/face)"});
   rows.push_back({"build", approx(s.buildSeconds * 1e3, 3) + " ms"});
   return rows;
 }

@@ -1,5 +1,5 @@
 // convexloc-viewer — the Why O(1) window.
-#include "ui/scaling_panel.hpp"
+#include "ui/panels/scaling_panel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include <imgui.h>
 
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -121,10 +121,9 @@ void scalingWindow(Model& model, UiState& ui) {
   // the panels are hidden)
   const ImGuiCond cond = model.settings.showUi ? ImGuiCond_Appearing : ImGuiCond_Always;
   const float top = model.settings.slideCardHeight, bottom = io.DisplaySize.y - ui.captionHeight;
-  ImGui::SetNextWindowSize(
-      ImVec2(io.DisplaySize.x * (model.settings.showUi ? 0.8f : 0.96f),
-             std::min(io.DisplaySize.y * 0.88f, bottom - top - 8.0f)),
-      cond);
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * (model.settings.showUi ? 0.8f : 0.96f),
+                                  std::min(io.DisplaySize.y * 0.88f, bottom - top - 8.0f)),
+                           cond);
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, 0.5f * (top + bottom)), cond,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);

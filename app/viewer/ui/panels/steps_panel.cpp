@@ -1,5 +1,5 @@
 // convexloc-viewer — the Steps window.
-#include "ui/steps_panel.hpp"
+#include "ui/panels/steps_panel.hpp"
 
 #include <algorithm>
 #include <cmath>

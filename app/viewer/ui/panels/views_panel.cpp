@@ -1,12 +1,12 @@
 // convexloc-viewer — the split view's, the build animation's and Why O(1)'s controls.
-#include "ui/views_panel.hpp"
+#include "ui/panels/views_panel.hpp"
 
 #include <algorithm>
 #include <string>
 
 #include <imgui.h>
 
-#include "logic/narration/text.hpp"
+#include "logic/base/format.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -117,9 +117,7 @@ void splitInspector(const Model& model) {
   ImGui::Separator();
   ImGui::TextColored(im(colour), "Right half, %s: %s", std::string(toString(s.method())).c_str(),
                      std::string(toString(t.result)).c_str());
-  traceLines(describeTrace(t, s.probe()->point, s.polygon(),
-                           s.method() == Method2D::Polar ? s.effectiveResolution() : 0),
-             pal, colour);
+  traceLines(describeTrace(t, s.probe()->point, s.polygon()), pal, colour);
 }
 
 void advanceBuild(Model& model, double seconds) {
