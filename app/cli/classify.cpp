@@ -58,12 +58,7 @@ class PointPasses {
 
  public:
   explicit PointPasses(const std::string& path) : path_(path) {
-    aboutFile(path_, [&] { in_ = std::make_unique<InputFile>(path_); });
-    struct stat st {};
-    if (fstat(fileno(in_->get()), &st) == 0) {
-      if (S_ISDIR(st.st_mode)) failInput(path_, 0, "cannot open: it is a directory");
-      if (S_ISREG(st.st_mode)) start_ = ftello(in_->get());
-    }
+    start_ = openForPasses(path_, in_);
     if (start_ < 0) {
       spool_.reset(std::tmpfile());
       if (!spool_)

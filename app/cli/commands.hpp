@@ -6,9 +6,14 @@
 // precede a Failure caused by bad input: commands validate everything first.
 #pragma once
 
+#include <sys/types.h>
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -19,6 +24,7 @@
 #include "convexloc/locate3d.hpp"
 #include "convexloc/polygon.hpp"
 #include "convexloc/polyhedron.hpp"
+#include "convexloc/text_reader.hpp"
 
 namespace CLI {
 class App;
@@ -55,6 +61,11 @@ std::string displayName(const std::string& path);
 // Runs `fn`, turning a convexloc::Error into a Failure that names `file` (and its line),
 // and a convexloc::UsageError into a bad-usage Failure.
 void aboutFile(const std::string& file, const std::function<void()>& fn);
+
+// Opens `path` ("-": standard input) into `in` for reading in passes, refusing a directory.
+// Returns where its text starts when it is a regular file (it can be read again from
+// there), else -1 (a pipe: the caller spools it).
+off_t openForPasses(const std::string& path, std::unique_ptr<InputFile>& in);
 
 // "a, b, c": the names of every value of `all`, as toString writes them
 template <class T, std::size_t N>
@@ -204,5 +215,16 @@ class Output {
   std::vector<char> buf_;
   std::size_t used_ = 0;
 };
+
+// printf into a std::string
+template <class... Args>
+std::string format(const char* fmt, Args... args) {
+  char buf[256];
+  int n = std::snprintf(buf, sizeof buf, fmt, args...);
+  return std::string(buf, static_cast<std::size_t>(std::clamp(n, 0, 255)));
+}
+
+// a duration in the unit that suits it ("12.3 us", "4.56 ms", "1.23 s")
+std::string duration(double seconds);  // info.cpp
 
 }  // namespace convexloc::cli

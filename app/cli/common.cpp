@@ -1,4 +1,6 @@
 // convexloc CLI — failures, shape loading and buffered output shared by the commands.
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -19,9 +21,18 @@ void failUsage(const std::string& message) {
 }
 
 void failInput(const std::string& file, std::size_t line, const std::string& problem) {
-  std::string where = displayName(file);
-  if (line > 0) where += ':' + std::to_string(line);
-  throw Failure(kExitBadInput, where + ": " + problem);
+  throw Failure(kExitBadInput, located(file, line, problem));
+}
+
+off_t openForPasses(const std::string& path, std::unique_ptr<InputFile>& in) {
+  aboutFile(path, [&] { in = std::make_unique<InputFile>(path); });
+  off_t start = -1;
+  struct stat st {};
+  if (fstat(fileno(in->get()), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) failInput(path, 0, "cannot open: it is a directory");
+    if (S_ISREG(st.st_mode)) start = ftello(in->get());
+  }
+  return start;
 }
 
 std::string displayName(const std::string& path) {

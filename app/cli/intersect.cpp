@@ -43,12 +43,7 @@ class RowPasses {
   using Row = std::array<double, Numbers>;
 
   explicit RowPasses(const std::string& path) : path_(path) {
-    aboutFile(path_, [&] { in_ = std::make_unique<InputFile>(path_); });
-    struct stat st {};
-    if (fstat(fileno(in_->get()), &st) == 0) {
-      if (S_ISDIR(st.st_mode)) failInput(path_, 0, "cannot open: it is a directory");
-      if (S_ISREG(st.st_mode)) start_ = ftello(in_->get());
-    }
+    start_ = openForPasses(path_, in_);
     if (start_ < 0 && !(spool_ = std::tmpfile()))
       failInput(path_, 0, std::string("cannot create a temporary file: ") + std::strerror(errno));
   }

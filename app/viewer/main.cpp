@@ -18,18 +18,21 @@
 #include "gl/context.hpp"
 #include "gl/renderer.hpp"
 #include "gl/scene_view.hpp"
-#include "logic/interaction.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
 #include "platform/frame_stats.hpp"
 #include "platform/input.hpp"
 #include "platform/window.hpp"
-#include "ui/layout.hpp"
-#include "ui/lecture_panel.hpp"
-#include "ui/scaling_panel.hpp"
-#include "ui/screenshot.hpp"
-#include "ui/slide_export.hpp"
+#include "ui/frame.hpp"
+#include "ui/key_actions.hpp"
+#include "ui/label_overlay.hpp"
+#include "ui/panels/lecture_panel.hpp"
+#include "ui/panels/scaling_panel.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/style.hpp"
+#include "writers/screenshot.hpp"
+#include "writers/slide_export.hpp"
 
 #ifndef CONVEXLOC_SHADER_DIR
 #define CONVEXLOC_SHADER_DIR "shaders"
@@ -81,7 +84,7 @@ cv::UiState startUi(cv::Model& model, const cv::Options& options, const cv::GlIn
                     int samples) {
   cv::UiState ui;
   ui.assetDir = CONVEXLOC_ASSET_DIR;
-  cv::scanAssets(ui);
+  ui.assets = cv::shapeFilesIn(ui.assetDir);
   ui.fontScaleEdit = model.settings.fontScale;
   if (options.compare && model.dim == cv::Dim::Two) ui.compare2d = model.scene2d.compare();
   if (options.compare && model.dim == cv::Dim::Three) ui.compare3d = model.scene3d().compare();
@@ -118,6 +121,37 @@ void drawScene(cv::Model& model, cv::Renderer& renderer, cv::SceneView& view,
   const glm::vec2 fb{static_cast<float>(fbW), static_cast<float>(fbH)};
   view.drawBase(model, renderer, fb, size.pixelRatio);
   view.drawOverlay(model, renderer, fb, size.pixelRatio);
+}
+
+// the pointer's gestures and the keys' actions on the scene (a window with hands only)
+void takeInput(const cv::Window& window, cv::Interaction& interaction, cv::Model& model,
+               cv::UiState& ui) {
+  cv::PointerInput pointer = cv::pointerInput(window.hovered());
+  // after a clicker's slide change the resting pointer hovers nothing until it moves
+  if (pointer.delta != glm::dvec2(0.0)) ui.pointerStill = false;
+  if (ui.pointerStill) pointer.hovering = false;
+  interaction.update(model.split.toLeft(pointer), model);
+  for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
+}
+
+// The frame's files: the next slide of --export, the screenshot and SVG asked for (by a key,
+// or --screenshot / --svg on the last frame). True when the run ends after this frame;
+// `exitCode` becomes 1 when a file could not be written.
+bool writeFrameFiles(const cv::Options& options, bool headless, const cv::FrameStats& stats,
+                     const cv::FrameSize& size, cv::Model& model, const cv::SceneView& view,
+                     cv::UiState& ui, cv::SlideExporter& exporter, int& exitCode) {
+  bool lastFrame = headless && stats.frames() >= options.frames;
+  if (exporter.active()) {  // --export: every slide written, then the run ends
+    if (!exporter.afterFrame(model, view, ui, size.framebufferWidth, size.framebufferHeight))
+      exitCode = 1;
+    lastFrame = exporter.finished() || exitCode != 0;
+  }
+  const std::string finalShot = lastFrame ? options.screenshot : "";
+  if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
+                             stats.seconds()))
+    exitCode = 1;
+  if (!cv::svgIfAsked(model, view, ui, lastFrame ? options.svg : "", stats.seconds())) exitCode = 1;
+  return lastFrame;
 }
 
 }  // namespace
@@ -177,14 +211,7 @@ int main(int argc, char** argv) {
     model.camera3d.setViewport(size.window);
     const bool dropped = openDropped(model, ui);
     if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
-    if (!headless) {
-      cv::PointerInput pointer = cv::pointerInput(window.hovered());
-      // after a clicker's slide change the resting pointer hovers nothing until it moves
-      if (pointer.delta != glm::dvec2(0.0)) ui.pointerStill = false;
-      if (ui.pointerStill) pointer.hovering = false;
-      interaction.update(model.split.toLeft(pointer), model);
-      for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
-    }
+    if (!headless) takeInput(window, interaction, model, ui);
     if (options.animate && stats.frames() > 0) nudgeCamera(model);
     model.lines2d.sync(model.scene2d);
     model.collectErrors();
@@ -199,18 +226,8 @@ int main(int argc, char** argv) {
     window.renderImGui();
 
     stats.count();
-    bool lastFrame = headless && stats.frames() >= options.frames;
-    if (exporter.active()) {  // --export: every slide written, then the run ends
-      if (!exporter.afterFrame(model, view, ui, size.framebufferWidth, size.framebufferHeight))
-        exitCode = 1;
-      lastFrame = exporter.finished() || exitCode != 0;
-    }
-    const std::string finalShot = lastFrame ? options.screenshot : "";
-    if (!cv::screenshotIfAsked(model, ui, finalShot, size.framebufferWidth, size.framebufferHeight,
-                               stats.seconds()))
-      exitCode = 1;
-    if (!cv::svgIfAsked(model, view, ui, lastFrame ? options.svg : "", stats.seconds()))
-      exitCode = 1;
+    const bool lastFrame =
+        writeFrameFiles(options, headless, stats, size, model, view, ui, exporter, exitCode);
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();
     if (ui.reloadShaders && !renderer.reload()) model.fail("shaders failed to compile: see View");

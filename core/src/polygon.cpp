@@ -77,10 +77,9 @@ struct Input {
   }
 };
 
-// the input ring as indices of input points, with how many repeats it dropped
+// the input ring as indices of input points
 struct Ring {
   std::deque<std::uint32_t> at;
-  std::size_t repeated = 0;
 };
 
 // === Checks, in order; each throws its own error naming its witness
@@ -148,7 +147,6 @@ Ring simplify(const Input& in) {
   std::deque<std::uint32_t>& ring = r.at;
   for (std::uint32_t i = 0; i < in.size(); ++i) {
     if (!ring.empty() && in[ring.back()] == in[i]) {
-      ++r.repeated;
       continue;
     }
     ring.push_back(i);
@@ -161,7 +159,6 @@ Ring simplify(const Input& in) {
     changed = false;
     if (in[ring.back()] == in[ring.front()]) {
       ring.pop_back();
-      ++r.repeated;
       changed = true;
     } else if (collapses(in, ring[ring.size() - 2], ring.back(), ring.front())) {
       ring.pop_back();
@@ -238,7 +235,6 @@ ConvexPolygon::ConvexPolygon(std::span<const Vec2> points, std::span<const std::
   checkInput(in);
   rejectCollinear(in);
   Ring ring = simplify(in);
-  repeated_ = ring.repeated;
   clockwise_ = clockwiseTurns(in, ring.at);
   if (clockwise_) std::reverse(ring.at.begin(), ring.at.end());
   checkWinding(in, ring.at);

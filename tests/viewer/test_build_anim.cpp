@@ -3,10 +3,10 @@
 
 #include <vector>
 
-#include "logic/build_anim.hpp"
-#include "logic/scene2d.hpp"
-#include "logic/scene3d.hpp"
-#include "logic/second_view.hpp"
+#include "logic/teach/build_anim.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/scene/scene3d.hpp"
+#include "logic/scene/second_view.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Method2D;

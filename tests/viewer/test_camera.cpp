@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "logic/camera2d.hpp"
-#include "logic/camera3d.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/view/camera3d.hpp"
 
 namespace cv = convexloc::viewer;
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "logic/fit_room.hpp"
-#include "logic/label_layout.hpp"
+#include "logic/view/fit_room.hpp"
+#include "logic/view/label_layout.hpp"
 
 namespace cv = convexloc::viewer;
 

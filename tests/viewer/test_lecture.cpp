@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "logic/figures.hpp"
-#include "logic/lecture.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/steps.hpp"
-#include "logic/y_gap.hpp"
+#include "logic/app/lecture.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/draw/y_gap.hpp"
+#include "logic/narration/steps.hpp"
+#include "logic/teach/figures.hpp"
 #include "ui/ui_state.hpp"
 
 namespace cv = convexloc::viewer;

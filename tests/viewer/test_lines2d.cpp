@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "convexloc/crossing.hpp"
-#include "logic/interaction.hpp"
-#include "logic/lines2d.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/dual/lines2d.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Box2;

@@ -7,12 +7,12 @@
 #include <string_view>
 #include <vector>
 
-#include "logic/colour.hpp"
-#include "logic/interaction.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/text.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/format.hpp"
+#include "logic/draw/structure2d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;
@@ -111,6 +111,27 @@ TEST(Options, RejectsWhatItCannotUse) {
   EXPECT_NE(cv::usageText().find("--screenshot"), std::string::npos);
 }
 
+// one declaration: every option --help lists is one the parser knows (a missing value says
+// what it needs, never "unknown option"), and the lecture keys the run refuses are its own
+TEST(Options, HelpParserAndLectureKeysShareOneDeclaration) {
+  const std::string help = cv::usageText();
+  for (const char* name : {"--method", "--resolution", "--probe", "--line", "--plane", "--slice",
+                           "--cell", "--step", "--figure", "--lecture", "--theme", "--caption",
+                           "--size", "--why-max", "--split", "--build-step", "--screenshot"}) {
+    EXPECT_NE(help.find(name), std::string::npos) << name;
+    const std::string error = parse({name}).error;
+    EXPECT_EQ(error.rfind(std::string(name) + " needs ", 0), 0u) << error;
+  }
+  // an option's values go in where it stands: the later one wins
+  EXPECT_EQ(parse({"--method", "slab", "--method", "polar"}).options.method, "polar");
+  EXPECT_EQ(parse({"--line", "-3", "1", "3", "2"}).options.line->first.x, -3.0);
+  EXPECT_TRUE(cv::setsTheRun("size"));
+  EXPECT_TRUE(cv::setsTheRun("export"));
+  EXPECT_FALSE(cv::setsTheRun("method"));
+  EXPECT_FALSE(cv::setsTheRun("why-svg"));
+  EXPECT_FALSE(cv::setsTheRun("wobble"));
+}
+
 // === Draw lists
 
 TEST(Structure2D, PolarDrawsItsRaysOctantsAndCentre) {
@@ -184,15 +205,15 @@ TEST(Structure2D, ClipLineToBox) {
 
 TEST(Text, ExactNumbersReadBack) {
   for (double v : {0.1, 1e9 + 0.5, -2.5e-300, 1.0 / 3.0}) {
-    const std::string s = cv::exact(v);
+    const std::string s = convexloc::exactText(v);
     double back = 0.0;
     std::from_chars(s.data(), s.data() + s.size(), back);
     EXPECT_EQ(back, v) << s;
   }
-  EXPECT_EQ(cv::exact(Vec2{1.0, -0.5}), "(1, -0.5)");
+  EXPECT_EQ(convexloc::exactText(Vec2{1.0, -0.5}), "(1, -0.5)");
   EXPECT_EQ(cv::grouped(1234567), "1 234 567");
   EXPECT_EQ(cv::grouped(12), "12");
-  EXPECT_EQ(cv::bytesText(512), "512 B");
+  EXPECT_EQ(convexloc::binarySize(512), "512 B");
 }
 
 TEST(Text, TraceIsToldStepByStep) {
@@ -200,8 +221,7 @@ TEST(Text, TraceIsToldStepByStep) {
   ASSERT_TRUE(s.setShape(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 3}, {0, 3}}, "box"));
   s.setMethod(Method2D::Polar);
   s.place({1.0, 1.0});
-  const auto lines =
-      cv::describeTrace(s.probe()->trace, s.probe()->point, s.polygon(), s.effectiveResolution());
+  const auto lines = cv::describeTrace(s.probe()->trace, s.probe()->point, s.polygon());
   ASSERT_GE(lines.size(), 4u);
   EXPECT_EQ(lines.front().kind, cv::TraceLine::Heading);
   EXPECT_EQ(lines.back().kind, cv::TraceLine::Result);

@@ -3,7 +3,7 @@
 
 #include "convexloc/generate2d.hpp"
 #include "convexloc/locate2d.hpp"
-#include "logic/picking.hpp"
+#include "logic/view/picking.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Vec2;

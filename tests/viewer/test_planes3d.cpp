@@ -11,9 +11,9 @@
 #include "convexloc/crossing.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/intersect3d.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/planes3d.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/dual/planes3d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Crossing;

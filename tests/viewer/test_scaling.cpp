@@ -7,10 +7,10 @@
 #include <string_view>
 #include <vector>
 
-#include "logic/log_plot.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/scaling.hpp"
+#include "logic/teach/log_plot.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/teach/scaling.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Method2D;

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "convexloc/generate2d.hpp"
-#include "logic/model.hpp"
-#include "logic/presets.hpp"
-#include "logic/scene2d.hpp"
+#include "logic/app/model.hpp"
+#include "logic/scene/presets.hpp"
+#include "logic/scene/scene2d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;
@@ -282,7 +282,7 @@ TEST(Scene2D, ChosenResolutionsStayDefaultOnesGoWithTheDefaultShape) {
 TEST(Model, AskedViewReplacesTheFitOnce) {
   cv::Model m;
   cv::Options o;
-  o.view = convexloc::Vec3{1e9, -1e9, 1e-6};
+  o.view = cv::AskedView{{1e9, -1e9}, 1e-6};
   m.apply(o);
   m.camera2d.setViewport({1000.0, 800.0});
   const cv::ScreenRect area{{200.0, 0.0}, {1000.0, 800.0}};

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <string>
 
-#include "logic/interaction.hpp"
-#include "logic/model.hpp"
-#include "logic/scene3d.hpp"
-#include "logic/structure3d.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/app/model.hpp"
+#include "logic/scene/scene3d.hpp"
+#include "logic/draw/structure3d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;

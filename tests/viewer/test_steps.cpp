@@ -12,12 +12,12 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate2d.hpp"
 #include "convexloc/locate3d.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/steps.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/structure3d.hpp"
-#include "logic/text.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/base/format.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "logic/draw/structure3d.hpp"
+#include "logic/narration/steps.hpp"
 
 namespace cv = convexloc::viewer;
 using namespace convexloc;

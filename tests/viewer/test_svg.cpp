@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "convexloc/generate2d.hpp"
-#include "logic/camera2d.hpp"
-#include "logic/legend.hpp"
-#include "logic/model.hpp"
-#include "logic/options.hpp"
-#include "logic/scene2d.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/svg_writer.hpp"
+#include "logic/app/legend.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/view/camera2d.hpp"
+#include "writers/svg_writer.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;
@@ -253,6 +253,32 @@ TEST(Legend, ListsOnlyWhatIsDrawn) {
   EXPECT_TRUE(lists(cv::legendOf(model), "section"));
   model.scene3d().setSlice({2, -30.0});
   EXPECT_FALSE(lists(cv::legendOf(model), "section"));
+}
+
+// the SVG's caption is broken into the lines the window's caption box shows (one text
+// layout), each within the box, none losing a word
+TEST(Svg, ALongCaptionWrapsAsTheWindowsCaptionBox) {
+  cv::SvgScene s;
+  s.size = {400.0, 300.0};
+  s.fontPixels = 10.0;
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.caption = "a slide caption long enough to need several lines at this width, -0.2791048542";
+  const std::string svg = cv::sceneSvg(s);
+  std::map<std::string, int> counts;
+  ASSERT_EQ(checkXml(svg, counts), "");
+  const auto atCaptionSize = [&](std::string_view t) { return s.measure(t) * 1.6; };
+  const std::vector<std::string> lines = cv::captionLines(s.caption, 400.0, 8.0, atCaptionSize);
+  ASSERT_GT(lines.size(), 2u);
+  std::string joined;
+  std::size_t at = 0;
+  for (const std::string& line : lines) {
+    EXPECT_LE(atCaptionSize(line).x, 0.9 * 400.0 - 16.0) << line;
+    at = svg.find(">" + line + "</text>", at);
+    ASSERT_NE(at, std::string::npos) << line;
+    joined += (joined.empty() ? "" : " ") + line;
+  }
+  EXPECT_EQ(joined, s.caption);
 }
 
 TEST(Svg, TheLegendIsWrittenWithItsRows) {

@@ -12,10 +12,7 @@ std::array<PyObject*, 5> gTypes{};
 
 // "FILE:LINE: problem", as the command-line tool prints it ("-" is standard input)
 std::string fileMessage(const std::string& path, std::size_t line, const std::string& problem) {
-  if (path.empty()) return problem;
-  std::string where = path == "-" ? "<stdin>" : path;
-  if (line > 0) where += ':' + std::to_string(line);
-  return where + ": " + problem;
+  return convexloc::located(path, line, problem);
 }
 
 // a new exception class convexloc.<name> deriving from `bases` (a class or a tuple)

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "logic/colour.hpp"
+#include "logic/base/colour.hpp"
 
 namespace convexloc::viewer {
 

@@ -11,16 +11,23 @@
 
 #include "convexloc/geometry.hpp"
 #include "gl/gl.hpp"
+#include "gl/no_copy.hpp"
 #include "gl/shader.hpp"
-#include "logic/camera2d.hpp"
-#include "logic/colour.hpp"
-#include "logic/draw_list.hpp"
-#include "logic/no_copy.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/draw_list.hpp"
+#include "logic/view/camera2d.hpp"
 
 namespace convexloc::viewer {
 
 // the draw lists the renderer keeps
-enum class Layer : int { Structure = 0, Overlay = 1, Mesh = 2, Section = 3, SplitStructure = 4, SplitOverlay = 5 };
+enum class Layer : int {
+  Structure = 0,
+  Overlay = 1,
+  Mesh = 2,
+  Section = 3,
+  SplitStructure = 4,
+  SplitOverlay = 5
+};
 inline constexpr int kLayerCount = 6;
 
 // which triangles a fill draw skips

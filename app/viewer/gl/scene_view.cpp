@@ -5,11 +5,11 @@
 #include <chrono>
 #include <cmath>
 
-#include "logic/build_anim.hpp"
-#include "logic/dual_view2d.hpp"
-#include "logic/dual_view3d.hpp"
-#include "logic/structure2d.hpp"
-#include "logic/structure3d.hpp"
+#include "logic/teach/build_anim.hpp"
+#include "logic/dual/dual_view2d.hpp"
+#include "logic/dual/dual_view3d.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "logic/draw/structure3d.hpp"
 
 namespace convexloc::viewer {
 namespace {

@@ -8,8 +8,8 @@
 #include <glm/glm.hpp>
 
 #include "gl/renderer.hpp"
-#include "logic/draw_list.hpp"
-#include "logic/model.hpp"
+#include "logic/base/draw_list.hpp"
+#include "logic/app/model.hpp"
 
 namespace convexloc::viewer {
 

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "gl/gl.hpp"
-#include "logic/no_copy.hpp"
+#include "gl/no_copy.hpp"
 
 namespace convexloc::viewer {
 

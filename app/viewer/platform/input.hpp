@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "logic/actions.hpp"
-#include "logic/interaction.hpp"
+#include "logic/app/actions.hpp"
+#include "logic/app/interaction.hpp"
 
 struct GLFWwindow;
 

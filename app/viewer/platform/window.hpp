@@ -7,8 +7,8 @@
 
 #include <glm/glm.hpp>
 
-#include "logic/no_copy.hpp"
-#include "logic/options.hpp"
+#include "gl/no_copy.hpp"
+#include "logic/app/options.hpp"
 
 struct GLFWwindow;
 

@@ -14,6 +14,29 @@ ImVec4 im(Rgba c) {
   return {c.r, c.g, c.b, c.a};
 }
 
+// a colour of ImGui's style the themes set: the dark theme's, and the light theme's where
+// it sets one (alpha below 0: the light theme keeps ImGui's own)
+struct ThemeColour {
+  ImGuiCol what;
+  ImVec4 dark, light;
+};
+const ImVec4 kImGuis{0.0f, 0.0f, 0.0f, -1.0f};
+
+// the window, frame, header, button and separator colours
+const ThemeColour kThemeColours[] = {
+    {ImGuiCol_WindowBg, {0.105f, 0.115f, 0.135f, 0.94f}, {0.965f, 0.965f, 0.96f, 0.96f}},
+    {ImGuiCol_ChildBg, {0.0f, 0.0f, 0.0f, 0.0f}, kImGuis},
+    {ImGuiCol_PopupBg, {0.12f, 0.13f, 0.155f, 0.98f}, kImGuis},
+    {ImGuiCol_FrameBg, {0.17f, 0.185f, 0.215f, 1.0f}, {1.0f, 1.0f, 1.0f, 1.0f}},
+    {ImGuiCol_FrameBgHovered, {0.22f, 0.24f, 0.28f, 1.0f}, kImGuis},
+    {ImGuiCol_FrameBgActive, {0.26f, 0.29f, 0.34f, 1.0f}, kImGuis},
+    {ImGuiCol_Header, {0.17f, 0.19f, 0.23f, 1.0f}, {0.88f, 0.89f, 0.91f, 1.0f}},
+    {ImGuiCol_HeaderHovered, {0.22f, 0.25f, 0.30f, 1.0f}, {0.83f, 0.86f, 0.90f, 1.0f}},
+    {ImGuiCol_HeaderActive, {0.26f, 0.30f, 0.36f, 1.0f}, {0.78f, 0.83f, 0.89f, 1.0f}},
+    {ImGuiCol_Button, {0.20f, 0.23f, 0.28f, 1.0f}, {0.88f, 0.90f, 0.93f, 1.0f}},
+    {ImGuiCol_Separator, {0.25f, 0.27f, 0.31f, 1.0f}, kImGuis},
+};
+
 // places a font may be installed (Debian's fonts-dejavu-core first)
 // the font's height at scale 1, in points
 constexpr float kBaseFontPixels = 16.0f;
@@ -48,29 +71,16 @@ void applyStyle(Theme theme, float scale) {
   const Palette& p = paletteFor(theme);
   ImVec4* c = style.Colors;
   const Rgba accent = theme == Theme::Dark ? hex(0x4f8fd6) : hex(0x2f6fb6);
+  for (const ThemeColour& t : kThemeColours) {
+    const ImVec4& colour = theme == Theme::Dark ? t.dark : t.light;
+    if (colour.w >= 0.0f) c[t.what] = colour;
+  }
   if (theme == Theme::Dark) {
-    c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.115f, 0.135f, 0.94f);
-    c[ImGuiCol_ChildBg] = ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
-    c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.155f, 0.98f);
-    c[ImGuiCol_FrameBg] = ImVec4(0.17f, 0.185f, 0.215f, 1.0f);
-    c[ImGuiCol_FrameBgHovered] = ImVec4(0.22f, 0.24f, 0.28f, 1.0f);
-    c[ImGuiCol_FrameBgActive] = ImVec4(0.26f, 0.29f, 0.34f, 1.0f);
-    c[ImGuiCol_Header] = ImVec4(0.17f, 0.19f, 0.23f, 1.0f);
-    c[ImGuiCol_HeaderHovered] = ImVec4(0.22f, 0.25f, 0.30f, 1.0f);
-    c[ImGuiCol_HeaderActive] = ImVec4(0.26f, 0.30f, 0.36f, 1.0f);
-    c[ImGuiCol_Button] = ImVec4(0.20f, 0.23f, 0.28f, 1.0f);
     c[ImGuiCol_ButtonHovered] = im(withAlpha(accent, 0.75f));
     c[ImGuiCol_ButtonActive] = im(accent);
-    c[ImGuiCol_Separator] = ImVec4(0.25f, 0.27f, 0.31f, 1.0f);
     c[ImGuiCol_TitleBg] = c[ImGuiCol_WindowBg];
     c[ImGuiCol_TitleBgActive] = c[ImGuiCol_WindowBg];
   } else {
-    c[ImGuiCol_WindowBg] = ImVec4(0.965f, 0.965f, 0.96f, 0.96f);
-    c[ImGuiCol_FrameBg] = ImVec4(1.0f, 1.0f, 1.0f, 1.0f);
-    c[ImGuiCol_Header] = ImVec4(0.88f, 0.89f, 0.91f, 1.0f);
-    c[ImGuiCol_HeaderHovered] = ImVec4(0.83f, 0.86f, 0.90f, 1.0f);
-    c[ImGuiCol_HeaderActive] = ImVec4(0.78f, 0.83f, 0.89f, 1.0f);
-    c[ImGuiCol_Button] = ImVec4(0.88f, 0.90f, 0.93f, 1.0f);
     c[ImGuiCol_ButtonHovered] = im(withAlpha(accent, 0.35f));
     c[ImGuiCol_ButtonActive] = im(withAlpha(accent, 0.55f));
   }

@@ -1,8 +1,8 @@
 // convexloc-viewer — how the panels look: the ImGui theme and the font.
 #pragma once
 
-#include "logic/colour.hpp"
-#include "logic/model.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/app/model.hpp"
 
 namespace convexloc::viewer {
 

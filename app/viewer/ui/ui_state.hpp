@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "logic/lecture.hpp"
-#include "logic/scene2d.hpp"
-#include "logic/scene3d.hpp"
+#include "logic/app/lecture.hpp"
+#include "logic/scene/scene2d.hpp"
+#include "logic/scene/scene3d.hpp"
 
 namespace convexloc::viewer {
 

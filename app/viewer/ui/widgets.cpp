@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "logic/label_layout.hpp"
-#include "logic/legend.hpp"
-#include "logic/presets.hpp"
+#include "logic/view/label_layout.hpp"
+#include "logic/app/legend.hpp"
+#include "logic/scene/presets.hpp"
 
 namespace convexloc::viewer {
 
@@ -242,6 +242,11 @@ void drawLegend(const Legend& legend) {
     swatch(r);
     ImGui::TextUnformatted(r.text.c_str());
   }
+}
+
+glm::dvec2 measureText(std::string_view text) {
+  const ImVec2 v = ImGui::CalcTextSize(text.data(), text.data() + text.size());
+  return {v.x, v.y};
 }
 
 }  // namespace convexloc::viewer

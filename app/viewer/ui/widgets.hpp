@@ -11,10 +11,11 @@
 
 #include <imgui.h>
 
-#include "logic/colour.hpp"
-#include "logic/legend.hpp"
-#include "logic/model.hpp"
-#include "logic/text.hpp"
+#include "logic/app/legend.hpp"
+#include "logic/app/model.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/format.hpp"
+#include "logic/narration/steps.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {
@@ -110,5 +111,8 @@ void pointsPanel(Model& model, UiState& ui, Scene& scene) {
   if (!scene.points().empty())
     ImGui::TextDisabled("classified at %s ns/point", nsText(scene.locateNsPerPoint()).c_str());
 }
+
+// the width and height of a text in the window's current font
+glm::dvec2 measureText(std::string_view text);
 
 }  // namespace convexloc::viewer

@@ -19,6 +19,16 @@ private:
   std::size_t line_;
 };
 
+// "FILE:LINE: problem", as every front end reports a problem (the CLI, the Python module,
+// the viewer): the file ("-" reads "<stdin>"), ":LINE" where line > 0, then the problem;
+// the problem alone when there is no file.
+inline std::string located(const std::string& file, std::size_t line, const std::string& problem) {
+  if (file.empty()) return problem;
+  std::string where = file == "-" ? "<stdin>" : file;
+  if (line > 0) where += ':' + std::to_string(line);
+  return where + ": " + problem;
+}
+
 // The text of a file is malformed: a bad number, a wrong field count, garbage.
 class ParseError : public Error {
 public:

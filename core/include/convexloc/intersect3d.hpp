@@ -9,7 +9,7 @@
 //   vertices  O(V)  every vertex's sign (the baseline)
 //   dual      O(1)  a cube map of directions, labelled through the dual polyhedron,
 //                   proposes the two vertices, an exact climb over the vertex graph confirms
-//                   them (see core/src/intersect/plane_dual.cpp for when the O(1) holds)
+//                   them (see core/src/intersect/dual_cubemap.cpp for when the O(1) holds)
 #pragma once
 
 #include <cstddef>

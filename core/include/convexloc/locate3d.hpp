@@ -105,6 +105,11 @@ struct Stats3D {
                                        // counts every cell holding at least that many
 };
 
+// the cube map's faces by number (Trace3D::cubeFace, Cell3D::cubeFace): face 2a + 1 looks
+// down axis a, face 2a up it
+inline constexpr std::array<std::string_view, 6> kCubeFaceNames = {"+x", "-x", "+y",
+                                                                   "-y", "+z", "-z"};
+
 // One cubemap cell, for drawing and teaching: a square on a cube face and the pyramid it
 // spans from the centre.
 struct Cell3D {

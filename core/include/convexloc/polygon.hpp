@@ -50,8 +50,6 @@ class ConvexPolygon {
   std::span<const std::uint32_t> sourceIndex() const noexcept { return source_; }
   // how many input points normalisation dropped (repeated or collinear)
   std::size_t droppedCount() const noexcept { return dropped_; }
-  // how many of those repeated the vertex before them (the rest lay on an edge)
-  std::size_t repeatedCount() const noexcept { return repeated_; }
   // whether the input was clockwise and got reversed
   bool wasClockwise() const noexcept { return clockwise_; }
   // the signed area, in double precision (for display, never for a decision)
@@ -62,7 +60,6 @@ class ConvexPolygon {
   std::vector<std::uint32_t> source_;
   Box2 bounds_{};
   std::size_t dropped_ = 0;
-  std::size_t repeated_ = 0;
   bool clockwise_ = false;
 };
 

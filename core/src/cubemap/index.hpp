@@ -100,6 +100,54 @@ inline Vec3 cubeDirection(int face, double s, double t) {
   return {w[0], w[1], w[2]};
 }
 
+// The cube face of direction d (finite) and its face coordinates (s, t), as the file's head
+// sets out: the major axis a (x before y before z on ties, without a branch: random
+// directions would mispredict one), the face 2a or 2a + 1 by its sign, and (s, t) =
+// (d_u, d_v) / |d_a| as one division and two products; -1 when d = 0.
+[[gnu::always_inline]] inline int faceCoordinates(const double d[3], double& s,
+                                                  double& t) noexcept {
+  const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
+  constexpr int kU[3] = {1, 2, 0}, kV[3] = {2, 0, 1};
+  const int xWins = static_cast<int>(ax >= ay) & static_cast<int>(ax >= az);
+  const int axis = (1 - xWins) * (1 + static_cast<int>(!(ay >= az)));  // arithmetic, no jump
+  const double major = d[axis], du = d[kU[axis]], dv = d[kV[axis]];
+  if (major == 0) return -1;
+  // within 2 ulps of the quotients; below 2^-1023 the reciprocal overflows, and the
+  // quotients are taken as they are
+  const double m = std::fabs(major), inv = 1.0 / m;
+  if (inv <= std::numeric_limits<double>::max()) {
+    s = du * inv;
+    t = dv * inv;
+  } else {
+    s = du / m;
+    t = dv / m;
+  }
+  return 2 * axis + (major < 0 ? 1 : 0);
+}
+
+// the base cell (baseCellIndex) of direction w on a grid of g cells per cube-face side; -1
+// when w is zero or not finite
+inline std::int64_t directionCell(Vec3 w, std::uint32_t g) noexcept {
+  const double d[3] = {w.x, w.y, w.z};
+  if (!(std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z) < std::numeric_limits<double>::infinity()))
+    return -1;
+  double s = 0, t = 0;
+  const int face = faceCoordinates(d, s, t);
+  if (face < 0) return -1;
+  const double half = 0.5 * g;
+  auto slot = [&](double c) {
+    return std::min<std::uint64_t>(g - 1, static_cast<std::uint64_t>((c + 1) * half));
+  };
+  return static_cast<std::int64_t>(
+      baseCellIndex(static_cast<std::uint64_t>(face), slot(s), slot(t), g));
+}
+
+// the direction through the middle of base cell `index` (the inverse of directionCell)
+inline Vec3 cellDirection(std::size_t index, std::uint32_t g) {
+  const BaseCell c = baseCellAt(index, g);
+  return cubeDirection(c.face, (2.0 * c.i + 1) / g - 1, (2.0 * c.j + 1) / g - 1);
+}
+
 }  // namespace convexloc::cubemap
 
 namespace convexloc {
@@ -114,24 +162,9 @@ inline int CubemapLocator::aim(Vec3 p, Aim& a) const noexcept {
       !(ax <= std::numeric_limits<double>::max() && ay <= std::numeric_limits<double>::max() &&
         az <= std::numeric_limits<double>::max()))
     return -1;
-  // the dominant axis (x before y before z on ties), without a branch: random directions
-  // would mispredict one
-  constexpr int kU[3] = {1, 2, 0}, kV[3] = {2, 0, 1};
-  const int xWins = static_cast<int>(ax >= ay) & static_cast<int>(ax >= az);
-  const int axis = (1 - xWins) * (1 + static_cast<int>(!(ay >= az)));  // arithmetic, no jump
-  const double major = d[axis], du = d[kU[axis]], dv = d[kV[axis]];
-  if (major == 0) return 0;  // d = 0: p is the centre
-  a.face = 2 * axis + (major < 0 ? 1 : 0);
-  // one division and two products, within 2 ulps of the quotients; below 2^-1023 the
-  // reciprocal overflows, and the quotients are taken as they are
-  const double m = std::fabs(major), inv = 1.0 / m;
-  if (inv <= std::numeric_limits<double>::max()) {
-    a.s = du * inv;
-    a.t = dv * inv;
-  } else {
-    a.s = du / m;
-    a.t = dv / m;
-  }
+  const int face = cubemap::faceCoordinates(d, a.s, a.t);
+  if (face < 0) return 0;  // d = 0: p is the centre
+  a.face = face;
   a.d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   const std::uint64_t last = (static_cast<std::uint64_t>(resolution_) << deepestLevel_) - 1;
   // (s + 1) * deepScale_ lies in [0, 2^31]: the signed conversion is exact and needs no branch

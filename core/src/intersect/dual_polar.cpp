@@ -134,12 +134,10 @@ std::uint32_t slabsFor(std::size_t n) {
 // slab, so its cell is the other of the pair. False when w is zero or not finite.
 [[gnu::always_inline]] inline bool directionCells(double wx, double wy, std::uint32_t q,
                                                   std::int64_t& up, std::int64_t& down) noexcept {
-  const double ax = std::fabs(wx), ay = std::fabs(wy);
-  const double hi = std::max(ax, ay), lo = std::min(ax, ay);
-  if (!(ax + ay < std::numeric_limits<double>::infinity()) || hi == 0) return false;
-  const std::uint32_t k = std::min(static_cast<std::uint32_t>(lo / hi * q), q - 1);
-  const unsigned sx = std::signbit(wx) ? 1u : 0u, sy = std::signbit(wy) ? 1u : 0u;
-  const std::int64_t pair = (((sx ^ sy) << 1 | (ay > ax ? 1u : 0u)) * std::int64_t{q} + k) * 2;
+  polar::OctantSlab o;
+  if (!polar::octantSlab(wx, wy, static_cast<double>(q), q, o)) return false;
+  const unsigned sx = o.octant >> 2, sy = o.octant >> 1 & 1u, steep = o.octant & 1u;
+  const std::int64_t pair = (((sx ^ sy) << 1 | steep) * std::int64_t{q} + o.slab) * 2;
   up = pair + sx;
   down = pair + (sx ^ 1u);
   return true;

@@ -17,8 +17,8 @@
 #include "convexloc/table.hpp"
 #include "convexloc/timing.hpp"
 #include "intersect/blocks.hpp"
+#include "intersect/dual_cubemap.hpp"
 #include "intersect/graph3d.hpp"
-#include "intersect/plane_dual.hpp"
 #include "intersect/scan.hpp"
 
 namespace convexloc {

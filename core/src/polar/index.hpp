@@ -41,19 +41,35 @@ struct OctantLayout {
 inline constexpr OctantLayout kOctantLayout[8] = {{0, false}, {1, true},  {7, true},  {6, false},
                                                   {3, true},  {2, false}, {4, false}, {5, true}};
 
+// a direction's place among q slabs per octant: its octant index (kOctantLayout's: sign bit
+// of dx, sign bit of dy, |dy| > |dx|) and its slab floor(q min/max), clamped to q - 1
+struct OctantSlab {
+  unsigned octant = 0;
+  std::uint32_t slab = 0;
+};
+
+// The octant and slab of direction (dx, dy) with q slabs per octant (`scale` is q as a
+// double); false for the zero direction, a non-finite one, or one too long for the
+// arithmetic. The polar query, its trace and the dual's direction cells all index by it.
+[[gnu::always_inline]] inline bool octantSlab(double dx, double dy, double scale, std::uint32_t q,
+                                              OctantSlab& out) noexcept {
+  const double ax = std::fabs(dx), ay = std::fabs(dy);
+  const double hi = std::max(ax, ay), lo = std::min(ax, ay);  // maxsd / minsd, no branch
+  if (!(ax + ay < std::numeric_limits<double>::infinity()) || hi == 0) return false;
+  out.slab = std::min(static_cast<std::uint32_t>(lo / hi * scale), q - 1);
+  out.octant = (std::signbit(dx) ? 4u : 0u) | (std::signbit(dy) ? 2u : 0u) | (ay > ax ? 1u : 0u);
+  return true;
+}
+
 // the cell p maps to, or -1 for the centre itself, a non-finite point, or one too far for
 // the arithmetic
 [[gnu::always_inline]] inline std::int64_t cellIndex(const detail::PolarIndex& index,
                                                      Vec2 p) noexcept {
-  const double dx = p.x - index.centre.x, dy = p.y - index.centre.y;
-  const double ax = std::fabs(dx), ay = std::fabs(dy);
-  const double hi = std::max(ax, ay), lo = std::min(ax, ay);  // maxsd / minsd, no branch
-  if (!(ax + ay < std::numeric_limits<double>::infinity()) || hi == 0) return -1;
-  const std::uint32_t k =
-      std::min(static_cast<std::uint32_t>(lo / hi * index.slabScale), index.slabsPerOctant - 1);
-  const unsigned octant =
-      (std::signbit(dx) ? 4u : 0u) | (std::signbit(dy) ? 2u : 0u) | (ay > ax ? 1u : 0u);
-  return index.cellBase[octant] + index.cellStep[octant] * static_cast<std::int64_t>(k);
+  OctantSlab o;
+  if (!octantSlab(p.x - index.centre.x, p.y - index.centre.y, index.slabScale, index.slabsPerOctant,
+                  o))
+    return -1;
+  return index.cellBase[o.octant] + index.cellStep[o.octant] * static_cast<std::int64_t>(o.slab);
 }
 
 // the squared distance of p from c, as the query computes it

@@ -45,11 +45,11 @@ PolarIndexTrace indexNumbers(const detail::PolarIndex& index, Vec2 p) {
   n.steep = ay > ax;
   n.ratio = std::min(ax, ay) / std::max(ax, ay);
   n.slabs = index.slabsPerOctant;
-  n.slab = std::min(static_cast<std::uint32_t>(n.ratio * index.slabScale), n.slabs - 1);
-  const unsigned o = (std::signbit(n.direction.x) ? 4u : 0u) |
-                     (std::signbit(n.direction.y) ? 2u : 0u) | (n.steep ? 1u : 0u);
-  n.base = index.cellBase[o];
-  n.step = index.cellStep[o];
+  polar::OctantSlab o;
+  polar::octantSlab(n.direction.x, n.direction.y, index.slabScale, n.slabs, o);
+  n.slab = o.slab;
+  n.base = index.cellBase[o.octant];
+  n.step = index.cellStep[o.octant];
   return n;
 }
 

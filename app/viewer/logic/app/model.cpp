@@ -1,0 +1,428 @@
+// convexloc-viewer — the app's state.
+#include "logic/app/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "convexloc/generate2d.hpp"
+#include "convexloc/generate3d.hpp"
+#include "convexloc/mesh_reader.hpp"
+#include "logic/scene/presets.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// the extension of a path, lower case, with its dot ("" when none)
+std::string extensionOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext;
+}
+
+constexpr std::size_t kMaxRecent = 8;
+
+// the classes of sprayed points --show asks to draw (boundary points with inside or outside)
+unsigned visibleMaskFor(const std::string& show) {
+  if (show == "inside") return classBit(Location::Inside) | classBit(Location::Boundary);
+  if (show == "outside") return classBit(Location::Outside) | classBit(Location::Boundary);
+  if (show == "boundary") return classBit(Location::Boundary);
+  return kAllClasses;
+}
+
+}  // namespace
+
+float autoPointSize(std::size_t count, double areaPx) {
+  if (count == 0) return 5.0f;
+  const double spacing = std::sqrt(std::max(areaPx, 1.0) / static_cast<double>(count));
+  return static_cast<float>(std::clamp(0.32 * spacing, 1.5, 5.5));
+}
+
+void Model::fail(std::string message) {
+  error_ = std::move(message);
+  ++errorSerial_;
+}
+
+void Model::collectErrors() {
+  if (scene2d.errorSerial() != seen2d_) {
+    seen2d_ = scene2d.errorSerial();
+    if (!scene2d.error().empty()) fail(scene2d.error());
+  }
+  if (scene3d_ && scene3d_->errorSerial() != seen3d_) {
+    seen3d_ = scene3d_->errorSerial();
+    if (!scene3d_->error().empty()) fail(scene3d_->error());
+  }
+}
+
+Scene3D& Model::scene3d() {
+  if (!scene3d_) {
+    scene3d_ = std::make_unique<Scene3D>();
+    seen3d_ = scene3d_->errorSerial();
+    scene3d_->setTraceOptions({.radii = !settings.paperMode});
+  }
+  return *scene3d_;
+}
+
+void Model::show(Dim d) {
+  if (d == dim) return;
+  if (d == Dim::Three) scene3d();
+  dim = d;
+  requestFit();
+}
+
+void Model::remember(const std::string& path) {
+  recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+  recent.insert(recent.begin(), path);
+  if (recent.size() > kMaxRecent) recent.resize(kMaxRecent);
+}
+
+bool Model::open(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  const Dim d = meshFormatOf(ext).has_value() ? Dim::Three : Dim::Two;
+  if (!(d == Dim::Three ? scene3d().loadFile(path) : scene2d.loadFile(path))) {
+    collectErrors();
+    return false;
+  }
+  dim = d;
+  remember(path);
+  requestFit();
+  return true;
+}
+
+bool Model::applyPreset(std::string_view name) {
+  const Preset* p = findPreset(name);
+  if (!p) {
+    fail("no preset named '" + std::string(name) + "'");
+    return false;
+  }
+  if (p->solid) {
+    const PolyhedronKind kind =
+        name == "tiny-faces" ? PolyhedronKind::TinyFaces : PolyhedronKind::Coplanar;
+    if (!scene3d().generate(kind, 200, 1)) {
+      collectErrors();
+      return false;
+    }
+    dim = Dim::Three;
+    requestFit();
+    return true;
+  }
+  const std::vector<Vec2> v = presetPolygon(name);
+  if (!scene2d.setShape(
+          v, std::string(p->title) + " (" + std::to_string(v.size()) + " input points)")) {
+    collectErrors();
+    return false;
+  }
+  if (p->method) scene2d.setMethod(*p->method);
+  dim = Dim::Two;
+  requestFit();
+  return true;
+}
+
+void Model::note(const std::string& problem) {
+  if (firstProblem_.empty()) firstProblem_ = problem;
+  fail(problem);
+}
+
+void Model::noteSceneError() {
+  collectErrors();
+  note(error_);
+}
+
+std::string Model::apply(const Options& o) {
+  firstProblem_.clear();
+  settings.theme = o.theme;
+  settings.fontScale = o.fontScale;
+  settings.showUi = !o.hideUi;
+  // presentation
+  settings.present = o.present;
+  settings.showUi = settings.showUi && !o.present;
+  settings.showLegend = !o.noLegend;
+  settings.caption = o.caption;
+  // a slide whose drawing tells the steps (the split view's captions) without the window
+  settings.stepBoxVisible = !o.noSteps;
+  // a 3D method, --3d or a polyhedron kind ask for the 3D scene
+  const bool method3d = o.method && parseMethod3D(*o.method).has_value();
+  if (o.method && !method3d && !parseMethod2D(*o.method))
+    note("unknown method '" + *o.method +
+         "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
+  applyShape(o, method3d);
+  if (dim == Dim::Two)
+    apply2d(o, method3d);
+  else
+    apply3d(o, method3d);
+  if (o.show) settings.visibleMask = visibleMaskFor(*o.show);
+  // the query step by step: the mode first (it traces again), then the step
+  setPaperMode(o.paper);
+  setStep(o.step >= 1 ? o.step - 1 : -1);
+  applyFigureOptions(o);
+  applyTeachingViews(o);
+  collectErrors();
+  requestFit();
+  return firstProblem_;
+}
+
+void Model::applyShape(const Options& o, bool method3d) {
+  if (!o.shape.empty()) {
+    if (!open(o.shape)) note(error_);
+  } else if (o.preset) {
+    if (!applyPreset(*o.preset)) note(error_);
+  } else if (o.generate) {
+    applyGenerator(o, method3d);
+  } else if (o.solid || method3d || o.plane) {
+    scene3d();
+    dim = Dim::Three;
+  }
+}
+
+void Model::applyGenerator(const Options& o, bool method3d) {
+  const std::uint64_t seed = o.seed.value_or(1);
+  const auto k2 = parsePolygonKind(*o.generate);
+  const auto k3 = parsePolyhedronKind(*o.generate);
+  if (k3 && (!k2 || method3d || o.solid)) {
+    if (!scene3d().generate(*k3, o.n.value_or(320), seed))
+      noteSceneError();
+    else
+      dim = Dim::Three;
+  } else if (k2) {
+    if (!scene2d.generate(*k2, o.n.value_or(16), seed)) noteSceneError();
+  } else {
+    note("unknown generator kind '" + *o.generate + "'");
+  }
+}
+
+template <class Scene, class Method>
+void Model::applyToScene(Scene& scene, const Options& o, std::optional<Method> method) {
+  if (method) scene.setMethod(*method);
+  if (o.resolution && !scene.setResolution(*o.resolution)) noteSceneError();
+  if (o.spray || o.seed || o.nearBoundary) {
+    SpraySettings s = scene.spraySettings();
+    if (o.spray) s.count = *o.spray;
+    if (o.seed) s.seed = *o.seed;
+    s.nearBoundary = o.nearBoundary;
+    scene.spray(s);
+  }
+}
+
+void Model::apply2d(const Options& o, bool method3d) {
+  if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon");
+  applyToScene(scene2d, o, o.method ? parseMethod2D(*o.method) : std::nullopt);
+  if (o.probe) scene2d.place(*o.probe);
+  if (o.hover) scene2d.hover(*o.hover);
+  if (o.view) pendingView = *o.view;
+  if (o.line) {
+    setLinesMode(true);
+    lines2d.setLine(o.line->first, o.line->second);
+    lines2d.frameLine();
+    lines2d.sync(scene2d);
+  }
+  if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
+  if (o.plane) note("--plane is for a 3D scene; the scene is a polygon");
+}
+
+void Model::apply3d(const Options& o, bool method3d) {
+  Scene3D& s3 = scene3d();
+  if (o.method && !method3d) note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
+  applyToScene(s3, o, o.method ? parseMethod3D(*o.method) : std::nullopt);
+  if (o.slice) s3.setSlice(*o.slice);
+  if (o.probe3) s3.place(*o.probe3);
+  if (o.cell) {
+    if (*o.cell < s3.cells().size())
+      s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
+    else
+      note("--cell " + std::to_string(*o.cell) + ": the scene has " +
+           std::to_string(s3.cells().size()) + " cells");
+  }
+  if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
+  // the Planes mode with the plane asked
+  if (o.plane) {
+    setPlanesMode(true);
+    const auto& q = *o.plane;
+    planes3d.setPlane(q[0], q[1], q[2]);
+  }
+}
+
+// === Step by step
+
+std::optional<StepModel> Model::steps() const {
+  if (dim == Dim::Two) {
+    if (!scene2d.probe()) return std::nullopt;
+    return buildSteps(scene2d.probe()->trace, scene2d.probe()->point, scene2d.polygon());
+  }
+  if (!scene3d_ || !scene3d_->probe()) return std::nullopt;
+  const Bounds3 b = scene3d_->bounds();
+  return buildSteps3D(scene3d_->probe()->trace, scene3d_->probe()->point, glm::length(b.hi - b.lo));
+}
+
+int Model::step() const {
+  const std::optional<StepModel> m = steps();
+  if (!m) return -1;
+  const int k = dim == Dim::Two ? scene2d.step() : scene3d_->step();
+  return clampStep(k, m->steps.size());
+}
+
+void Model::setStep(int k) {
+  const std::optional<StepModel> m = steps();
+  const int shown = m ? clampStep(k, m->steps.size()) : k;
+  if (dim == Dim::Two)
+    scene2d.setStep(shown);
+  else
+    scene3d().setStep(shown);
+}
+
+void Model::stepBy(bool forward) {
+  const std::optional<StepModel> m = steps();
+  if (!m) return;
+  stepPlayer.playing = false;
+  setStep(nextStep(step(), m->steps.size(), forward));
+}
+
+void Model::setPaperMode(bool on) {
+  settings.paperMode = on;
+  scene2d.setTraceOptions({.radii = !on});
+  if (scene3d_) scene3d_->setTraceOptions({.radii = !on});
+}
+
+void Model::applyFigureOptions(const Options& o) {
+  if (o.yGap) settings.view2d.showGap = true;
+  if (o.hideSlice) settings.view3d.showSlice = false;
+  if (dim != Dim::Three || (!o.cellAuto && !o.cellSecond)) return;
+  Scene3D& s3 = scene3d();
+  if (o.cellAuto) {
+    const auto [one, many] = s3.typicalCells();
+    s3.pin(one);
+    s3.pinSecond(many);
+  } else if (*o.cellSecond < s3.cells().size()) {
+    s3.pinSecond(static_cast<std::ptrdiff_t>(*o.cellSecond));
+  } else {
+    note("--cell " + std::to_string(*o.cellSecond) + ": the scene has " +
+         std::to_string(s3.cells().size()) + " cells");
+  }
+}
+
+void Model::reset() {
+  const Versions seen2 = scene2d.versions();
+  scene2d = Scene2D();
+  scene2d.followVersions(seen2);
+  seen2d_ = scene2d.errorSerial();
+  if (scene3d_) {
+    const Versions seen3 = scene3d_->versions();
+    scene3d_ = std::make_unique<Scene3D>();
+    scene3d_->followVersions(seen3);
+    seen3d_ = scene3d_->errorSerial();
+  }
+  lines2d.clearLine();
+  lines2d.setEnabled(false);
+  dim = Dim::Two;
+  settings.pointSize = 0.0f;
+  settings.visibleMask = kAllClasses;
+  settings.view2d = View2DOptions{};
+  settings.view3d = View3DOptions{};
+  settings.paperMode = false;  // the new scenes trace with the radius filter
+  settings.caption.clear();
+  pendingView.reset();
+  // the teaching views a slide opened: the split, the build, Why O(1), the Planes mode
+  split.setEnabled(false);
+  build.active = build.playing = false;
+  ++build.version;
+  if (whyOpen) scaling->cancel();
+  whyOpen = false;
+  planes3d.setEnabled(false);
+  requestFit();
+}
+
+// === Why O(1), the split view, the build animation
+
+void Model::applyTeachingViews(const Options& o) {
+  if (o.why) {
+    whyOpen = true;
+    scaling->start(scalingConfig(o.whyMost));
+    // a screenshot shows the finished plots
+    if (!o.screenshot.empty()) scaling->wait();
+  }
+  if (o.split) {
+    if (const auto m = parseMethod2D(*o.split)) {
+      split.setEnabled(dim == Dim::Two);
+      split.setMethod(*m);
+      split.sync(scene2d);
+    } else {
+      note("--split needs a 2D method (halfplane, wedge, slab, uniform, polar)");
+    }
+  }
+  if (o.buildStep) {
+    const std::size_t steps = dim == Dim::Two ? buildStepCount(scene2d) : buildStepCount(scene3d());
+    build.active = steps > 0;
+    build.show(*o.buildStep, steps);
+  }
+}
+
+void Model::setLinesMode(bool on) {
+  lines2d.setEnabled(on);
+  lines2d.sync(scene2d);
+  requestFit();
+}
+
+void Model::setPlanesMode(bool on) {
+  planes3d.setEnabled(on);
+  if (on) planes3d.sync(scene3d());
+  requestFit();
+}
+
+void Model::fit(ScreenRect area) {
+  if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
+    // the split view: the camera is fitted to the left half; the right one follows it
+    split.setArea(area);
+    area = split.left();
+  }
+  if (dim == Dim::Two) {
+    lines2d.sync(scene2d);
+    // a placed point up to one polygon size off it (a slide's probe) is fitted in view too
+    Box2 box = scene2d.polygon().bounds();
+    if (const auto& p = scene2d.probe(); p && !lines2d.enabled()) {
+      const double w = box.hi.x - box.lo.x, h = box.hi.y - box.lo.y;
+      const Vec2 q = p->point;
+      if (q.x >= box.lo.x - w && q.x <= box.hi.x + w && q.y >= box.lo.y - h && q.y <= box.hi.y + h)
+        box = {{std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)},
+               {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
+    }
+    camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : box, area);
+    if (pendingView) {
+      // the asked centre at the area's middle, the asked width across it
+      const double scale = area.size().x / pendingView->width;
+      camera2d.set({pendingView->centre.x, pendingView->centre.y}, scale);
+      camera2d.pan(area.middle() - 0.5 * camera2d.viewport());
+      pendingView.reset();
+    }
+    return;
+  }
+  // the polyhedron and the cube the cells are drawn on
+  Scene3D& s = scene3d();
+  Bounds3 b = s.bounds();
+  if (const double h = s.cubeHalfSize(); h > 0.0 && s.centre()) {
+    const glm::dvec3 c = toGlm(*s.centre());
+    b.lo = glm::min(b.lo, c - h);
+    b.hi = glm::max(b.hi, c + h);
+  }
+  // the Planes mode: the dual view beside, along the camera's right
+  if (planes3d.enabled()) {
+    planes3d.sync(s);
+    planes3d.placeDual(camera3d.right());
+    b = planes3d.both();
+  }
+  camera3d.fit(b, area);
+}
+
+ScreenProjection sceneProjection(const Model& model) {
+  if (model.dim == Dim::Two)
+    return [cam = model.camera2d](glm::dvec3 p) -> std::optional<glm::dvec3> {
+      return glm::dvec3(cam.toScreen({p.x, p.y}), 0.0);
+    };
+  return [cam = model.camera3d](glm::dvec3 p) -> std::optional<glm::dvec3> {
+    const Projected q = cam.toScreen(p);
+    if (!q.visible()) return std::nullopt;
+    return glm::dvec3(q.screen, q.w);
+  };
+}
+
+}  // namespace convexloc::viewer

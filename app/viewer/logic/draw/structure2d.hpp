@@ -1,0 +1,51 @@
+// convexloc-viewer — what the 2D scene draws, built from what core reports: the polygon,
+// each method's cells (their outlines, the polar rays' box exits, the edges they list),
+// the centre, the box, the placed point's trace, the hovered cell, a dragged vertex.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "logic/base/colour.hpp"
+#include "logic/base/draw_list.hpp"
+#include "logic/scene/scene2d.hpp"
+
+namespace convexloc::viewer {
+
+// what the structure layer shows
+struct View2DOptions {
+  bool showStructure = true;  // the method's cells (rays, slabs, fan, edge lines)
+  bool showTints = true;      // cells listing extra edges tinted apart
+  bool showBox = true;        // the bounding box
+  bool showOctants = true;    // polar: the eight octant lines through the centre
+  bool showLabels = true;     // vertex, octant and edge numbers where they fit
+  bool showHandles = true;    // vertex handles (drag to edit)
+  bool showCentre = true;     // the method's centre x_T (off in the Lines mode)
+  bool showGap = false;       // the smallest y-gap marked, with the paper's slab count
+};
+
+// limits above which the drawing thins out (the scene stays exact, only less is drawn)
+inline constexpr std::size_t kMaxLabelledVertices = 40;
+inline constexpr std::size_t kMaxHandles = 400;
+inline constexpr std::size_t kMaxCellLines = 40000;
+inline constexpr std::size_t kMaxFilledVertices = 1 << 16;
+
+// the static layer: rebuilt when the shape, the method or the palette changes
+void buildStructure2D(const Scene2D& scene, const Palette& palette, const View2DOptions& options,
+                      DrawList& out);
+
+// the overlay: hover, the placed point's trace, a drag; rebuilt when those change
+void buildOverlay2D(const Scene2D& scene, const Palette& palette, const View2DOptions& options,
+                    DrawList& out);
+
+// the position in scene.cells() of the cell whose index is `index`, or -1
+std::ptrdiff_t cellPosition(const Scene2D& scene, std::int64_t index);
+
+// the part of the line through a and b inside the box, if any (drawing only)
+bool clipLineToBox(glm::dvec2 a, glm::dvec2 b, const Box2& box, glm::dvec2& p, glm::dvec2& q);
+
+// the box grown by `fraction` of its size on each side
+Box2 grow(const Box2& b, double fraction);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,172 @@
+// convexloc-viewer — Why O(1), measured: every 2D method on regular N-gons of growing N,
+// the mean predicates per query (core's trace: edge and ray tests) and the nanoseconds
+// per query (core's batch locate); and the paper's uniform-slab memory against the
+// smallest y-gap beside convexloc's bounded memory. The measurement runs in a worker
+// thread that owns its own core objects; the UI reads a snapshot under a mutex. GL-free.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "convexloc/locate2d.hpp"
+#include "convexloc/locate3d.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/teach/log_plot.hpp"
+
+namespace convexloc::viewer {
+
+// what a measurement covers
+struct ScalingConfig {
+  std::vector<std::size_t> sizes;  // N, ascending
+  std::size_t tracedPoints = 300;  // random points traced per (method, N)
+  std::size_t timedPoints = 1 << 14;
+  double minSeconds = 0.02;           // each timing runs at least this long
+  std::size_t linearLimit = 1 << 18;  // the O(N) method stops above this N
+  std::vector<std::size_t> faces;     // 3D: F of the geodesic spheres, ascending
+  std::size_t linearLimit3d = 81920;  // the O(F) method stops above this F
+  std::uint64_t seed = 1;
+};
+
+// 8, 64, 512, ... (times 8) up to `most`, and `most` itself when it is not such a power
+std::vector<std::size_t> scalingSizes(std::size_t most = 1000000);
+// the 2D sizes up to `most` and the 3D ones (geodesicSizes) up to the same bound
+ScalingConfig scalingConfig(std::size_t most);
+
+// 20, 80, 320, ... (times 4: geodesic spheres) up to `most`, at most 327 680
+std::vector<std::size_t> geodesicSizes(std::size_t most = 1000000);
+
+// whether `m` is measured at N = n (the O(N) method stops above config.linearLimit)
+bool measured(const ScalingConfig& config, Method2D m, std::size_t n);
+// whether `m` is measured at F = f (the O(F) method stops above config.linearLimit3d)
+bool measured(const ScalingConfig& config, Method3D m, std::size_t f);
+
+// one method at one N
+struct ScalingSample {
+  std::size_t n = 0;
+  double predicates = 0.0;  // mean edge and ray tests per traced query
+  // polar: the mean edges the traced queries' cells list, what the paper's query tests
+  // (its cells carry no radii); 0 for the other methods
+  double cellEdges = 0.0;
+  double nsPerQuery = 0.0;  // batch locate, wall clock
+  std::size_t bytes = 0;    // the locator's memory
+};
+
+// one method over every N (F) it was measured at
+template <class Method>
+struct SeriesOf {
+  Method method{};
+  std::vector<ScalingSample> samples;
+};
+using ScalingSeries = SeriesOf<Method2D>;
+using ScalingSeries3D = SeriesOf<Method3D>;
+
+// the paper's uniform slabs against convexloc's bounded tables for one smallest y-gap
+struct MemorySample {
+  double gap = 0.0;         // the polygon's smallest positive difference of vertex y
+  double paperSlabs = 0.0;  // (ymax - ymin) / gap
+  double paperBytes = 0.0;  // paperSlabs * kPaperSlabBytes
+  std::size_t uniformBytes = 0, polarBytes = 0;  // convexloc's, at core's resolution
+};
+
+// what the paper's slab costs at the least: its offset and its two active edges (4 B each)
+inline constexpr double kPaperSlabBytes = 12.0;
+
+struct ScalingResult {
+  std::vector<ScalingSeries> series;      // one per 2D method, in kAllMethods2D order
+  std::vector<ScalingSeries3D> series3d;  // one per 3D method (none when no F was asked)
+  std::vector<MemorySample> memory;       // gaps 1e-1 .. 1e-9
+};
+
+// a regular n-gon's (method, N) measurement; `traced` and `timed` are its query points
+ScalingSample measureMethod(const ConvexPolygon& polygon, Method2D m, std::span<const Vec2> traced,
+                            std::span<const Vec2> timed, double minSeconds);
+
+// a geodesic sphere's (method, F) measurement: plane and walk-edge tests, ns per query
+ScalingSample measureMethod3D(const ConvexPolyhedron& polyhedron, Method3D m,
+                              std::span<const Vec3> traced, std::span<const Vec3> timed,
+                              double minSeconds);
+
+// The memory comparison for one gap: a regular octagon plus a vertex `gap` above vertex 0
+// on the same circle.
+MemorySample measureMemory(double gap);
+
+// how far a run has come, and what it has found so far
+struct ScalingProgress {
+  std::size_t done = 0, total = 0;  // measurements
+  bool running = false, finished = false, cancelled = false;
+  std::string current;  // "polar, N = 4 096"
+  std::string error;
+  ScalingResult result;
+};
+
+// Runs a measurement in its own thread; cancel() and the destructor stop and join it.
+// (it owns a thread, and its mutex keeps it from being copied or moved)
+class ScalingWorker {
+ public:
+  ScalingWorker() = default;
+  ~ScalingWorker();
+  // starts a run (a running one is cancelled first)
+  void start(ScalingConfig config);
+  // asks the run to stop and waits for it
+  void cancel();
+  // waits for the run to end
+  void wait();
+  // a copy of the progress and the results so far
+  ScalingProgress snapshot() const;
+  const ScalingConfig& config() const { return config_; }
+  // whether a run is under way (without taking the lock)
+  bool running() const { return running_; }
+
+ private:
+  void run();
+  void runSize(std::size_t n);
+  void runSize3D(std::size_t f);
+  // measures every method of `methods` allowed at `size` into `series`, under the lock
+  template <class Method, class Measure>
+  void runMethods(std::span<const Method> methods, std::size_t size,
+                  std::vector<SeriesOf<Method>>& series, Measure measure);
+  ScalingConfig config_;
+  std::thread thread_;
+  mutable std::mutex mutex_;
+  ScalingProgress progress_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> running_{false};
+};
+
+// === The plots
+
+// the colour each method's curve is drawn in (Okabe and Ito's palette)
+Rgba methodColour(Method2D m);
+Rgba methodColour(Method3D m);
+// predicates per query against N, one series per method
+LogPlot predicatesPlot(const ScalingResult& r, const ScalingConfig& c);
+// nanoseconds per query against N
+LogPlot timePlot(const ScalingResult& r, const ScalingConfig& c);
+// bytes against the smallest y-gap: the paper's uniform slabs, convexloc's uniform and polar
+LogPlot memoryPlot(const ScalingResult& r);
+// the plot style of a theme at `fontPx`
+PlotStyle plotStyle(Theme theme, double fontPx);
+// planes (and walk edges) tested per query against F, one series per 3D method
+LogPlot predicatesPlot3D(const ScalingResult& r, const ScalingConfig& c);
+// nanoseconds per query against F
+LogPlot timePlot3D(const ScalingResult& r, const ScalingConfig& c);
+// The 2D page (`solid` false: predicates, time, memory, the summary) or the 3D page
+// (predicates, time, the summary) laid out `size` pixels large.
+std::vector<PlotDrawing> scalingDrawings(const ScalingResult& r, const ScalingConfig& c,
+                                         const PlotStyle& style, glm::dvec2 size,
+                                         bool solid = false);
+// a page as one standalone SVG document
+std::string scalingSvg(const ScalingResult& r, const ScalingConfig& c, Theme theme,
+                       bool solid = false);
+// writes scalingSvg to `path`; false and `error` when the file cannot be written
+bool writeScalingSvg(const std::string& path, const ScalingResult& r, const ScalingConfig& c,
+                     Theme theme, std::string& error, bool solid = false);
+// where the 3D page goes beside the 2D one: "x.svg" -> "x-3d.svg"
+std::string solidSvgPath(const std::string& path);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,130 @@
+// convexloc-viewer — the windows floating over the scene.
+#include "ui/overlays.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include <imgui.h>
+
+#include "logic/view/label_layout.hpp"
+#include "ui/frame.hpp"
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+
+void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window, double now) {
+  if (ui.legendMoved) {
+    const float x = std::clamp(ui.legendPos[0], 0.0f, static_cast<float>(window.x) - 40.0f);
+    const float y = std::clamp(ui.legendPos[1], 0.0f, static_cast<float>(window.y) - 30.0f);
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+  } else {
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f,
+                                   static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  }
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  ImGui::Begin("Legend", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  panelsOf(model).legend(model);
+  // dragged by hand (ImGui's own moving would fight the corner placement)
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  // a drag that began on the legend moves it until the button is let go
+  if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    ui.legendDragging = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui.legendDragging = false;
+  const ImVec2 delta = ImGui::GetIO().MouseDelta;
+  if (ui.legendDragging && (delta.x != 0.0f || delta.y != 0.0f) && ImGui::IsMousePosValid()) {
+    ui.legendMoved = true;
+    ui.legendPos[0] = pos.x + delta.x;
+    ui.legendPos[1] = pos.y + delta.y;
+  } else if (ImGui::IsWindowHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    ui.legendMoved = false;  // back to the corner, and the scene fitted beside it
+    model.requestFit();
+  } else if (ImGui::IsWindowHovered()) {
+    ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
+  }
+  if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
+      now < ui.refitUntil)
+    model.requestFit();  // fitted a moment ago for another size: fit again
+  ui.legendSize[0] = size.x;
+  ui.legendSize[1] = size.y;
+  // where it is, for the labels to keep off
+  ui.legendRect[0] = pos.x, ui.legendRect[1] = pos.y;
+  ui.legendRect[2] = pos.x + size.x, ui.legendRect[3] = pos.y + size.y;
+  ImGui::End();
+}
+
+void captionBox(Model& model, UiState& ui, ScreenRect area) {
+  // a caption of another height (a new slide's) leaves the scene other room: refit
+  struct Refit {
+    Model& model;
+    const float before;
+    const float& now;
+    ~Refit() {
+      if (std::abs(now - before) > 1.0f) model.requestFit();
+    }
+  } refit{model, ui.captionHeight, ui.captionHeight};
+  ui.captionHeight = 0.0f;
+  if (model.settings.caption.empty()) return;
+  ImGui::SetNextWindowPos(
+      ImVec2(static_cast<float>(area.middle().x), static_cast<float>(area.hi.y) - 8.0f),
+      ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowBgAlpha(0.9f);
+  ImGui::Begin("##caption", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                   ImGuiWindowFlags_NoInputs);
+  ImGui::SetWindowFontScale(1.5f);
+  const auto measure = [](std::string_view t) { return measureText(t); };
+  for (const std::string& line : captionLines(model.settings.caption, area.size().x,
+                                              ImGui::GetStyle().WindowPadding.x, measure))
+    ImGui::TextUnformatted(line.c_str());
+  ui.captionHeight = ImGui::GetWindowHeight() + 8.0f;
+  ImGui::End();
+}
+
+void toast(Model& model, UiState& ui, ScreenRect area, double now) {
+  if (model.errorSerial() != ui.toastSerial) {
+    ui.toastSerial = model.errorSerial();
+    ui.toast = model.error();
+    ui.toastUntil = now + 9.0;
+    if (!ui.toast.empty()) std::cerr << "convexloc-viewer: " << ui.toast << "\n";
+  }
+  const Palette& pal = paletteFor(model.settings.theme);
+  float y = 10.0f;
+  auto banner = [&](const char* id, const std::string& text, Rgba colour, bool closable,
+                    double& until) {
+    if (text.empty() || now > until) return;
+    const float w =
+        std::min(static_cast<float>(area.size().x) - 40.0f, ImGui::GetFontSize() * 36.0f);
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.middle().x), y), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0.0f), ImVec2(w, 400.0f));
+    ImGui::SetNextWindowBgAlpha(0.95f);
+    ImGui::PushStyleColor(ImGuiCol_Border, im(colour));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 1.5f);
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PushStyleColor(ImGuiCol_Text, im(colour));
+    // broken at spaces only: a number never splits across lines
+    for (const std::string& line :
+         breakAtSpaces(text, w - 2.0f * ImGui::GetStyle().WindowPadding.x, measureText))
+      ImGui::TextUnformatted(line.c_str());
+    ImGui::PopStyleColor();
+    if (closable && ImGui::SmallButton("dismiss")) until = 0.0;
+    y += ImGui::GetWindowHeight() + 6.0f;
+    ImGui::End();
+    ImGui::PopStyleVar();
+    ImGui::PopStyleColor();
+  };
+  banner("##error", ui.toast, pal.negative, true, ui.toastUntil);
+  banner("##notice", ui.notice, pal.positive, false, ui.noticeUntil);
+}
+
+}  // namespace convexloc::viewer

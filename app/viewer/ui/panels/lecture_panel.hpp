@@ -1,0 +1,38 @@
+// convexloc-viewer — lectures and the paper's figures in the UI: the slide card over the
+// scene (its number, title and caption, shown with the panels hidden too), the Lecture
+// panel (the slides, click to go; the paper's figures, one click each), the slide keys, and
+// opening --lecture or --figure at start.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "logic/app/actions.hpp"
+#include "logic/app/model.hpp"
+#include "logic/view/camera2d.hpp"
+#include "ui/ui_state.hpp"
+
+namespace convexloc::viewer {
+
+// Opens the command line's lecture at its first slide, or makes --figure N a one-slide
+// lecture. A bad lecture becomes the model's error (a toast); `headless` runs print it
+// and get false (nothing is to be written).
+bool startLecture(Model& model, UiState& ui, const Options& options, bool headless);
+
+// Shows slide k of the lecture (clamped), with the method comparison the slide asks for
+// (`compare`); the first problem, or an empty string.
+std::string showSlideNow(Model& model, UiState& ui, std::ptrdiff_t k);
+
+// shows slide k of the lecture (clamped); a problem becomes the model's error
+void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k);
+
+// the next, previous, first or last slide, for the key actions
+void moveSlide(ActionKind kind, Model& model, UiState& ui);
+
+// the slide card: "3 / 14: title" and the caption, over the scene's upper left corner
+void slideCard(Model& model, UiState& ui, ScreenRect area);
+
+// the Lecture panel in the left window: the slides and the paper's figures
+void lecturePanel(Model& model, UiState& ui);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,75 @@
+// convexloc-viewer — the View panel.
+#include "ui/panels/view_panel.hpp"
+
+#include <imgui.h>
+
+#include "logic/base/format.hpp"
+#include "ui/frame.hpp"
+#include "ui/key_actions.hpp"
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+
+namespace {
+
+// the presentation mode and legend check boxes
+void presentControls(Model& model, UiState& ui) {
+  Settings& s = model.settings;
+  bool present = s.present;
+  if (ImGui::Checkbox("presentation (P)", &present))
+    perform({ActionKind::TogglePresent, 0}, model, ui);
+  ImGui::SameLine();
+  bool legend = s.showLegend;
+  if (ImGui::Checkbox("legend (G)", &legend)) perform({ActionKind::ToggleLegend, 0}, model, ui);
+}
+
+// Screenshot and SVG, and the directory they write to
+void exportButtons(UiState& ui, float half) {
+  if (ImGui::Button("Screenshot", ImVec2(half, 0.0f))) ui.screenshotRequested = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: a PNG of the window, in the folder below");
+  ImGui::SameLine();
+  if (ImGui::Button("SVG", ImVec2(half, 0.0f))) ui.svgRequested = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("V or Shift+F12: the scene as a vector figure, in the folder below");
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::InputTextWithHint("##exportdir", "save to: the working directory", ui.exportDirEdit,
+                               sizeof ui.exportDirEdit))
+    ui.exportDir = ui.exportDirEdit;
+}
+
+}  // namespace
+
+void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
+  int theme = static_cast<int>(model.settings.theme);
+  if (ImGui::RadioButton("dark", theme == 0)) model.settings.theme = Theme::Dark;
+  ImGui::SameLine();
+  if (ImGui::RadioButton("light", theme == 1)) model.settings.theme = Theme::Light;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::SliderFloat("##font", &ui.fontScaleEdit, 0.75f, 2.5f, "text %.2fx");
+  if (ImGui::IsItemDeactivatedAfterEdit()) ui.pendingFontScale = ui.fontScaleEdit;
+
+  panelsOf(model).viewOptions(model);
+
+  presentControls(model, ui);
+  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+  exportButtons(ui, half);
+  if (ImGui::Button("Fit (F)", ImVec2(half, 0.0f))) model.requestFit();
+  ImGui::SameLine();
+  if (ImGui::Button("Shaders", ImVec2(half, 0.0f))) ui.reloadShaders = true;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Reload the shaders from %s", renderer.shaderDir().c_str());
+  if (!renderer.shaderLog().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, im(paletteFor(model.settings.theme).negative));
+    ImGui::TextWrapped("%s", renderer.shaderLog().c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::TextDisabled("%.2f ms/frame (%.0f fps), %s points", ui.frameMs,
+                      ui.frameMs > 0 ? 1000.0 / ui.frameMs : 0.0,
+                      grouped(renderer.pointCount()).c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  textAtSpaces(ui.glInfo);
+  ImGui::PopStyleColor();
+}
+
+}  // namespace convexloc::viewer

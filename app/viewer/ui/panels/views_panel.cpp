@@ -1,0 +1,127 @@
+// convexloc-viewer — the split view's, the build animation's and Why O(1)'s controls.
+#include "ui/panels/views_panel.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+#include "logic/base/format.hpp"
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+
+void splitControls(Model& model) {
+  bool on = model.split.enabled();
+  if (ImGui::Checkbox("Split view", &on)) {
+    model.split.setEnabled(on);
+    model.requestFit();
+  }
+  help(
+      "The scene twice: the current method on the left, a second one on the right, with the "
+      "same points and one camera. Each half traces the placed point itself.");
+  if (!on) return;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  const std::string name(toString(model.split.method()));
+  if (ImGui::BeginCombo("##second", ("right: " + name).c_str())) {
+    for (const Method2D m : kAllMethods2D)
+      if (ImGui::Selectable(std::string(toString(m)).c_str(), m == model.split.method()))
+        model.split.setMethod(m);
+    ImGui::EndCombo();
+  }
+}
+
+namespace {
+
+// the build's steps in the scene shown
+std::size_t stepsShown(Model& model) {
+  return model.dim == Dim::Two ? buildStepCount(model.scene2d) : buildStepCount(model.scene3d());
+}
+
+}  // namespace
+
+void buildControls(Model& model) {
+  BuildPlayback& b = model.build;
+  const std::size_t steps = stepsShown(model);
+  if (steps == 0) {
+    b.active = false;
+    return;
+  }
+  const char* label = !b.active ? "Build" : b.playing ? "Pause" : "Play";
+  if (ImGui::Button(label)) {
+    if (!b.active || b.step >= steps) b.show(0, steps);
+    b.active = true;
+    b.playing = !b.playing;
+    ++b.version;
+  }
+  help(
+      "The cells receiving their edges (faces) one at a time, in order: the cells listing the "
+      "one just added flash, tints grow with what they hold, crowded cells get a cross.");
+  if (!b.active) return;
+  ImGui::SameLine();
+  int k = static_cast<int>(b.step);
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetFontSize() * 3.5f);
+  const bool plane = model.dim == Dim::Two;
+  if (ImGui::SliderInt("##buildstep", &k, 0, static_cast<int>(steps),
+                       plane ? "edge %d" : "face %d"))
+    b.show(static_cast<std::size_t>(k), steps);
+  ImGui::SameLine();
+  if (ImGui::Button("Done")) {
+    b.active = b.playing = false;
+    ++b.version;
+  }
+  ImGui::TextDisabled("%zu of %zu %s in", b.step, steps, model.dim == Dim::Two ? "edges" : "faces");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  float speed = static_cast<float>(b.edgesPerSecond);
+  if (ImGui::SliderFloat("##buildspeed", &speed, 0.5f, 60.0f,
+                         plane ? "%.1f edges/s" : "%.1f faces/s", ImGuiSliderFlags_Logarithmic))
+    b.edgesPerSecond = speed;
+}
+
+void whyButton(Model& model) {
+  if (ImGui::Button("Why O(1)? Cost against N", ImVec2(-1.0f, 0.0f))) model.whyOpen = true;
+}
+
+void splitDecorations(const Model& model) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const Palette& pal = paletteFor(model.settings.theme);
+  const ScreenRect l = model.split.left(), r = model.split.right();
+  const float x = static_cast<float>(r.lo.x);
+  dl->AddLine(ImVec2(x, static_cast<float>(r.lo.y)), ImVec2(x, static_cast<float>(r.hi.y)),
+              packAbgr(pal.textMuted), 2.0f);
+  const float pad = ImGui::GetFontSize() * 0.6f;
+  for (const auto& [half, scene] :
+       {std::pair{l, &model.scene2d}, std::pair{r, &model.split.scene()}}) {
+    const std::string text = SecondView::traceCaption(*scene);
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    // centred over the half, but never starting left of it
+    const ImVec2 at(std::max(static_cast<float>(half.middle().x) - 0.5f * size.x,
+                             static_cast<float>(half.lo.x) + 2.0f * pad),
+                    static_cast<float>(half.lo.y) + 1.5f * pad);
+    dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
+                      ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
+                      packAbgr(withAlpha(pal.background, 0.9f)), 4.0f);
+    dl->AddText(at, packAbgr(pal.text), text.c_str());
+  }
+}
+
+void splitInspector(const Model& model) {
+  if (!model.split.enabled() || model.dim != Dim::Two || model.lines2d.enabled()) return;
+  const Scene2D& s = model.split.scene();
+  if (!s.probe()) return;
+  const Palette& pal = paletteFor(model.settings.theme);
+  const Trace2D& t = s.probe()->trace;
+  const Rgba colour = textColourOf(pal, t.result);
+  ImGui::Separator();
+  ImGui::TextColored(im(colour), "Right half, %s: %s", std::string(toString(s.method())).c_str(),
+                     std::string(toString(t.result)).c_str());
+  traceLines(describeTrace(t, s.probe()->point, s.polygon()), pal, colour);
+}
+
+void advanceBuild(Model& model, double seconds) {
+  model.build.advance(seconds, stepsShown(model));
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,23 @@
+// convexloc-viewer — the part of the window the scene has: the panels' widths, the area
+// right of them, and the camera fitted into it beside the caption, the legend and the Steps
+// window. The window, the screenshot and the SVG all take the scene's area from here.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "logic/app/model.hpp"
+#include "ui/ui_state.hpp"
+
+namespace convexloc::viewer {
+
+// the panel widths in window pixels, at the current font scale
+float leftPanelWidth(const Model& model, glm::dvec2 window);
+float rightPanelWidth(const Model& model, glm::dvec2 window);
+// the part of the window the scene has to itself (right of the panel when it shows)
+ScreenRect sceneArea(const Model& model, glm::dvec2 window);
+
+// fits the camera to the shape in the scene area, leaving room for the caption and the
+// floating legend; for `now` + 1.5 s a change of the legend's size fits again
+void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,37 @@
+// convexloc-viewer — --export DIR: every slide of the lecture (or the figure) rendered and
+// written as DIR/slide-01.png and slide-01.svg, slide-02..., driven by the frame loop.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "gl/scene_view.hpp"
+#include "logic/app/model.hpp"
+#include "ui/ui_state.hpp"
+
+namespace convexloc::viewer {
+
+// frames rendered for each slide before it is written: the camera fits at the first, the
+// panels and the legend take their size over the next ones
+inline constexpr int kFramesPerSlide = 5;
+
+class SlideExporter {
+ public:
+  // exports to `dir` (made when missing) when it is not empty; inactive otherwise
+  explicit SlideExporter(std::string dir) : dir_(std::move(dir)) {}
+  bool active() const { return !dir_.empty(); }
+  // Called after each frame is drawn (before the swap): writes the slide once its frames
+  // are done and shows the next. False on a problem, printed on stderr.
+  bool afterFrame(Model& model, const SceneView& view, UiState& ui, int width, int height);
+  // every slide written
+  bool finished() const { return finished_; }
+  std::size_t written() const { return written_; }
+
+ private:
+  std::string dir_;
+  int frames_ = 0;
+  std::size_t written_ = 0;
+  bool finished_ = false;
+};
+
+}  // namespace convexloc::viewer

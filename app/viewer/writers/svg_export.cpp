@@ -1,0 +1,93 @@
+// convexloc-viewer — the SVG export's glue: draw lists, camera and font to writers/svg_writer.
+#include "writers/svg_export.hpp"
+
+#include <imgui.h>
+
+#include "logic/app/legend.hpp"
+#include "ui/scene_area.hpp"
+#include "ui/widgets.hpp"
+#include "writers/svg_writer.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// the sprayed points of a scene, as the renderer draws them
+template <class Scene>
+void sprayOf(const Scene& scene, const Model& model, const SceneView& view, SvgScene& s) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  s.points.points.reserve(scene.points().size());
+  for (const auto& p : scene.points()) {
+    if constexpr (requires { p.z; })
+      s.points.points.push_back({p.x, p.y, p.z});
+    else
+      s.points.points.push_back({p.x, p.y, 0.0});
+  }
+  s.points.classes = scene.classes();
+  s.points.visibleMask = model.settings.visibleMask;
+  s.points.size = view.pointSize();
+  s.points.colours[0] = pal.inside;
+  s.points.colours[1] = pal.boundary;
+  s.points.colours[2] = pal.outside;
+  s.points.rim = pal.rim;
+}
+
+// 2D: the structure under the overlay, core's cells and the polygon's edges
+void scene2d(const Model& model, const SceneView& view, SvgScene& s) {
+  s.base = {&view.structure()};
+  s.overlay = {&view.overlay()};
+  const Scene2D& scene = model.scene2d;
+  if (model.lines2d.enabled()) {
+    s.points.visibleMask = 0;  // the Lines mode hides the spray
+    return;
+  }
+  sprayOf(scene, model, view, s);
+  for (const Cell2D& c : scene.cells()) {
+    std::vector<glm::dvec3>& o = s.cells.emplace_back();
+    for (Vec2 v : c.outline) o.push_back({v.x, v.y, 0.0});
+  }
+  const ConvexPolygon& poly = scene.polygon();
+  for (std::size_t e = 0; e < poly.size(); ++e)
+    s.edges.push_back({at2(toGlm(poly.edgeStart(e))), at2(toGlm(poly.edgeEnd(e)))});
+}
+
+// 3D: the mesh, structure and section sorted back to front, lit from the eye
+void scene3d(const Model& model, const SceneView& view, SvgScene& s) {
+  s.depthSorted = true;
+  s.eye = model.camera3d.eye();
+  s.base = {&view.mesh(), &view.structure(), &view.section()};
+  s.overlay = {&view.overlay()};
+  sprayOf(model.scene3d(), model, view, s);
+}
+
+}  // namespace
+
+bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
+                   std::string& error) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  SvgScene s;
+  s.size = model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  s.background = pal.background;
+  s.text = pal.text;
+  s.scale = model.settings.drawScale();
+  // ImGui sizes a font by its height from descent to ascent, SVG by its em: DejaVu Sans is
+  // 1.164 em high, so the SVG's text takes the window's width at this size
+  s.fontPixels = ImGui::GetFontSize() / 1.164;
+  s.measure = measureText;
+  s.project = sceneProjection(model);
+  const ScreenRect area = sceneArea(model, s.size);
+  s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
+  s.caption = model.settings.caption;
+  // the legend in the scene's lower right corner, above the caption
+  s.textMuted = pal.textMuted;
+  if (model.settings.showLegend) {
+    s.legend = legendOf(model);
+    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0);  // the caption's lines push it up
+  }
+  if (model.dim == Dim::Two)
+    scene2d(model, view, s);
+  else
+    scene3d(model, view, s);
+  return writeTextFile(path, sceneSvg(s), error);
+}
+
+}  // namespace convexloc::viewer

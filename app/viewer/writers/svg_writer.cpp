@@ -1,0 +1,441 @@
+// convexloc-viewer — the SVG writer.
+#include "writers/svg_writer.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "logic/base/format.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// a number for an attribute: two decimals are a hundredth of a pixel
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", std::abs(v) < 5e-3 ? 0.0 : v);
+  return buf;
+}
+
+// "#rrggbb"
+std::string rgb(Rgba c) {
+  auto byte = [](float x) {
+    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255));
+  };
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return buf;
+}
+
+// ` NAME="#rrggbb"`, and its opacity when not opaque
+std::string paint(const char* name, Rgba c) {
+  std::string s = std::string(" ") + name + "=\"" + rgb(c) + "\"";
+  if (c.a < 0.999f) s += std::string(" ") + name + "-opacity=\"" + num(c.a) + "\"";
+  return s;
+}
+
+// one element of the picture and the depth it is sorted by (3D)
+struct Item {
+  double depth = 0.0;
+  std::string svg;
+};
+
+// the parts of the picture, in the renderer's order
+struct Parts {
+  std::vector<Item> fills, lowPoints, segments, highPoints, markers;
+};
+
+// the screen points of a triangle or polygon, or nothing when a corner is behind the eye
+bool projectAll(const ScreenProjection& project, std::span<const glm::dvec3> world,
+                std::vector<glm::dvec3>& out) {
+  out.clear();
+  for (const glm::dvec3& w : world) {
+    const std::optional<glm::dvec3> s = project(w);
+    if (!s) return false;
+    out.push_back(*s);
+  }
+  return true;
+}
+
+// true when the screen points' box misses the viewport grown by `margin`
+bool offScreen(std::span<const glm::dvec3> pts, glm::dvec2 size, double margin) {
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& p : pts) {
+    lo = glm::min(lo, glm::dvec2(p));
+    hi = glm::max(hi, glm::dvec2(p));
+  }
+  return hi.x < -margin || hi.y < -margin || lo.x > size.x + margin || lo.y > size.y + margin;
+}
+
+// the mean depth of screen points
+double meanDepth(std::span<const glm::dvec3> pts) {
+  double d = 0.0;
+  for (const glm::dvec3& p : pts) d += p.z;
+  return pts.empty() ? 0.0 : d / static_cast<double>(pts.size());
+}
+
+// "x,y x,y ..." for a polygon's points attribute
+std::string pointList(std::span<const glm::dvec3> pts) {
+  std::string s;
+  for (const glm::dvec3& p : pts) {
+    if (!s.empty()) s += ' ';
+    s += num(p.x);
+    s += ',';
+    s += num(p.y);
+  }
+  return s;
+}
+
+// a fill's colour, lit by the headlight like the fill shader does
+Rgba litColour(const FillVertex& v, const std::optional<glm::dvec3>& eye, glm::dvec3 middle) {
+  Rgba c = v.colour;
+  if (!eye || glm::dot(v.normal, v.normal) <= 0.0f) return c;
+  const glm::dvec3 toEye = *eye - middle;
+  const double len = glm::length(toEye);
+  const double facing =
+      len > 0.0 ? std::abs(glm::dot(glm::normalize(glm::dvec3(v.normal)), toEye / len)) : 1.0;
+  const auto k = static_cast<float>(0.45 + 0.55 * facing);
+  return {c.r * k, c.g * k, c.b * k, c.a};
+}
+
+// Triangle fans of one colour (the draw lists' convex outlines) joined back into one
+// polygon each: triangle t continues the fan when it shares the first corner and the
+// previous triangle's last edge.
+void addFills(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  const auto& f = list.fills;
+  std::vector<glm::dvec3> world, screen;
+  for (std::size_t t = 0; t + 2 < f.size();) {
+    world = {f[t].p, f[t + 1].p, f[t + 2].p};
+    std::size_t next = t + 3;
+    while (next + 2 < f.size() && f[next].p == f[t].p && f[next + 1].p == world.back() &&
+           f[next].colour == f[t].colour && f[next].normal == f[t].normal) {
+      world.push_back(f[next + 2].p);
+      next += 3;
+    }
+    glm::dvec3 middle(0.0);
+    for (const glm::dvec3& w : world) middle += w / static_cast<double>(world.size());
+    if (projectAll(s.project, world, screen) && !offScreen(screen, s.size, 2.0))
+      out.push_back({meanDepth(screen), "<polygon points=\"" + pointList(screen) + "\"" +
+                                            paint("fill", litColour(f[t], s.eye, middle)) + "/>"});
+    t = next;
+  }
+}
+
+// Cuts the screen segment to the viewport grown by `m` (Liang-Barsky); false when it misses.
+bool clipToView(glm::dvec2& a, glm::dvec2& b, glm::dvec2 size, double m) {
+  double t0 = 0.0, t1 = 1.0;
+  if (!clipSegment(a, b, glm::dvec2(-m), size + m, t0, t1)) return false;
+  const glm::dvec2 d = b - a;
+  const glm::dvec2 a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+void addSegments(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  for (const Segment& g : list.segments) {
+    const std::optional<glm::dvec3> a = s.project(g.a), b = s.project(g.b);
+    if (!a || !b) continue;
+    glm::dvec2 p(*a), q(*b);
+    if (!clipToView(p, q, s.size, 10.0)) continue;
+    std::string e = "<line x1=\"" + num(p.x) + "\" y1=\"" + num(p.y) + "\" x2=\"" + num(q.x) +
+                    "\" y2=\"" + num(q.y) + "\"" + paint("stroke", g.colour) + " stroke-width=\"" +
+                    num(g.width * s.scale) + "\"";
+    if (g.dash > 0.0f) e += " stroke-dasharray=\"" + num(g.dash * s.scale) + "\"";
+    out.push_back({0.5 * (a->z + b->z), e + "/>"});
+  }
+}
+
+// a marker of each shape, as the marker shader draws it: a disc of the marker's diameter,
+// a ring inside its rim, the ring crossed, a square
+std::string markerSvg(glm::dvec2 c, double size, const Marker& m) {
+  const double r = std::max(0.5 * size, 0.5);
+  const std::string at = " cx=\"" + num(c.x) + "\" cy=\"" + num(c.y) + "\"";
+  const std::string ring = "<circle" + at + " r=\"" + num(std::max(r - 1.0, 0.5)) + "\"";
+  switch (m.shape) {
+    case MarkerShape::Disc:
+      return "<circle" + at + " r=\"" + num(r) + "\"" + paint("fill", m.colour) + "/>";
+    case MarkerShape::Ring:
+      return ring + " fill=\"none\"" + paint("stroke", m.colour) + " stroke-width=\"2\"/>";
+    case MarkerShape::Cross: {
+      const double b = std::max(r - 2.0, 0.5);
+      return "<g" + paint("stroke", m.colour) + " fill=\"none\" stroke-width=\"2\">" + ring +
+             "/><path d=\"M" + num(c.x - b) + " " + num(c.y) + "H" + num(c.x + b) + "M" + num(c.x) +
+             " " + num(c.y - b) + "V" + num(c.y + b) + "\"/></g>";
+    }
+    case MarkerShape::Square: break;
+  }
+  return "<rect x=\"" + num(c.x - r) + "\" y=\"" + num(c.y - r) + "\" width=\"" + num(2 * r) +
+         "\" height=\"" + num(2 * r) + "\"" + paint("fill", m.colour) + "/>";
+}
+
+void addMarkers(const SvgScene& s, const DrawList& list, std::vector<Item>& out) {
+  for (const Marker& m : list.markers) {
+    const std::optional<glm::dvec3> p = s.project(m.p);
+    if (!p || offScreen(std::span(&*p, 1), s.size, m.size * s.scale)) continue;
+    out.push_back({p->z, markerSvg(glm::dvec2(*p), m.size * s.scale, m)});
+  }
+}
+
+// every k-th visible point, so that at most maxPoints are written; the stride k
+std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
+  const SvgPoints& sp = s.points;
+  const std::size_t n = std::min(sp.points.size(), sp.classes.size());
+  visible = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    visible += (sp.visibleMask >> static_cast<unsigned>(sp.classes[i])) & 1u;
+  const std::size_t stride =
+      std::max<std::size_t>(1, (visible + s.maxPoints - 1) / std::max<std::size_t>(s.maxPoints, 1));
+  // fewer points are drawn larger (up to the size of a light spray's), so that the thinned
+  // spray still reads as the classes' areas
+  const double size =
+      std::min(sp.size * std::sqrt(static_cast<double>(stride)), std::max<double>(sp.size, 3.5));
+  std::size_t seen = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto c = static_cast<unsigned>(sp.classes[i]);
+    if (!((sp.visibleMask >> c) & 1u) || seen++ % stride != 0) continue;
+    const std::optional<glm::dvec3> p = s.project(sp.points[i]);
+    if (!p || offScreen(std::span(&*p, 1), s.size, 4.0)) continue;
+    const bool boundary = sp.classes[i] == Location::Boundary;
+    const double r = 0.5 * size * (boundary ? 1.7 : 1.0);
+    std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
+                    "\"" + paint("fill", sp.colours[c]);
+    if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
+    (boundary ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
+  }
+  return stride;
+}
+
+// the items in the order written: 2D in the renderer's layer order; 3D back to front
+void writeItems(std::string& out, std::vector<Item> items, bool sorted) {
+  if (sorted)
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Item& a, const Item& b) { return a.depth > b.depth; });
+  for (const Item& i : items) out += "  " + i.svg + "\n";
+}
+
+// the base layers (fills, points, segments, markers) and the overlay over them
+void writeScene(const SvgScene& s, std::string& out, std::size_t& visible, std::size_t& stride) {
+  Parts base;
+  for (const DrawList* l : s.base) {
+    addFills(s, *l, base.fills);
+    addSegments(s, *l, base.segments);
+    addMarkers(s, *l, base.markers);
+  }
+  stride = addPoints(s, base, visible);
+  out += "<g id=\"scene\" stroke-linecap=\"butt\">\n";
+  if (s.depthSorted) {
+    std::vector<Item> all = std::move(base.fills);
+    for (auto* part : {&base.lowPoints, &base.segments, &base.highPoints})
+      all.insert(all.end(), part->begin(), part->end());
+    writeItems(out, std::move(all), true);
+  } else {
+    for (auto* part : {&base.fills, &base.lowPoints, &base.segments, &base.highPoints})
+      writeItems(out, std::move(*part), false);
+  }
+  writeItems(out, std::move(base.markers), false);
+  Parts over;
+  for (const DrawList* l : s.overlay) {
+    addFills(s, *l, over.fills);
+    addSegments(s, *l, over.segments);
+    addMarkers(s, *l, over.markers);
+  }
+  for (auto* part : {&over.fills, &over.segments, &over.markers})
+    writeItems(out, std::move(*part), false);
+  out += "</g>\n";
+}
+
+// core's cells and the shape's edges, unpainted, for selecting in an editor
+void writeOutlines(const SvgScene& s, std::string& out) {
+  std::vector<glm::dvec3> screen;
+  out += "<g id=\"cells\" fill=\"none\" stroke=\"none\">\n";
+  for (std::size_t k = 0; k < s.cells.size(); ++k)
+    if (projectAll(s.project, s.cells[k], screen))
+      out += "  <polygon class=\"cell\" data-cell=\"" + std::to_string(k) + "\" points=\"" +
+             pointList(screen) + "\"/>\n";
+  out += "</g>\n<g id=\"edges\" fill=\"none\" stroke=\"none\">\n";
+  for (std::size_t e = 0; e < s.edges.size(); ++e) {
+    const auto a = s.project(s.edges[e].first), b = s.project(s.edges[e].second);
+    if (!a || !b) continue;
+    out += "  <line class=\"edge\" data-edge=\"" + std::to_string(e) + "\" x1=\"" + num(a->x) +
+           "\" y1=\"" + num(a->y) + "\" x2=\"" + num(b->x) + "\" y2=\"" + num(b->y) + "\"/>\n";
+  }
+  out += "</g>\n";
+}
+
+// `text` centred at `c`, with a halo of the background behind it
+std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char* cls = "label") {
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(c.x) + "\" y=\"" + num(c.y) + "\"" +
+         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+}
+
+void writeLabels(const SvgScene& s, std::string& out) {
+  std::vector<const DrawList*> lists = s.base;
+  lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
+  const auto placed = layoutSceneLabels(
+      lists, s.base.size(), s.project,
+      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale);
+  out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
+         num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
+         paint("stroke", withAlpha(s.background, 0.85f)) +
+         " stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
+  for (const PlacedSceneLabel& p : placed) {
+    if (p.place.leader)
+      out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
+             num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
+             paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
+    out +=
+        "  " +
+        textSvg(p.place.centre, p.label->text, readableOn(p.label->colour, s.background, s.text)) +
+        "\n";
+  }
+  out += "</g>\n";
+}
+
+// the caption's font size in pixels: ImGui's caption box draws at 1.5 times the window's font,
+// which in SVG ems (see SvgScene::fontPixels) is about 1.6 times fontPixels
+double captionPixels(const SvgScene& s) {
+  return 1.6 * s.fontPixels;
+}
+
+// the caption's lines as the window breaks them (text_layout's captionLines), measured at
+// the caption's size
+std::vector<std::string> captionOf(const SvgScene& s) {
+  if (s.caption.empty()) return {};
+  const double px = captionPixels(s);
+  const double width = s.labelArea.empty() ? s.size.x : s.labelArea.hi.x - s.labelArea.lo.x;
+  return captionLines(s.caption, width, 0.5 * px,
+                      [&](std::string_view t) { return s.measure(t) * 1.6; });
+}
+
+// the height the caption's lines take at the bottom (0 without a caption)
+double captionHeight(const SvgScene& s, std::size_t lines) {
+  return lines == 0 ? 0.0 : (1.25 * static_cast<double>(lines) + 0.875) * captionPixels(s);
+}
+
+// the thinning note and the caption, along the bottom
+void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride,
+                const std::vector<std::string>& caption) {
+  if (stride > 1) {
+    const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
+                             " of " + grouped(visible) + " drawn";
+    out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
+           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
+           "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
+  }
+  // under the middle of the scene area, as the window's caption box, the last line lowest
+  const double px = captionPixels(s);
+  const double x =
+      s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
+  for (std::size_t k = 0; k < caption.size(); ++k) {
+    const double y = s.size.y - 1.2 * px - 1.25 * px * static_cast<double>(caption.size() - 1 - k);
+    out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(y) +
+           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
+           "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(caption[k]) +
+           "</text>\n";
+  }
+}
+
+// a legend row's swatch, `h` high, its left edge at x and its middle at y
+std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
+  const double w = 0.7 * h;
+  switch (r.swatch) {
+    case Swatch::Disc:
+      return "<circle cx=\"" + num(x + 0.3 * h) + "\" cy=\"" + num(y) + "\" r=\"" + num(0.27 * h) +
+             "\"" + paint("fill", r.colour) + paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Box:
+      return "<rect x=\"" + num(x) + "\" y=\"" + num(y - 0.35 * h) + "\" width=\"" + num(w) +
+             "\" height=\"" + num(0.7 * h) + "\"" + paint("fill", r.colour) +
+             paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Line:
+    case Swatch::DashedLine: break;
+  }
+  std::string e = "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + w) +
+                  "\" y2=\"" + num(y) + "\"" + paint("stroke", r.colour) + " stroke-width=\"" +
+                  num(r.width) + "\"";
+  if (r.swatch == Swatch::DashedLine) e += " stroke-dasharray=\"" + num(0.3 * w) + "\"";
+  return e + "/>";
+}
+
+// `text` at (x, y), its baseline centred on y, anchored at its start or end
+std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + paint("fill", c) +
+         (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+}
+
+// the legend as the window shows it: title, class rows in columns, a row per mark
+void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
+  const Legend& g = *s.legend;
+  const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
+  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
+  double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
+  for (const LegendRow& r : g.classes) {
+    name = std::max(name, width(r.text));
+    count = std::max(count, width(r.count));
+    share = std::max(share, width(r.share));
+  }
+  for (const LegendRow& r : g.rows) rows = std::max(rows, sw + width(r.text));
+  const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
+  const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
+  const double w = std::max({heading, classes, rows}) + 2.0 * pad;
+  const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h + captionHigh);
+  out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
+         "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
+         "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
+         paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
+         " stroke-width=\"1\"/>\n";
+  double y = lo.y + pad + 0.5 * line;
+  const double x = lo.x + pad;
+  out += "  " + legendText(x, y, g.title, s.text) + "\n";
+  if (!g.subtitle.empty())
+    out += "  " + legendText(x + width(g.title) + 0.4 * f, y, g.subtitle, s.textMuted) + "\n";
+  for (const LegendRow& r : g.classes) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text);
+    if (!r.count.empty())
+      out += legendText(x + sw + name + 0.8 * f + count, y, r.count, s.text, true) +
+             legendText(x + sw + name + 1.4 * f + count, y, r.share, s.textMuted);
+    out += "\n";
+  }
+  for (const LegendRow& r : g.rows) {
+    y += line;
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text) + "\n";
+  }
+  out += "</g>\n";
+}
+
+}  // namespace
+
+std::string sceneSvg(const SvgScene& s) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(s.size.x) + "\" height=\"" +
+         num(s.size.y) + "\" viewBox=\"0 0 " + num(s.size.x) + " " + num(s.size.y) + "\">\n";
+  out += "<!-- convexloc-viewer: the scene as drawn, in window pixels -->\n";
+  out += "<rect id=\"background\" width=\"100%\" height=\"100%\"" + paint("fill", s.background) +
+         "/>\n";
+  writeOutlines(s, out);
+  std::size_t visible = 0, stride = 1;
+  writeScene(s, out, visible, stride);
+  writeLabels(s, out);
+  const std::vector<std::string> caption = captionOf(s);
+  writeNotes(s, out, visible, stride, caption);
+  if (s.legend) writeLegend(s, out, captionHeight(s, caption.size()));
+  out += "</svg>\n";
+  return out;
+}
+
+bool writeTextFile(const std::string& path, const std::string& text, std::string& error) {
+  std::ofstream f(path, std::ios::binary);
+  if (f) f << text;
+  if (!f || !f.flush()) {
+    error = path + ": cannot be written (" + std::strerror(errno) + ")";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,71 @@
+// convexloc-viewer — the scene as an SVG picture, GL-free: the same draw lists the renderer
+// draws (fills, segments with their widths and dashes, markers of each shape, the labels
+// placed by logic/view/label_layout), projected by the current camera into window pixels. In
+// 3D the fills, segments and points are written back to front (painter's order by
+// depth). A spray above `maxPoints` is thinned to every k-th point, and the picture says
+// so in a visible note and an XML comment.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "convexloc/geometry.hpp"
+#include "logic/app/legend.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/draw_list.hpp"
+#include "logic/base/xml.hpp"
+#include "logic/view/scene_labels.hpp"
+
+namespace convexloc::viewer {
+
+// the sprayed points as the renderer draws them
+struct SvgPoints {
+  std::vector<glm::dvec3> points;
+  std::span<const Location> classes;
+  unsigned visibleMask = 7u;  // bit c: class c is drawn
+  float size = 4.0f;          // diameter in window pixels; boundary points 1.7 times it
+  Rgba colours[3];            // inside, boundary, outside
+  Rgba rim;                   // the boundary points' rim
+};
+
+// everything one picture is written from
+struct SvgScene {
+  glm::dvec2 size{1.0};  // window pixels: the viewBox
+  Rgba background;
+  Rgba text;                 // the caption's and the note's colour
+  double scale = 1.0;        // line widths, marker sizes and label offsets are multiplied by it
+  double fontPixels = 16.0;  // the text's font size (em) in pixels
+  bool depthSorted = false;  // 3D: fills, segments and points back to front
+  std::optional<glm::dvec3> eye;  // 3D: the headlight, for lit faces
+  ScreenProjection project;
+  MeasureText measure;                   // a label's size in pixels at fontPixels
+  std::vector<const DrawList*> base;     // drawn first (the renderer's cached layers)
+  std::vector<const DrawList*> overlay;  // drawn over everything
+  SvgPoints points;
+  std::size_t maxPoints = 4000;
+  // core's cells and the shape's edges, as selectable outlines (drawn neither filled nor
+  // stroked: the picture itself comes from the draw lists)
+  std::vector<std::vector<glm::dvec3>> cells;
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
+  std::string caption;  // written large at the bottom when not empty, in the window's lines
+  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels), or
+  // above the caption where there is one
+  std::optional<Legend> legend;
+  glm::dvec2 legendCorner{0.0};
+  PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
+  Rgba textMuted;      // the legend's counts and subtitle
+};
+
+// the whole SVG document
+std::string sceneSvg(const SvgScene& scene);
+
+// writes `text` to `path`; false and `error` (the path and why) on failure
+bool writeTextFile(const std::string& path, const std::string& text, std::string& error);
+
+}  // namespace convexloc::viewer
