@@ -70,7 +70,6 @@ ConvexPolygon ConvexPolygon::hullOf(std::span<const Vec2> points) {
     if (!named[k]) polygon.source_[at->second] = static_cast<std::uint32_t>(i), named[k] = 1;
   }
   polygon.dropped_ = points.size() - polygon.size();
-  polygon.repeated_ = 0;
   return polygon;
 }
 

@@ -118,6 +118,7 @@ class Trace3D(TypedDict):
     path: Indices
     steps: list[tuple[int, int, int]]  # (face, edge, sign)
     faces: list[tuple[int, int]]       # (face, sign)
+    zone_steps: list[tuple[int, int, int, int]]  # (zone edge, vertex a, vertex b, sign)
     radius_filter: bool
     direction: tuple[float, float, float]
     cells_per_side: int
@@ -125,7 +126,8 @@ class Trace3D(TypedDict):
 class Stats3D(TypedDict):
     """The size and shape of a 3D subdivision (stats())."""
 
-    faces: int
+    faces: int      # plane faces: coplanar neighbouring triangles merged
+    triangles: int
     vertices: int
     cells: int
     nodes: int
@@ -133,6 +135,7 @@ class Stats3D(TypedDict):
     max_per_cell: int
     mean_per_cell: float
     crowded_cells: int
+    zone_cells: int
     resolution: int
     max_level: int
     centred: bool

@@ -132,6 +132,9 @@ py::dict traceToPython(const Trace3D& t) {
   for (const WalkTest& w : t.steps) steps.append(py::make_tuple(w.face, int{w.edge}, w.sign));
   d["steps"] = steps;
   d["faces"] = signs(t.faces, &FaceTest::face);
+  py::list zone;
+  for (const ZoneTest& z : t.zoneSteps) zone.append(py::make_tuple(z.edge, z.a, z.b, z.sign));
+  d["zone_steps"] = zone;
   d["radius_filter"] = t.radiusFilter;
   d["direction"] = toPython(t.direction);
   d["cells_per_side"] = t.cellsPerSide;
@@ -140,7 +143,8 @@ py::dict traceToPython(const Trace3D& t) {
 
 py::dict statsToPython(const Stats3D& s) {
   py::dict d = statsCommon(s);
-  d["faces"] = s.faces, d["vertices"] = s.vertices, d["nodes"] = s.nodes;
+  d["faces"] = s.faces, d["triangles"] = s.triangles, d["vertices"] = s.vertices;
+  d["nodes"] = s.nodes, d["zone_cells"] = s.zoneCells;
   d["resolution"] = s.resolution, d["max_level"] = s.maxLevel, d["centred"] = s.centred;
   d["bytes_per_face"] = s.bytesPerFace;
   return d;

@@ -282,7 +282,7 @@ void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
                {"d = p - x_T; cube face: the largest |d_i| and its sign",
                 "(s,t) = (d_u, d_v) / |d_major|; cell = floor((s+1)/2 * n)",
                 "radius filter: |d| < r_in: INSIDE; |d| > r_out: OUTSIDE",
-                "test the cell's faces (a walk where crowded)",
+                "test the cell's faces (a walk, or a zone's bisection, where crowded)",
                 "OUTSIDE if one s < 0, else BOUNDARY if one s = 0, else INSIDE"},
                m);
   StepList l{m};
@@ -293,7 +293,12 @@ void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
   }
   if (t.cubeFace >= 0) cubeCellSteps(t, scale, l);
   if (t.fallback) l.add("no cell could be used: every face is tested", 3);
-  if (t.crowded) l.add("the cell lists many faces: a walk among them", 3);
+  if (t.crowded && t.zoneSteps.empty()) l.add("the cell lists many faces: a walk among them", 3);
+  if (!t.zoneSteps.empty())
+    l.add("the cell lies over a zone of thin faces: bisection over its edges' planes", 3);
+  for (const ZoneTest& z : t.zoneSteps)
+    l.add("zone edge " + std::to_string(z.edge) + ": orient3d(x_T, a, b, p) = " + signWord(z.sign),
+          3);
   walkSteps(t, l, 3);
   testSteps(t.faces, l, 3, StepFocus::Face);
   l.result(t.result, t.byRadius ? 2 : 4);

@@ -5,8 +5,8 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
-#include "detail/mesh_tokens.hpp"
-#include "detail/ply_format.hpp"
+#include "io/mesh_tokens.hpp"
+#include "io/ply_format.hpp"
 
 namespace convexloc::detail {
 

@@ -1,5 +1,5 @@
 // convexloc — the buffered byte and line reader of the binary-or-text mesh formats.
-#include "detail/byte_source.hpp"
+#include "io/byte_source.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -10,7 +10,7 @@
 #include <sys/stat.h>
 
 #include "convexloc/error.hpp"
-#include "detail/text_scan.hpp"
+#include "io/text_scan.hpp"
 
 namespace convexloc {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/text_reader.hpp"
-#include "detail/mesh_tokens.hpp"
+#include "io/mesh_tokens.hpp"
 
 namespace convexloc {
 namespace {

@@ -10,9 +10,9 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
-#include "detail/byte_source.hpp"
-#include "detail/mesh_tokens.hpp"
-#include "detail/ply_format.hpp"
+#include "io/byte_source.hpp"
+#include "io/mesh_tokens.hpp"
+#include "io/ply_format.hpp"
 
 namespace convexloc {
 namespace {

@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "convexloc/geometry.hpp"
-#include "detail/text_scan.hpp"
+#include "io/text_scan.hpp"
 
 namespace convexloc::detail {
 

@@ -11,8 +11,8 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
-#include "detail/byte_source.hpp"
-#include "detail/mesh_tokens.hpp"
+#include "io/byte_source.hpp"
+#include "io/mesh_tokens.hpp"
 
 namespace convexloc {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "detail/byte_source.hpp"
+#include "io/byte_source.hpp"
 
 namespace convexloc::detail {
 

@@ -10,7 +10,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
-#include "detail/byte_source.hpp"
+#include "io/byte_source.hpp"
 
 namespace convexloc {
 namespace {
