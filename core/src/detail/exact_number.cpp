@@ -17,7 +17,7 @@ struct Decomposed {
 };
 Decomposed decompose(double v) {
   int e = 0;
-  const double m = std::frexp(v, &e);  // |m| in [0.5, 1)
+  const double m = std::frexp(v, &e);                 // |m| in [0.5, 1)
   const double whole = std::ldexp(std::fabs(m), 53);  // an integer below 2^53
   return {static_cast<std::uint64_t>(whole), m < 0, e - 53};
 }

@@ -9,10 +9,10 @@
 //
 // Every function here is exact under one condition, which the callers establish (see
 // predicates.cpp): every value involved is an integer multiple of 2^-1074 and below 2^1020 in
-// magnitude, the operands of a product below 2^996. Then no operation overflows, and an operation whose exact result is a multiple
-// of 2^-1074 rounds exactly as it would with an unbounded exponent range (a multiple of
-// 2^-1074 below 2^-1022 is a subnormal, represented exactly), so the theorems proven for an
-// unbounded exponent (Knuth's two-sum, Dekker's fast two-sum and product, Shewchuk's
+// magnitude, the operands of a product below 2^996. Then no operation overflows, and an operation
+// whose exact result is a multiple of 2^-1074 rounds exactly as it would with an unbounded exponent
+// range (a multiple of 2^-1074 below 2^-1022 is a subnormal, represented exactly), so the theorems
+// proven for an unbounded exponent (Knuth's two-sum, Dekker's fast two-sum and product, Shewchuk's
 // expansion sum and scale, round to nearest even) hold as stated.
 #pragma once
 
