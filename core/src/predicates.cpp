@@ -1,6 +1,12 @@
 // convexloc — the exact stage of the predicates: what runs when the floating-point filter of
 // predicates.hpp cannot decide.
 //
+// Three stages, each exact, the first that applies decides:
+//  - narrow integers (detail/narrow_integers.hpp): where all coordinates fit in 61-bit
+//    integers times one power of two, 64-, 128- and 192-bit integer arithmetic;
+//  - expansions, over the ordinary exponent range (below);
+//  - multiprecision integers for extreme exponents.
+//
 // Over the ordinary exponent range the sign comes from floating-point expansions
 // (detail/expansion.hpp) on the stack: each difference a - b of the input doubles is taken
 // exactly as a two-component expansion (two-diff), and the determinant of those
@@ -10,7 +16,8 @@
 //
 // Why the expansions are exact. Let k be the number of factors in each term of the
 // determinant (2 in the plane, 3 in space) and suppose every input coordinate is 0 or has
-// 2^lo <= |x| <= 2^hi, with (k, lo, hi) = (2, -480, 500) or (3, -300, 330).
+// 2^lo <= |x| <= 2^hi, with (k, lo, hi) = (2, -480, 500) or (3, -300, 330) (the code asks
+// for a little less: a normal double of exponent at most hi - 1).
 //  1. Grain. A double with |x| >= 2^lo is an integer multiple of g = 2^(lo - 52) (its last
 //     bit lies 52 places below its leading one). If the exact result of a sum, difference
 //     or product of doubles is a multiple of 2^m, so is its rounded value (rounding keeps a
@@ -35,35 +42,51 @@
 // than the differences, so that the grain argument of 1. holds for the tails too.
 #include "convexloc/predicates.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <initializer_list>
 
 #include "detail/exact_number.hpp"
 #include "detail/expansion.hpp"
+#include "detail/narrow_integers.hpp"
+
+// GCC's straight-line vectoriser packs the points' coordinates, passed in separate
+// registers, into pairs through the stack, and each pair's reload stalls on the two stores
+// before it (store forwarding fails): a third of the narrow stage's time. Scalar code here.
+#if defined(__GNUC__) && !defined(__clang__)
+#define CONVEXLOC_SCALAR [[gnu::optimize("no-tree-slp-vectorize")]]
+#else
+#define CONVEXLOC_SCALAR
+#endif
 
 namespace convexloc {
 namespace {
 
 namespace ex = detail::expansion;
+namespace narrow = detail::narrow;
 
-thread_local unsigned long long tFallbacks = 0;
-thread_local unsigned long long tMultiprecision = 0;
+thread_local ExactStageCounts tCounts{};
 
-// whether every value is 0 or has a magnitude in [lo, hi] (false for NaN and infinities)
-template <std::size_t K>
-bool inRange(const std::array<double, K>& values, double lo, double hi) noexcept {
-  bool ok = true;
+// whether every non-zero value is a normal double with 2^lo <= |v| < 2^(hi+1)
+bool within(int lo, int hi, std::initializer_list<double> values) noexcept {
+  std::uint64_t largest = 0, smallestLess1 = ~std::uint64_t{0};  // zeros wrap to the top
   for (double v : values) {
-    const double a = std::fabs(v);
-    ok &= (a == 0.0) | ((a >= lo) & (a <= hi));
+    const std::uint64_t m = narrow::magnitudeBits(v);
+    largest = std::max(largest, m);
+    smallestLess1 = std::min(smallestLess1, m - 1);
   }
-  return ok;
+  if (largest == 0) return true;
+  return static_cast<int>(largest >> 52) <= hi + 1023 &&
+         static_cast<int>((smallestLess1 + 1) >> 52) >= lo + 1023;
 }
 
-// the range of the proof above, in the plane and in space
-constexpr double kPlaneLo = 0x1p-480, kPlaneHi = 0x1p500;
-constexpr double kSpaceLo = 0x1p-300, kSpaceHi = 0x1p330;
+// the exponent range of the proof above (2^lo <= |v| < 2^(hi+1) for each non-zero v), in the
+// plane and in space
+constexpr int kPlaneLo = -480, kPlaneHi = 499;
+constexpr int kSpaceLo = -300, kSpaceHi = 329;
 
 // === The expansion stage
 
@@ -87,8 +110,9 @@ int minor(const Diff& x, const Diff& y, const Diff& z, const Diff& w, double* h)
   return ex::sum(left, nl, right, nr, h);
 }
 
-// sign of (p1 - p0) x (q1 - q0), all on the stack
-int crossExpansion(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+// sign of (p1 - p0) x (q1 - q0), all on the stack (kept out of line: the narrow-integer
+// stage before it stays lean)
+[[gnu::noinline]] int crossExpansion(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
   const Diff px = diff(p1.x, p0.x), py = diff(p1.y, p0.y);
   const Diff qx = diff(q1.x, q0.x), qy = diff(q1.y, q0.y);
   double det[16];
@@ -101,8 +125,8 @@ int times(const Diff& u, const double* m, int n, double* h) noexcept {
   return ex::product(m, n, u.c, u.n, h, scratch);
 }
 
-// sign of det[a-d; b-d; c-d], all on the stack
-int orient3dExpansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+// sign of det[a-d; b-d; c-d], all on the stack (out of line, as above)
+[[gnu::noinline]] int orient3dExpansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
   const Diff ux = diff(a.x, d.x), uy = diff(a.y, d.y), uz = diff(a.z, d.z);
   const Diff vx = diff(b.x, d.x), vy = diff(b.y, d.y), vz = diff(b.z, d.z);
   const Diff wx = diff(c.x, d.x), wy = diff(c.y, d.y), wz = diff(c.z, d.z);
@@ -144,13 +168,13 @@ std::array<detail::ExactInt, K> integers(const std::array<double, K>& values) {
   return out;
 }
 
-int crossMultiprecision(const std::array<double, 8>& in) {
+[[gnu::noinline]] int crossMultiprecision(const std::array<double, 8>& in) {
   const auto z = integers(in);  // p0x p0y p1x p1y q0x q0y q1x q1y
   const detail::ExactInt det = (z[2] - z[0]) * (z[7] - z[5]) - (z[3] - z[1]) * (z[6] - z[4]);
   return det.sign();
 }
 
-int orient3dMultiprecision(const std::array<double, 12>& in) {
+[[gnu::noinline]] int orient3dMultiprecision(const std::array<double, 12>& in) {
   auto z = integers(in);  // a b c d, three coordinates each
   for (std::size_t i = 0; i < 9; ++i) z[i] -= z[9 + i % 3];
   const detail::ExactInt det = z[0] * (z[4] * z[8] - z[5] * z[7]) +
@@ -161,28 +185,38 @@ int orient3dMultiprecision(const std::array<double, 12>& in) {
 
 }  // namespace
 
-int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
-  ++tFallbacks;
-  const std::array<double, 8> in{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
-  if (inRange(in, kPlaneLo, kPlaneHi)) return crossExpansion(p0, p1, q0, q1);
-  ++tMultiprecision;
-  return crossMultiprecision(in);
+CONVEXLOC_SCALAR int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+  if (const int sign = narrow::cross(p0, p1, q0, q1); sign != narrow::kDeclined) {
+    ++tCounts.narrowIntegers;
+    return sign;
+  }
+  if (within(kPlaneLo, kPlaneHi, {p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y})) {
+    ++tCounts.expansions;
+    return crossExpansion(p0, p1, q0, q1);
+  }
+  ++tCounts.multiprecision;
+  return crossMultiprecision({p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y});
 }
 
-int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  ++tFallbacks;
-  const std::array<double, 12> in{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
-  if (inRange(in, kSpaceLo, kSpaceHi)) return orient3dExpansion(a, b, c, d);
-  ++tMultiprecision;
-  return orient3dMultiprecision(in);
+CONVEXLOC_SCALAR int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  if (const int sign = narrow::orient3d(a, b, c, d); sign != narrow::kDeclined) {
+    ++tCounts.narrowIntegers;
+    return sign;
+  }
+  if (within(kSpaceLo, kSpaceHi, {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) {
+    ++tCounts.expansions;
+    return orient3dExpansion(a, b, c, d);
+  }
+  ++tCounts.multiprecision;
+  return orient3dMultiprecision({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
 }
 
 unsigned long long exactFallbackCount() noexcept {
-  return tFallbacks;
+  return tCounts.narrowIntegers + tCounts.expansions + tCounts.multiprecision;
 }
 
-unsigned long long multiprecisionFallbackCount() noexcept {
-  return tMultiprecision;
+ExactStageCounts exactStageCounts() noexcept {
+  return tCounts;
 }
 
 }  // namespace convexloc

@@ -126,8 +126,12 @@ inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
 // How many times the exact fallback ran in this thread (for tests and statistics).
 unsigned long long exactFallbackCount() noexcept;
 
-// How many of those exact fallbacks needed multiprecision integers (extreme exponents, where
-// the allocation-free expansions do not apply) in this thread.
-unsigned long long multiprecisionFallbackCount() noexcept;
+// The exact fallbacks of this thread by the stage that decided them: integers of at most 192
+// bits (coordinates within 61 bits of each other), floating-point expansions (the ordinary
+// exponent range), multiprecision integers (extreme exponents; the only stage that allocates).
+struct ExactStageCounts {
+  unsigned long long narrowIntegers, expansions, multiprecision;
+};
+ExactStageCounts exactStageCounts() noexcept;
 
 }  // namespace convexloc
