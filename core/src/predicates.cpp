@@ -2,17 +2,19 @@
 // predicates.hpp cannot decide.
 //
 // Three stages, each exact, the first that applies decides:
-//  - narrow integers (detail/narrow_integers.hpp): where all coordinates fit in 61-bit
-//    integers times one power of two, 64-, 128- and 192-bit integer arithmetic;
-//  - expansions, over the ordinary exponent range (below);
-//  - multiprecision integers for extreme exponents.
+//  - narrow integers (detail/narrow_integers.hpp): where all coordinates are 61-bit
+//    integers times one power of two (at any scale up to 2^+-900), 64-, 128- and 192-bit
+//    integer arithmetic;
+//  - floating-point expansions over the ordinary exponent range (below);
+//  - multiprecision integers beyond it.
+// Only the last allocates.
 //
 // Over the ordinary exponent range the sign comes from floating-point expansions
 // (detail/expansion.hpp) on the stack: each difference a - b of the input doubles is taken
 // exactly as a two-component expansion (two-diff), and the determinant of those
-// differences is multiplied out and summed exactly. Nothing is allocated. Outside that
-// range (DBL_MAX, subnormals, scales of 2^+-700) the doubles are scaled to exact integers
-// (detail/exact_number.hpp, which allocates) and the determinant is taken there.
+// differences is multiplied out and summed exactly. Outside that range (DBL_MAX,
+// subnormals, 2^700 beside 2^-700) the doubles are scaled to exact integers
+// (detail/exact_number.hpp) and the determinant is taken there.
 //
 // Why the expansions are exact. Let k be the number of factors in each term of the
 // determinant (2 in the plane, 3 in space) and suppose every input coordinate is 0 or has

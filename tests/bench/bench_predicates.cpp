@@ -3,9 +3,11 @@
 // and the exact stage runs). The faces and points are the same in each pair but for the
 // point's offset, so the ratio of two figures is the exact stage's cost per point.
 //
-// Exact, two kinds: "lattice", points of a tilted lattice plane whose differences are exact
+// Exact, three kinds: "lattice", points of a tilted lattice plane whose differences are exact
 // doubles (CAD coordinates with few significant bits); "tails", points of the plane z = x
-// (or y = x) with full 53-bit coordinates, whose differences carry rounding tails.
+// (the line y = x) with full 53-bit coordinates in [-1, 1], whose differences carry rounding
+// tails; both within the narrow-integer stage. "wide", the same plane with coordinates of
+// magnitudes 2^-20 .. 2^20: too wide a span for 61-bit integers, so the expansions decide.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -31,19 +33,25 @@ struct Turn {
   Vec2 a, b, c;
 };
 
-enum class Kind { Off, Lattice, Tails };
+enum class Kind { Off, Lattice, Tails, Wide };
 
 // a random integer in [-n, n]
 double integer(Rng& r, std::uint64_t n) {
   return static_cast<double>(r.below(2 * n + 1)) - static_cast<double>(n);
 }
 
+// a coordinate: uniform in [-1, 1], or (Wide) of magnitude 2^-20 .. 2^20
+double coordinate(Rng& r, Kind kind) {
+  if (kind != Kind::Wide) return r.uniform(-1, 1);
+  return (r.below(2) ? -1 : 1) * std::ldexp(1 + r.uniform(), static_cast<int>(r.below(41)) - 20);
+}
+
 // a face (a, b, c) and a point d on its plane, or clearly off it
 Orient orientCase(Rng& r, Kind kind) {
-  if (kind == Kind::Tails) {
+  if (kind == Kind::Tails || kind == Kind::Wide) {
     auto at = [&] {
-      const double x = r.uniform(-1, 1);
-      return Vec3{x, r.uniform(-1, 1), x};
+      const double x = coordinate(r, kind);
+      return Vec3{x, coordinate(r, kind), x};
     };
     return {at(), at(), at(), at()};
   }
@@ -63,9 +71,9 @@ Orient orientCase(Rng& r, Kind kind) {
 
 // three points on a line, or the third clearly off it
 Turn turnCase(Rng& r, Kind kind) {
-  if (kind == Kind::Tails) {
+  if (kind == Kind::Tails || kind == Kind::Wide) {
     auto at = [&] {
-      const double x = r.uniform(-1, 1);
+      const double x = coordinate(r, kind);
       return Vec2{x, x};
     };
     return {at(), at(), at()};
@@ -88,9 +96,18 @@ std::vector<Case> cases(Kind kind, Make make) {
   return out;
 }
 
+// the share of calls each exact stage decided since `from`
+void stageCounters(benchmark::State& state, const ExactStageCounts& from) {
+  const ExactStageCounts now = exactStageCounts();
+  const double n = static_cast<double>(state.iterations());
+  state.counters["narrow"] = static_cast<double>(now.narrowIntegers - from.narrowIntegers) / n;
+  state.counters["expansions"] = static_cast<double>(now.expansions - from.expansions) / n;
+  state.counters["multi"] = static_cast<double>(now.multiprecision - from.multiprecision) / n;
+}
+
 void orient3dBench(benchmark::State& state, Kind kind) {
   const std::vector<Orient> all = cases<Orient>(kind, orientCase);
-  const unsigned long long exact0 = exactFallbackCount();
+  const ExactStageCounts before = exactStageCounts();
   std::size_t i = 0;
   for (auto _ : state) {
     const Orient& o = all[i];
@@ -98,13 +115,12 @@ void orient3dBench(benchmark::State& state, Kind kind) {
     i = (i + 1) & (kCases - 1);
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["exact"] =
-      static_cast<double>(exactFallbackCount() - exact0) / static_cast<double>(state.iterations());
+  stageCounters(state, before);
 }
 
 void orient2dBench(benchmark::State& state, Kind kind) {
   const std::vector<Turn> all = cases<Turn>(kind, turnCase);
-  const unsigned long long exact0 = exactFallbackCount();
+  const ExactStageCounts before = exactStageCounts();
   std::size_t i = 0;
   for (auto _ : state) {
     const Turn& t = all[i];
@@ -112,13 +128,14 @@ void orient2dBench(benchmark::State& state, Kind kind) {
     i = (i + 1) & (kCases - 1);
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["exact"] =
-      static_cast<double>(exactFallbackCount() - exact0) / static_cast<double>(state.iterations());
+  stageCounters(state, before);
 }
 
 [[maybe_unused]] const bool registered = [] {
-  const std::pair<const char*, Kind> kinds[] = {
-      {"off", Kind::Off}, {"on_lattice", Kind::Lattice}, {"on_tails", Kind::Tails}};
+  const std::pair<const char*, Kind> kinds[] = {{"off", Kind::Off},
+                                                {"on_lattice", Kind::Lattice},
+                                                {"on_tails", Kind::Tails},
+                                                {"on_wide", Kind::Wide}};
   for (auto [name, kind] : kinds) {
     benchmark::RegisterBenchmark((std::string("Orient3D/") + name).c_str(), orient3dBench, kind);
     benchmark::RegisterBenchmark((std::string("Orient2D/") + name).c_str(), orient2dBench, kind);

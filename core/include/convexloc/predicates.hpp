@@ -3,9 +3,10 @@
 // Each predicate first evaluates in double precision with a proven error bound
 // (Shewchuk's orient2d bound, with guards for overflow and underflow, where the bound
 // does not hold) and, only when that cannot decide the sign, recomputes exactly: with
-// floating-point expansions on the stack over the ordinary exponent range (no allocation),
-// with multiprecision integers for extreme exponents (predicates.cpp states the ranges). The
-// sign returned is the sign of the exact real value for the doubles given.
+// integers of at most 192 bits where the coordinates are close in scale, with floating-point
+// expansions on the stack elsewhere in the ordinary exponent range (neither allocates), with
+// multiprecision integers for extreme exponents (predicates.cpp states the ranges). The sign
+// returned is the sign of the exact real value for the doubles given.
 #pragma once
 
 #include <algorithm>
