@@ -44,12 +44,9 @@
 // than the differences, so that the grain argument of 1. holds for the tails too.
 #include "convexloc/predicates.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <initializer_list>
 
 #include "detail/exact_number.hpp"
 #include "detail/expansion.hpp"
@@ -71,19 +68,6 @@ namespace ex = detail::expansion;
 namespace narrow = detail::narrow;
 
 thread_local ExactStageCounts tCounts{};
-
-// whether every non-zero value is a normal double with 2^lo <= |v| < 2^(hi+1)
-bool within(int lo, int hi, std::initializer_list<double> values) noexcept {
-  std::uint64_t largest = 0, smallestLess1 = ~std::uint64_t{0};  // zeros wrap to the top
-  for (double v : values) {
-    const std::uint64_t m = narrow::magnitudeBits(v);
-    largest = std::max(largest, m);
-    smallestLess1 = std::min(smallestLess1, m - 1);
-  }
-  if (largest == 0) return true;
-  return static_cast<int>(largest >> 52) <= hi + 1023 &&
-         static_cast<int>((smallestLess1 + 1) >> 52) >= lo + 1023;
-}
 
 // the exponent range of the proof above (2^lo <= |v| < 2^(hi+1) for each non-zero v), in the
 // plane and in space
@@ -188,11 +172,12 @@ std::array<detail::ExactInt, K> integers(const std::array<double, K>& values) {
 }  // namespace
 
 CONVEXLOC_SCALAR int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
-  if (const int sign = narrow::cross(p0, p1, q0, q1); sign != narrow::kDeclined) {
+  const narrow::Magnitudes m{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
+  if (const int sign = narrow::cross(p0, p1, q0, q1, m); sign != narrow::kDeclined) {
     ++tCounts.narrowIntegers;
     return sign;
   }
-  if (within(kPlaneLo, kPlaneHi, {p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y})) {
+  if (m.within(kPlaneLo, kPlaneHi)) {
     ++tCounts.expansions;
     return crossExpansion(p0, p1, q0, q1);
   }
@@ -201,11 +186,12 @@ CONVEXLOC_SCALAR int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noex
 }
 
 CONVEXLOC_SCALAR int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  if (const int sign = narrow::orient3d(a, b, c, d); sign != narrow::kDeclined) {
+  const narrow::Magnitudes m{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  if (const int sign = narrow::orient3d(a, b, c, d, m); sign != narrow::kDeclined) {
     ++tCounts.narrowIntegers;
     return sign;
   }
-  if (within(kSpaceLo, kSpaceHi, {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})) {
+  if (m.within(kSpaceLo, kSpaceHi)) {
     ++tCounts.expansions;
     return orient3dExpansion(a, b, c, d);
   }

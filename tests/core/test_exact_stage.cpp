@@ -26,7 +26,13 @@ TEST(ExactStage, CrossNarrowIntegersDecideCoordinatesCloseInScale) {
   });
   const auto rim =
       make(kCases, [&] { return scaled(rimLine(r, false), static_cast<int>(r.below(61)) - 30); });
-  for (const auto* cases : {&lattice, &box, &diagonal, &rim})
+  const auto zeros = make(kCases, [&] {
+    Cross c = latticeLine(r, static_cast<int>(r.below(121)) - 60);
+    c.p0.x = 0;
+    c.q1.y = r.below(2) ? 0.0 : c.q1.y;
+    return c;
+  });
+  for (const auto* cases : {&lattice, &box, &diagonal, &rim, &zeros})
     EXPECT_EQ(expectAllMatch(*cases, crossStage, crossRef).narrowIntegers, cases->size());
   // one ulp off a small coordinate widens the span past the stage now and then
   EXPECT_GT(expectAllMatch(offLattice, crossStage, crossRef).narrowIntegers,
@@ -76,7 +82,13 @@ TEST(ExactStage, Orient3dNarrowIntegersDecideCoordinatesCloseInScale) {
   });
   const auto rim =
       make(kCases, [&] { return scaled(rimPlane(r, false), static_cast<int>(r.below(61)) - 30); });
-  for (const auto* cases : {&lattice, &box, &column, &rim})
+  const auto zeros = make(kCases, [&] {
+    Orient o = latticePlane(r, static_cast<int>(r.below(121)) - 60);
+    o.a.x = 0;
+    o.d.z = r.below(2) ? 0.0 : o.d.z;
+    return o;
+  });
+  for (const auto* cases : {&lattice, &box, &column, &rim, &zeros})
     EXPECT_EQ(expectAllMatch(*cases, orientStage, orientRef).narrowIntegers, cases->size());
   // one ulp off a small coordinate widens the span past the stage now and then
   EXPECT_GT(expectAllMatch(offLattice, orientStage, orientRef).narrowIntegers,

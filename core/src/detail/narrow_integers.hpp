@@ -31,22 +31,44 @@ inline std::uint64_t magnitudeBits(double v) noexcept {
   return std::bit_cast<std::uint64_t>(v) & ~(1ULL << 63);
 }
 
-// The scale 2^(60 - E) for values whose largest magnitude, its bits `largest`, has exponent E:
-// it maps every value below 2^61 in magnitude. 0 (the stage declines) where E is outside
-// [-900, 900] (infinities, NaN, subnormals only) or all values are zero.
-inline double scaleFor(std::uint64_t largest) noexcept {
-  const int e = static_cast<int>(largest >> 52) - 1023;
-  if (largest == 0 || e < -900 || e > 900) return 0.0;
-  return std::bit_cast<double>(static_cast<std::uint64_t>(1023 + 60 - e) << 52);
-}
+// The largest and the smallest non-zero magnitude of a set of doubles, as bit patterns
+// (scalar code: the values stay in registers).
+class Magnitudes {
+ public:
+  Magnitudes(std::initializer_list<double> values) noexcept {
+    for (double v : values) {
+      const std::uint64_t m = magnitudeBits(v);
+      largest_ = std::max(largest_, m);
+      smallestLess1_ = std::min(smallestLess1_, m - 1);  // a zero wraps to the top
+    }
+  }
+  // whether every non-zero value is a normal double with 2^lo <= |v| < 2^(hi+1)
+  bool within(int lo, int hi) const noexcept {
+    return largest_ == 0 ||
+           (biased(largest_) <= hi + 1023 && biased(smallestLess1_ + 1) >= lo + 1023);
+  }
+  // The scale 2^(60 - E), E the largest magnitude's exponent: every value times it is below
+  // 2^61 in magnitude, and, where that is an integer, at least 1 (exact: no underflow). 0 (the
+  // stage declines) where all are zero, E is outside [-900, 900], or a value below 2^(E-61)
+  // shows that they are not all integers at this scale.
+  double scale() const noexcept {
+    const int e = biased(largest_);
+    if (largest_ == 0 || e < 1023 - 900 || e > 1023 + 900) return 0.0;
+    if (biased(smallestLess1_ + 1) < e - 61) return 0.0;
+    return std::bit_cast<double>(static_cast<std::uint64_t>(2 * 1023 + 60 - e) << 52);
+  }
+
+ private:
+  static int biased(std::uint64_t m) noexcept { return static_cast<int>(m >> 52); }
+  std::uint64_t largest_ = 0, smallestLess1_ = ~std::uint64_t{0};
+};
 
 // v * scale as an integer (|v * scale| < 2^61, so the conversion is defined); `exact` is
-// cleared where v * scale is not an integer. The product is exact unless it underflows;
-// then it is below 1 and no integer, or 0 from a non-zero v, which is caught too.
+// cleared where v * scale, exact for Magnitudes::scale, is not an integer
 inline std::int64_t toInteger(double v, double scale, bool& exact) noexcept {
   const double t = v * scale;
   const auto i = static_cast<std::int64_t>(t);
-  exact &= (static_cast<double>(i) == t) & ((t != 0.0) | (v == 0.0));
+  exact &= static_cast<double>(i) == t;
   return i;
 }
 
@@ -85,12 +107,9 @@ class Wide {
   std::uint64_t w0_ = 0, w1_ = 0, w2_ = 0;
 };
 
-// sign of (p1 - p0) x (q1 - q0), or kDeclined
-inline int cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
-  std::uint64_t largest = 0;
-  for (double v : {p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y})
-    largest = std::max(largest, magnitudeBits(v));
-  const double scale = scaleFor(largest);
+// sign of (p1 - p0) x (q1 - q0), or kDeclined; m: the Magnitudes of the eight coordinates
+inline int cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1, const Magnitudes& m) noexcept {
+  const double scale = m.scale();
   if (scale == 0.0) return kDeclined;
   bool exact = true;
   auto z = [&](double v) { return toInteger(v, scale, exact); };
@@ -101,12 +120,9 @@ inline int cross(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
   return (det > 0) - (det < 0);
 }
 
-// sign of det[a-d; b-d; c-d], or kDeclined
-inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  std::uint64_t largest = 0;
-  for (double v : {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z})
-    largest = std::max(largest, magnitudeBits(v));
-  const double scale = scaleFor(largest);
+// sign of det[a-d; b-d; c-d], or kDeclined; m: the Magnitudes of the twelve coordinates
+inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Magnitudes& m) noexcept {
+  const double scale = m.scale();
   if (scale == 0.0) return kDeclined;
   bool exact = true;
   auto z = [&](double v) { return toInteger(v, scale, exact); };
