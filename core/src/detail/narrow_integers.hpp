@@ -48,9 +48,9 @@ class Magnitudes {
            (biased(largest_) <= hi + 1023 && biased(smallestLess1_ + 1) >= lo + 1023);
   }
   // The scale 2^(60 - E), E the largest magnitude's exponent: every value times it is below
-  // 2^61 in magnitude, and, where that is an integer, at least 1 (exact: no underflow). 0 (the
-  // stage declines) where all are zero, E is outside [-900, 900], or a value below 2^(E-61)
-  // shows that they are not all integers at this scale.
+  // 2^61 in magnitude and, if not zero, at least 1/2 (a normal double: the product is exact).
+  // 0 (the stage declines) where all are zero, E is outside [-900, 900], or a value below
+  // 2^(E-61), which cannot be an integer at this scale.
   double scale() const noexcept {
     const int e = biased(largest_);
     if (largest_ == 0 || e < 1023 - 900 || e > 1023 + 900) return 0.0;
