@@ -5,8 +5,6 @@
 // triangle and neighbours lie on opposite sides of their common edge, so the central
 // projection is a branched covering of the sphere; its degree, the total solid angle over
 // 4 pi, is 1 exactly when the surface is the boundary of the convex solid.
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -14,6 +12,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/exact_number.hpp"
 #include "detail/polyhedron_build.hpp"
 
 namespace convexloc::detail {
@@ -31,14 +30,15 @@ double solidAngle(Vec3 a, Vec3 b, Vec3 c) {
 }
 
 // exact sign of det[p - g; q - g; r - g] for a rational g
-int rationalOrient(Vec3 p, Vec3 q, Vec3 r, const mpq_class (&g)[3]) {
-  mpq_class m[3][3] = {{mpq_class(p.x) - g[0], mpq_class(p.y) - g[1], mpq_class(p.z) - g[2]},
-                       {mpq_class(q.x) - g[0], mpq_class(q.y) - g[1], mpq_class(q.z) - g[2]},
-                       {mpq_class(r.x) - g[0], mpq_class(r.y) - g[1], mpq_class(r.z) - g[2]}};
-  mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                  m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  return mpq_sgn(det.get_mpq_t());
+int rationalOrient(Vec3 p, Vec3 q, Vec3 r, const ExactRational (&g)[3]) {
+  const ExactRational m[3][3] = {
+      {exactRational(p.x) - g[0], exactRational(p.y) - g[1], exactRational(p.z) - g[2]},
+      {exactRational(q.x) - g[0], exactRational(q.y) - g[1], exactRational(q.z) - g[2]},
+      {exactRational(r.x) - g[0], exactRational(r.y) - g[1], exactRational(r.z) - g[2]}};
+  const ExactRational det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                            m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  return det.sign();
 }
 
 // the double next to v in direction dir (-1, 0 or +1)
@@ -91,11 +91,13 @@ std::vector<Vec3> centreCandidates(const std::vector<Vec3>& v,
   return candidates;
 }
 
-// p - g for a rational g, in doubles, halved when `half`
-Vec3 minusRational(Vec3 p, const mpq_class (&g)[3], bool half) {
-  mpq_class x = mpq_class(p.x) - g[0], y = mpq_class(p.y) - g[1], z = mpq_class(p.z) - g[2];
+// p - g for a rational g, in doubles rounded toward zero, halved when `half`
+Vec3 minusRational(Vec3 p, const ExactRational (&g)[3], bool half) {
+  ExactRational x = exactRational(p.x) - g[0], y = exactRational(p.y) - g[1],
+                z = exactRational(p.z) - g[2];
   if (half) x /= 2, y /= 2, z /= 2;
-  return {x.get_d(), y.get_d(), z.get_d()};
+  return {toDouble(x, Rounding::TowardZero), toDouble(y, Rounding::TowardZero),
+          toDouble(z, Rounding::TowardZero)};
 }
 
 // Scales each axis by its own power of two, bringing the largest |coordinate| into [1, 2). A
@@ -140,7 +142,7 @@ void PolyhedronBuilder::findCentre() {
 std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
   const std::vector<Vec3>& v = out_.vertices_;
   std::vector<Vec3> rel(v.size());
-  mpq_class g[3];  // the exact centre when there is no double one
+  ExactRational g[3];  // the exact centre when there is no double one
   if (out_.centre_) {
     const Vec3 c = *out_.centre_;
     for (std::size_t i = 0; i < v.size(); ++i) rel[i] = {v[i].x - c.x, v[i].y - c.y, v[i].z - c.z};
@@ -149,9 +151,9 @@ std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
     // strictly inside the solid if it is convex. A face with g on its outer side or in its
     // plane has one of the four vertices strictly outside: the surface is not convex.
     for (std::uint32_t k : tetra_) {
-      g[0] += mpq_class(v[k].x) / 4;
-      g[1] += mpq_class(v[k].y) / 4;
-      g[2] += mpq_class(v[k].z) / 4;
+      g[0] += exactRational(v[k].x) / 4;
+      g[1] += exactRational(v[k].y) / 4;
+      g[2] += exactRational(v[k].z) / 4;
     }
     for (std::uint32_t t = 0; t < out_.triangles_.size(); ++t) {
       const Vec3 p = v[out_.triangles_[t][0]], q = v[out_.triangles_[t][1]],

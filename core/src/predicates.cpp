@@ -1,97 +1,210 @@
-// convexloc — exact predicates: a double-precision filter with a proven bound, and an
-// exact integer fallback for the rare cases the filter cannot decide.
+// convexloc — the exact stage of the predicates: what runs when the floating-point filter of
+// predicates.hpp cannot decide.
+//
+// Three stages, each exact, the first that applies decides:
+//  - narrow integers (detail/narrow_integers.hpp): where all coordinates are 61-bit
+//    integers times one power of two (at any scale up to 2^+-900), 64-, 128- and 192-bit
+//    integer arithmetic;
+//  - floating-point expansions over the ordinary exponent range (below);
+//  - multiprecision integers beyond it.
+// Only the last allocates.
+//
+// Over the ordinary exponent range the sign comes from floating-point expansions
+// (detail/expansion.hpp) on the stack: each difference a - b of the input doubles is taken
+// exactly as a two-component expansion (two-diff), and the determinant of those
+// differences is multiplied out and summed exactly. Outside that range (DBL_MAX,
+// subnormals, 2^700 beside 2^-700) the doubles are scaled to exact integers
+// (detail/exact_number.hpp) and the determinant is taken there.
+//
+// Why the expansions are exact. Let k be the number of factors in each term of the
+// determinant (2 in the plane, 3 in space) and suppose every input coordinate is 0 or has
+// 2^lo <= |x| <= 2^hi, with (k, lo, hi) = (2, -480, 500) or (3, -300, 330) (the code asks
+// for a little less: a normal double of exponent at most hi - 1).
+//  1. Grain. A double with |x| >= 2^lo is an integer multiple of g = 2^(lo - 52) (its last
+//     bit lies 52 places below its leading one). If the exact result of a sum, difference
+//     or product of doubles is a multiple of 2^m, so is its rounded value (rounding keeps a
+//     value on its own grid, or on a coarser grid of larger powers of two), and so is the
+//     error term two-sum, two-diff or two-product recovers (a difference of two such).
+//     The differences are multiples of g; every product formed multiplies one component
+//     drawn from each of at most k differences (or from an expansion built of such
+//     products), so every value computed is a multiple of g^k: 2^-1064 in the plane and
+//     2^-1056 in space, both multiples of 2^-1074, the subnormal grid.
+//  2. Magnitude. |a - b| <= 2^(hi+1), and the two components of its expansion sum in
+//     magnitude to at most 2^(hi+1) (1 + 2^-53). Each error-free step replaces its operands
+//     by results whose magnitudes sum to at most (1 + 2^-53) times theirs, and a few
+//     thousand steps run, so every component and partial sum is below
+//     (terms) * (2^(hi+1))^k * (1 + 2^-40): 2 * 2^1002 = 2^1003 in the plane and
+//     6 * 2^993 < 2^996 in space. No operation overflows, and the operands of a product
+//     stay below 2^996, as Veltkamp's split (used where there is no fused multiply-add)
+//     needs.
+//  3. Hence detail/expansion.hpp's condition holds (multiples of 2^-1074, below 2^1020):
+//     each step is exact, the final expansion is nonoverlapping, and its last component
+//     has the sign of the determinant.
+// The range test costs one pass over the coordinates; the bounds are on the inputs rather
+// than the differences, so that the grain argument of 1. holds for the tails too.
 #include "convexloc/predicates.hpp"
-
-#include <gmpxx.h>
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+
+#include "detail/exact_number.hpp"
+#include "detail/expansion.hpp"
+#include "detail/narrow_integers.hpp"
+
+// GCC's straight-line vectoriser packs the points' coordinates, passed in separate
+// registers, into pairs through the stack, and each pair's reload stalls on the two stores
+// before it (store forwarding fails): a third of the narrow stage's time. Scalar code here.
+#if defined(__GNUC__) && !defined(__clang__)
+#define CONVEXLOC_SCALAR [[gnu::optimize("no-tree-slp-vectorize")]]
+#else
+#define CONVEXLOC_SCALAR
+#endif
 
 namespace convexloc {
 namespace {
 
-thread_local unsigned long long tFallbacks = 0;
+namespace ex = detail::expansion;
+namespace narrow = detail::narrow;
 
-// exponent of the least significant bit of a non-zero double
-int lowBit(double v) {
-  int e = 0;
-  std::frexp(v, &e);
-  return e - 53;
+thread_local ExactStageCounts tCounts{};
+
+// the exponent range of the proof above (2^lo <= |v| < 2^(hi+1) for each non-zero v), in the
+// plane and in space
+constexpr int kPlaneLo = -480, kPlaneHi = 499;
+constexpr int kSpaceLo = -300, kSpaceHi = 329;
+
+// === The expansion stage
+
+// a difference of two doubles, exactly: at most two components
+struct Diff {
+  double c[2];
+  int n;
+};
+Diff diff(double a, double b) noexcept {
+  Diff d;
+  d.n = ex::difference(a, b, d.c);
+  return d;
 }
 
-// smallest lsb exponent over the non-zero values, so that all scale to integers
+// h = x * y - z * w exactly, at most 16 components
+int minor(const Diff& x, const Diff& y, const Diff& z, const Diff& w, double* h) noexcept {
+  double left[8], right[8], scratch[16];
+  const int nl = ex::product(x.c, x.n, y.c, y.n, left, scratch);
+  const int nr = ex::product(z.c, z.n, w.c, w.n, right, scratch);
+  ex::negate(right, nr);
+  return ex::sum(left, nl, right, nr, h);
+}
+
+// sign of (p1 - p0) x (q1 - q0), all on the stack (kept out of line: the narrow-integer
+// stage before it stays lean)
+[[gnu::noinline]] int crossExpansion(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+  const Diff px = diff(p1.x, p0.x), py = diff(p1.y, p0.y);
+  const Diff qx = diff(q1.x, q0.x), qy = diff(q1.y, q0.y);
+  double det[16];
+  return ex::signOf(det, minor(px, qy, py, qx, det));
+}
+
+// h = u * m exactly for a difference u and an expansion m of at most 16 components
+int times(const Diff& u, const double* m, int n, double* h) noexcept {
+  double scratch[4 * 16 * 2];
+  return ex::product(m, n, u.c, u.n, h, scratch);
+}
+
+// sign of det[a-d; b-d; c-d], all on the stack (out of line, as above)
+[[gnu::noinline]] int orient3dExpansion(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  const Diff ux = diff(a.x, d.x), uy = diff(a.y, d.y), uz = diff(a.z, d.z);
+  const Diff vx = diff(b.x, d.x), vy = diff(b.y, d.y), vz = diff(b.z, d.z);
+  const Diff wx = diff(c.x, d.x), wy = diff(c.y, d.y), wz = diff(c.z, d.z);
+  // expanded along the first row: ux (vy wz - vz wy) + uy (vz wx - vx wz) + uz (vx wy - vy wx)
+  double m[16], t1[64], t2[64], t3[64], t12[128], det[192];
+  int n = minor(vy, wz, vz, wy, m);
+  const int n1 = times(ux, m, n, t1);
+  n = minor(vz, wx, vx, wz, m);
+  const int n2 = times(uy, m, n, t2);
+  n = minor(vx, wy, vy, wx, m);
+  const int n3 = times(uz, m, n, t3);
+  const int n12 = ex::sum(t1, n1, t2, n2, t12);
+  return ex::signOf(det, ex::sum(t12, n12, t3, n3, det));
+}
+
+// === The multiprecision stage (extreme exponents)
+
+// the smallest exponent of a last bit over the non-zero values, so that all scale to integers
 template <std::size_t K>
-int commonLowBit(const std::array<double, K>& vals) {
+int commonLowBit(const std::array<double, K>& values) noexcept {
   int lo = 0;
   bool any = false;
-  for (double v : vals) {
+  for (double v : values) {
     if (v == 0.0) continue;
-    int b = lowBit(v);
-    if (!any || b < lo) lo = b;
+    int e = 0;
+    std::frexp(v, &e);
+    if (!any || e - 53 < lo) lo = e - 53;
     any = true;
   }
   return lo;
 }
 
-// v * 2^-lo as an exact integer
-void scaled(mpz_class& out, double v, int lo) {
-  int e = 0;
-  double m = std::frexp(v, &e);
-  mpz_set_d(out.get_mpz_t(), std::ldexp(m, 53));  // |m| < 1, so this is an exact integer
-  int shift = e - 53 - lo;
-  if (shift > 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+// the values times 2^-lo, all exact integers
+template <std::size_t K>
+std::array<detail::ExactInt, K> integers(const std::array<double, K>& values) {
+  const int lo = commonLowBit(values);
+  std::array<detail::ExactInt, K> out;
+  for (std::size_t i = 0; i < K; ++i) out[i] = detail::scaledInteger(values[i], -lo);
+  return out;
 }
 
-int sign(const mpz_class& v) {
-  return mpz_sgn(v.get_mpz_t());
+[[gnu::noinline]] int crossMultiprecision(const std::array<double, 8>& in) {
+  const auto z = integers(in);  // p0x p0y p1x p1y q0x q0y q1x q1y
+  const detail::ExactInt det = (z[2] - z[0]) * (z[7] - z[5]) - (z[3] - z[1]) * (z[6] - z[4]);
+  return det.sign();
+}
+
+[[gnu::noinline]] int orient3dMultiprecision(const std::array<double, 12>& in) {
+  auto z = integers(in);  // a b c d, three coordinates each
+  for (std::size_t i = 0; i < 9; ++i) z[i] -= z[9 + i % 3];
+  const detail::ExactInt det = z[0] * (z[4] * z[8] - z[5] * z[7]) +
+                               z[1] * (z[5] * z[6] - z[3] * z[8]) +
+                               z[2] * (z[3] * z[7] - z[4] * z[6]);
+  return det.sign();
 }
 
 }  // namespace
 
-int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
-  ++tFallbacks;
-  thread_local std::array<mpz_class, 8> z;
-  std::array<double, 8> in{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
-  int lo = commonLowBit(in);
-  for (std::size_t i = 0; i < in.size(); ++i) scaled(z[i], in[i], lo);
-  // (p1x - p0x) * (q1y - q0y) - (p1y - p0y) * (q1x - q0x)
-  z[2] -= z[0];
-  z[3] -= z[1];
-  z[6] -= z[4];
-  z[7] -= z[5];
-  z[0] = z[2] * z[7];
-  z[1] = z[3] * z[6];
-  z[0] -= z[1];
-  return sign(z[0]);
+CONVEXLOC_SCALAR int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
+  const narrow::Magnitudes m{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
+  if (const int sign = narrow::cross(p0, p1, q0, q1, m); sign != narrow::kDeclined) {
+    ++tCounts.narrowIntegers;
+    return sign;
+  }
+  if (m.within(kPlaneLo, kPlaneHi)) {
+    ++tCounts.expansions;
+    return crossExpansion(p0, p1, q0, q1);
+  }
+  ++tCounts.multiprecision;
+  return crossMultiprecision({p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y});
 }
 
-// exact sign of det[a-d; b-d; c-d]
-int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  ++tFallbacks;
-  thread_local std::array<mpz_class, 12> z;
-  thread_local std::array<mpz_class, 3> t;
-  std::array<double, 12> in{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
-  int lo = commonLowBit(in);
-  for (std::size_t i = 0; i < in.size(); ++i) scaled(z[i], in[i], lo);
-  for (std::size_t i = 0; i < 9; ++i) z[i] -= z[9 + i % 3];
-  // rows (z0 z1 z2), (z3 z4 z5), (z6 z7 z8), expanded along the first row; every step
-  // writes into a thread-local integer, so a warm fallback allocates nothing
-  auto m = [](mpz_class& v) { return v.get_mpz_t(); };
-  auto minor = [&](mpz_class& out, int p, int q, int r, int s) {
-    mpz_mul(m(out), m(z[p]), m(z[q]));
-    mpz_submul(m(out), m(z[r]), m(z[s]));
-  };
-  minor(t[0], 4, 8, 5, 7);
-  minor(t[1], 5, 6, 3, 8);
-  mpz_mul(m(t[2]), m(t[0]), m(z[0]));
-  mpz_addmul(m(t[2]), m(t[1]), m(z[1]));
-  minor(t[0], 3, 7, 4, 6);
-  mpz_addmul(m(t[2]), m(t[0]), m(z[2]));
-  return sign(t[2]);
+CONVEXLOC_SCALAR int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
+  const narrow::Magnitudes m{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+  if (const int sign = narrow::orient3d(a, b, c, d, m); sign != narrow::kDeclined) {
+    ++tCounts.narrowIntegers;
+    return sign;
+  }
+  if (m.within(kSpaceLo, kSpaceHi)) {
+    ++tCounts.expansions;
+    return orient3dExpansion(a, b, c, d);
+  }
+  ++tCounts.multiprecision;
+  return orient3dMultiprecision({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
 }
 
 unsigned long long exactFallbackCount() noexcept {
-  return tFallbacks;
+  return tCounts.narrowIntegers + tCounts.expansions + tCounts.multiprecision;
+}
+
+ExactStageCounts exactStageCounts() noexcept {
+  return tCounts;
 }
 
 }  // namespace convexloc

@@ -1,5 +1,5 @@
 // ConvexPolyhedron: what it accepts and normalises, and every rejection with its message;
-// Qhull hulls; the generators' shapes.
+// hulls; the generators' shapes.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -310,7 +310,7 @@ TEST(Polyhedron3DReject, InconsistentMeshDataIsAUsageError) {
   EXPECT_THROW(ConvexPolyhedron{broken}, UsageError);
 }
 
-// === Qhull hulls
+// === Hulls
 
 TEST(Hull3D, RandomPointsGiveTheirHull) {
   Rng rng(3);

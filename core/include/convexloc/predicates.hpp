@@ -2,8 +2,11 @@
 //
 // Each predicate first evaluates in double precision with a proven error bound
 // (Shewchuk's orient2d bound, with guards for overflow and underflow, where the bound
-// does not hold) and, only when that cannot decide the sign, recomputes exactly with
-// GMP integers. The sign returned is the sign of the exact real value for the doubles given.
+// does not hold) and, only when that cannot decide the sign, recomputes exactly: with
+// integers of at most 192 bits where the coordinates are close in scale, with floating-point
+// expansions on the stack elsewhere in the ordinary exponent range (neither allocates), with
+// multiprecision integers for extreme exponents (predicates.cpp states the ranges). The sign
+// returned is the sign of the exact real value for the doubles given.
 #pragma once
 
 #include <algorithm>
@@ -24,7 +27,7 @@ inline constexpr double kTinyPermanent = 0x1p-960;
 // absolute slack for one underflowed product (half the smallest subnormal, twice over)
 inline constexpr double kUnderflowSlack = 0x1p-1072;
 
-// exact sign of (p1 - p0) x (q1 - q0) for finite doubles, with GMP integers
+// exact sign of (p1 - p0) x (q1 - q0) for finite doubles (the exact stage, predicates.cpp)
 int crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept;
 
 // sign of (p1 - p0) x (q1 - q0): the filter, then the exact fallback when it cannot decide
@@ -59,7 +62,7 @@ namespace detail {
 // Shewchuk's bound for the 3x3 determinant of differences: |error| <= kO3dBound * permanent
 inline constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
 
-// exact sign of det[a-d; b-d; c-d] for finite doubles, with GMP integers
+// exact sign of det[a-d; b-d; c-d] for finite doubles (the exact stage, predicates.cpp)
 int orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept;
 
 // a difference whose products in the 3D filter can neither underflow nor overflow
@@ -123,5 +126,13 @@ inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
 
 // How many times the exact fallback ran in this thread (for tests and statistics).
 unsigned long long exactFallbackCount() noexcept;
+
+// The exact fallbacks of this thread by the stage that decided them: integers of at most 192
+// bits (coordinates within 61 bits of each other), floating-point expansions (the ordinary
+// exponent range), multiprecision integers (extreme exponents; the only stage that allocates).
+struct ExactStageCounts {
+  unsigned long long narrowIntegers, expansions, multiprecision;
+};
+ExactStageCounts exactStageCounts() noexcept;
 
 }  // namespace convexloc

@@ -12,14 +12,13 @@
 // to the earlier of s2 and X; it is empty when s2 lies before E or s1 after X. A touching
 // line meets the polygon in a vertex or along an edge, points that are doubles; the part is
 // the overlap of the two intervals along d.
-#include <gmpxx.h>
-
 #include <cmath>
 #include <cstddef>
 #include <optional>
 
 #include "convexloc/intersect2d.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/exact_number.hpp"
 #include "intersect/ring2d.hpp"
 
 namespace convexloc {
@@ -43,31 +42,6 @@ int sideOfHit(std::span<const Vec2> ring, BoundaryHit h, bool leaving, Vec2 s1, 
   if (h.atVertex) return order(s1, s2, ring[h.index], s);
   const int outer = -orient2d(ring[h.index], ring[detail::nextOf(h.index, ring.size())], s);
   return leaving ? outer : -outer;
-}
-
-// the rational q rounded to the nearest double, ties to even (q within the double range)
-double nearestDouble(const mpq_class& q) {
-  const int sign = sgn(q);
-  if (sign == 0) return 0.0;
-  const mpz_class num = abs(q.get_num()), den = q.get_den();
-  const long bits = static_cast<long>(mpz_sizeinbase(num.get_mpz_t(), 2)) -
-                    static_cast<long>(mpz_sizeinbase(den.get_mpz_t(), 2));
-  long exponent = std::max(bits - 53, -1074L);  // the quotient then has 53 or 54 bits
-  mpz_class m, r, scaledNum = num, scaledDen = den;
-  for (int pass = 0; pass < 2; ++pass) {
-    scaledNum = num;
-    scaledDen = den;
-    if (exponent >= 0)
-      scaledDen <<= static_cast<unsigned long>(exponent);
-    else
-      scaledNum <<= static_cast<unsigned long>(-exponent);
-    mpz_tdiv_qr(m.get_mpz_t(), r.get_mpz_t(), scaledNum.get_mpz_t(), scaledDen.get_mpz_t());
-    if (mpz_sizeinbase(m.get_mpz_t(), 2) <= 53) break;
-    ++exponent;  // 54 bits: one more halving leaves 53
-  }
-  const int half = cmp(mpz_class(r * 2), scaledDen);
-  if (half > 0 || (half == 0 && mpz_odd_p(m.get_mpz_t()))) ++m;
-  return sign * std::ldexp(m.get_d(), static_cast<int>(exponent));
 }
 
 // the inside of a touching line: the overlap of the segment with the touched vertices
@@ -98,12 +72,14 @@ std::optional<Segment2D> clipCrossing(std::span<const Vec2> ring, const LineHit&
 
 Vec2 roundedIntersection(Vec2 p1, Vec2 p2, Vec2 a, Vec2 b) {
   // a + t (b - a) with t = (d x (p1 - a)) / (d x (b - a)), d = p2 - p1, all exact
-  const mpq_class ax(a.x), ay(a.y);
-  const mpq_class dx = mpq_class(p2.x) - mpq_class(p1.x), dy = mpq_class(p2.y) - mpq_class(p1.y);
-  const mpq_class ex = mpq_class(b.x) - ax, ey = mpq_class(b.y) - ay;
-  const mpq_class wx = mpq_class(p1.x) - ax, wy = mpq_class(p1.y) - ay;
-  const mpq_class t = (dx * wy - dy * wx) / (dx * ey - dy * ex);
-  return {nearestDouble(ax + t * ex), nearestDouble(ay + t * ey)};
+  using detail::ExactRational, detail::exactRational, detail::Rounding, detail::toDouble;
+  const ExactRational ax = exactRational(a.x), ay = exactRational(a.y);
+  const ExactRational dx = exactRational(p2.x) - exactRational(p1.x),
+                      dy = exactRational(p2.y) - exactRational(p1.y);
+  const ExactRational ex = exactRational(b.x) - ax, ey = exactRational(b.y) - ay;
+  const ExactRational wx = exactRational(p1.x) - ax, wy = exactRational(p1.y) - ay;
+  const ExactRational t = (dx * wy - dy * wx) / (dx * ey - dy * ex);
+  return {toDouble(ax + t * ex, Rounding::Nearest), toDouble(ay + t * ey, Rounding::Nearest)};
 }
 
 std::optional<Segment2D> LineIntersector::clip(Vec2 s1, Vec2 s2) const {

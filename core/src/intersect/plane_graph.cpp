@@ -1,10 +1,9 @@
 // convexloc — the vertex graph of a polyhedron and the exact fallback of a plane's vertex
 // comparison (graph3d.hpp).
-#include <gmpxx.h>
-
 #include <cstdint>
 #include <vector>
 
+#include "detail/exact_number.hpp"
 #include "intersect/graph3d.hpp"
 
 namespace convexloc::detail {
@@ -24,18 +23,18 @@ VertexGraph::VertexGraph(const ConvexPolyhedron& polyhedron) {
 }
 
 int det3DifferencesExact(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
-  mpq_class r[3][3];
+  ExactRational r[3][3];
   for (int k = 0; k < 3; ++k) {
-    r[k][0] = mpq_class(to[k].x) - mpq_class(from[k].x);
-    r[k][1] = mpq_class(to[k].y) - mpq_class(from[k].y);
-    r[k][2] = mpq_class(to[k].z) - mpq_class(from[k].z);
+    r[k][0] = exactRational(to[k].x) - exactRational(from[k].x);
+    r[k][1] = exactRational(to[k].y) - exactRational(from[k].y);
+    r[k][2] = exactRational(to[k].z) - exactRational(from[k].z);
   }
-  mpq_class det = 0;
+  ExactRational det = 0;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     det += r[0][k] * (r[1][i] * r[2][j] - r[1][j] * r[2][i]);
   }
-  return sgn(det);
+  return det.sign();
 }
 
 }  // namespace convexloc::detail

@@ -1,0 +1,83 @@
+// convexloc — exact conversions between doubles and the exact number types (exact_number.hpp).
+#include "detail/exact_number.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace convexloc::detail {
+namespace {
+
+// v == mantissa * 2^exponent with an integer |mantissa| < 2^53, for a finite non-zero v
+struct Decomposed {
+  std::uint64_t magnitude;
+  bool negative;
+  int exponent;
+};
+Decomposed decompose(double v) {
+  int e = 0;
+  const double m = std::frexp(v, &e);                 // |m| in [0.5, 1)
+  const double whole = std::ldexp(std::fabs(m), 53);  // an integer below 2^53
+  return {static_cast<std::uint64_t>(whole), m < 0, e - 53};
+}
+
+// the number of bits of a non-negative integer (0 for 0)
+long bitLength(const ExactInt& v) {
+  return v == 0 ? 0 : static_cast<long>(boost::multiprecision::msb(v)) + 1;
+}
+
+}  // namespace
+
+ExactInt scaledInteger(double v, int shift) {
+  if (v == 0.0) return ExactInt(0);
+  const Decomposed d = decompose(v);
+  ExactInt out(d.magnitude);
+  const int k = d.exponent + shift;
+  if (k > 0) out <<= static_cast<unsigned>(k);
+  if (k < 0) out >>= static_cast<unsigned>(-k);  // the caller's shift leaves no fraction
+  return d.negative ? ExactInt(-out) : out;
+}
+
+ExactRational exactRational(double v) {
+  if (v == 0.0) return ExactRational(0);
+  Decomposed d = decompose(v);
+  // an odd mantissa over a power of two is already in lowest terms
+  const int zeros = std::min(std::countr_zero(d.magnitude), std::max(0, -d.exponent));
+  d.magnitude >>= zeros;
+  d.exponent += zeros;
+  ExactInt num(d.magnitude);
+  if (d.negative) num = -num;
+  if (d.exponent >= 0) return ExactRational(ExactInt(num << static_cast<unsigned>(d.exponent)));
+  return ExactRational(num, ExactInt(ExactInt(1) << static_cast<unsigned>(-d.exponent)));
+}
+
+double toDouble(const ExactRational& q, Rounding mode) {
+  const int sign = q.sign();
+  if (sign == 0) return 0.0;
+  const ExactInt num = abs(numerator(q)), den = denominator(q);
+  const long bits = bitLength(num) - bitLength(den);
+  if (bits > 1100) return sign * HUGE_VAL;
+  // the quotient num / den / 2^exponent then has 53 or 54 bits, or fewer for a subnormal
+  long exponent = std::max(bits - 53, -1074L);
+  ExactInt m, r, scaledNum, scaledDen;
+  for (int pass = 0; pass < 2; ++pass) {
+    scaledNum = num;
+    scaledDen = den;
+    if (exponent >= 0)
+      scaledDen <<= static_cast<unsigned>(exponent);
+    else
+      scaledNum <<= static_cast<unsigned>(-exponent);
+    boost::multiprecision::divide_qr(scaledNum, scaledDen, m, r);
+    if (bitLength(m) <= 53) break;
+    ++exponent;  // 54 bits: one more halving leaves 53
+  }
+  if (mode == Rounding::Nearest) {
+    const int half = ExactInt(r * 2).compare(scaledDen);
+    if (half > 0 || (half == 0 && boost::multiprecision::bit_test(m, 0))) ++m;
+  }
+  const double mantissa = static_cast<double>(m.convert_to<std::uint64_t>());  // at most 2^53
+  return sign * std::ldexp(mantissa, static_cast<int>(exponent));
+}
+
+}  // namespace convexloc::detail
