@@ -247,7 +247,10 @@ void reportMethod(Output& out, const Locator& locator, const Shape& shape, std::
   out.put(format("Method %s\n", std::string(info.name).c_str()));
   field(out, "how", how(info));
   reportDetails(out, locator, shape, s, asked);
-  field(out, D::kWords.elements, format("%zu", s.*D::kCount));
+  if constexpr (std::is_same_v<decltype(s), const Stats3D>)
+    field(out, D::kWords.elements, format("%zu (%zu triangles)", s.faces, s.triangles));
+  else
+    field(out, D::kWords.elements, format("%zu", s.*D::kCount));
   reportCells<Locator>(out, s);
   field(out, "memory", byteCount(s.bytes));
   field(out, std::string("bytes per ") + D::kWords.element, format("%.1f", s.*D::kBytesPer));

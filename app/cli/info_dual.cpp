@@ -19,8 +19,8 @@ const DualWords kLineWords{
     "antipodes), 'max' the dual's edges (the polygon's vertices) one cell lists."};
 const DualWords kPlaneWords{
     "Plane methods (convexloc intersect: misses, touches or crosses the polyhedron)", "face",
-    "'dual size' counts the triangles of the dual polyhedron (the hull of the unit face\n"
-    "normals), 'max' the dual's triangles one cube-map cell lists."};
+    "'dual size' counts the plane faces of the dual polyhedron (the hull of the unit face\n"
+    "normals), 'max' the dual's faces one cube-map cell lists."};
 
 namespace {
 
@@ -29,7 +29,7 @@ std::pair<std::size_t, std::size_t> sizesOf(const LineStats& s) {
   return {s.dualVertices, s.vertices};
 }
 
-// a plane method's dual size (the dual polyhedron's triangles) and the polyhedron's faces
+// a plane method's dual size (the dual polyhedron's plane faces) and the polyhedron's faces
 std::pair<std::size_t, std::size_t> sizesOf(const PlaneStats& s) {
   return {s.dualFaces, s.faces};
 }

@@ -278,7 +278,8 @@ TEST_F(Cli, Info3dTableShowsEveryMethodAndThePolyhedron) {
   EXPECT_EQ(r.err, "");
   EXPECT_EQ(r.out.rfind("Shape " + kData + "/cube3d.off\n\nPolyhedron\n", 0), 0u) << r.out;
   EXPECT_EQ(reportValue(r.out, "vertices"), "8 kept of 8 read");
-  EXPECT_EQ(reportValue(r.out, "faces"), "6 read, 12 triangles");
+  EXPECT_EQ(reportValue(r.out, "faces"),
+            "6 read, 12 triangles, 6 plane faces (coplanar triangles merged)");
   EXPECT_EQ(reportValue(r.out, "orientation"), "counter-clockwise seen from outside, as given");
   EXPECT_EQ(reportValue(r.out, "bounding box"), "x 0 .. 4,  y 0 .. 4,  z 0 .. 4");
   EXPECT_EQ(reportValue(r.out, "volume"), "64");
@@ -297,7 +298,7 @@ TEST_F(Cli, Info3dOneMethodInDetail) {
   EXPECT_NE(c.out.find("Method cubemap\n"), std::string::npos) << c.out;
   EXPECT_EQ(reportValue(c.out, "centre"), "(2, 2, 2)");
   EXPECT_EQ(reportValue(c.out, "grid"), "3 x 3 per cube face (54 base cells)");
-  EXPECT_EQ(reportValue(c.out.substr(c.out.find("Method")), "faces"), "12");
+  EXPECT_EQ(reportValue(c.out.substr(c.out.find("Method")), "faces"), "6 (12 triangles)");
   for (const char* key : {"quadtree", "cells", "entries", "faces per cell    max", "crowded cells",
                           "memory", "bytes per face", "build time", "faces per cell    cells"})
     EXPECT_NE(c.out.find(key), std::string::npos) << key << " in\n" << c.out;

@@ -165,13 +165,13 @@ def test_messages_equal_the_cli(tmp_path):
 
 
 def test_a_non_planar_face_is_named_once():
-    # a square base lifted at one corner, folding inward: the error names the face once and
-    # says the edge is the diagonal its triangulation drew, not an edge the input has
+    # a square base lifted at one corner, folding inward: the error names the face once, the
+    # corner off the plane and by how much, not a diagonal the input does not have
     vertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0.1], [0, 1, 0], [0.5, 0.5, 1]]
     faces = [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4], [0, 3, 2, 1]]
     with pytest.raises(convexloc.GeometryError) as caught:
         convexloc.Polyhedron(vertices, faces)
     message = str(caught.value)
-    assert message.startswith("not convex: face 4 is not planar: it folds inward along the "
-                              "diagonal from vertex ")
+    assert message.startswith("face 4 is not planar: vertex ")
+    assert "off the plane" in message and "hull=True" in message
     assert "face 4 and face 4" not in message and message.count("face 4") == 1

@@ -69,7 +69,7 @@ struct PlaneStats {
   std::size_t vertices = 0;
   std::size_t faces = 0;
   std::size_t dualVertices = 0;  // dual: vertices of the dual polyhedron (unit face normals)
-  std::size_t dualFaces = 0;     // dual: its triangles, which the cube map lists
+  std::size_t dualFaces = 0;     // dual: its plane faces, which the cube map lists
   std::size_t cells = 0;         // dual: the cube map's leaf cells
   std::size_t bytes = 0;
   double buildSeconds = 0.0;

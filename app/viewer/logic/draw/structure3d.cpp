@@ -97,8 +97,12 @@ void radiiOnRay(const Trace3D& t, const Palette& pal, bool current, DrawList& ou
 // a face tested (a plane test or a walk's edge test), by its sign
 void stepFace(const ConvexPolyhedron& p, const Step& s, const Palette& pal, bool current,
               bool labels, DrawList& out) {
-  if (s.item < 0 || static_cast<std::size_t>(s.item) >= p.faceCount()) return;
-  const auto f = static_cast<std::uint32_t>(s.item);
+  // a walk step names a triangle, a plane test a plane face
+  const bool walk = s.focus == StepFocus::Walk;
+  if (s.item < 0 || static_cast<std::size_t>(s.item) >= (walk ? p.faceCount() : p.planeCount()))
+    return;
+  const auto f =
+      walk ? p.planeOf()[static_cast<std::size_t>(s.item)] : static_cast<std::uint32_t>(s.item);
   const Rgba c =
       s.focus == StepFocus::Walk && s.sign <= 0 ? pal.structureStrong : signColour(pal, s.sign);
   fillFace(p, f, withAlpha(c, current ? 0.6f : 0.25f), false, out);
@@ -151,7 +155,7 @@ void buildMesh3D(const Scene3D& scene, const Palette& pal, const View3DOptions& 
   const ConvexPolyhedron& p = scene.polyhedron();
   const Rgba c = withAlpha(pal.meshFill, opt.transparent ? pal.meshFill.a : 1.0f);
   out.fills.reserve(3 * p.faceCount());
-  for (std::uint32_t f = 0; f < p.faceCount(); ++f) fillFace(p, f, c, true, out);
+  for (std::uint32_t f = 0; f < p.planeCount(); ++f) fillFace(p, f, c, true, out);
 }
 
 unsigned farCubeFaces(const Scene3D& scene, glm::dvec3 eye) {
@@ -173,13 +177,15 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
   const ConvexPolyhedron& p = scene.polyhedron();
   const auto& cells = scene.cells();
 
-  // the triangle edges, each once (the neighbour across it has the higher index)
+  // the plane faces' edges, each once (the neighbour across it has the higher index); the
+  // diagonals inside a plane face are left out
   if (opt.wireframe && p.faceCount() <= kMaxWireframeFaces) {
     const auto tris = p.triangles();
     const auto nbs = p.neighbours();
+    const auto plane = p.planeOf();
     for (std::uint32_t f = 0; f < tris.size(); ++f)
       for (int k = 0; k < 3; ++k)
-        if (nbs[f][k] > f)
+        if (nbs[f][k] > f && plane[nbs[f][k]] != plane[f])
           out.segment(vertexOf(p, tris[f][k]), vertexOf(p, tris[f][(k + 1) % 3]), pal.meshEdge,
                       1.0f);
   }

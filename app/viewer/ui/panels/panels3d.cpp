@@ -47,9 +47,8 @@ void cellText(const Cell3D& c) {
 // the statistics of the 3D locator
 std::vector<StatLine> statLines(const Scene3D& scene) {
   const Stats3D& s = scene.stats();
-  std::vector<StatLine> rows = {
-      {"faces", grouped(s.faces) + " (" + grouped(s.triangles) + " triangles, " +
-                    grouped(s.vertices) + " vertices)"}};
+  std::vector<StatLine> rows = {{"faces", grouped(s.faces) + " (" + grouped(s.triangles) +
+                                              " triangles, " + grouped(s.vertices) + " vertices)"}};
   if (s.cells) {
     rows.push_back({"cells", grouped(s.cells) +
                                  (s.nodes > s.cells ? " (" + grouped(s.nodes) + " nodes)" : "")});
@@ -72,8 +71,8 @@ void shapePanel3D(Model& model, UiState& ui) {
   Scene3D& scene = model.scene3d();
   const ConvexPolyhedron& p = scene.polyhedron();
   textAtSpaces(scene.label());
-  ImGui::TextDisabled("%s triangles, %s vertices", grouped(p.faceCount()).c_str(),
-                      grouped(p.vertexCount()).c_str());
+  ImGui::TextDisabled("%s faces (%s triangles), %s vertices", grouped(p.planeCount()).c_str(),
+                      grouped(p.faceCount()).c_str(), grouped(p.vertexCount()).c_str());
   std::string notes;
   if (p.inputFaces() != p.faceCount()) notes += grouped(p.inputFaces()) + " input faces; ";
   if (p.mergedVertices()) notes += grouped(p.mergedVertices()) + " vertices merged; ";
