@@ -241,8 +241,19 @@ CubemapBuilder::CubemapBuilder(CubemapLocator& locator, const ConvexPolyhedron& 
     throw UsageError("cubemap: the resolution is at most " + std::to_string(kMaxResolution));
   locator_.surface_ = detail::SurfaceCopy(polyhedron);
   locator_.mesh_ = detail::WalkMesh(polyhedron);
-  locator_.resolution_ = resolution ? resolution : defaultResolution(locator_.surface_.triangles);
+  locator_.resolution_ = resolution ? resolution
+                                    : defaultResolution(locator_.surface_.faces.size(),
+                                                        locator_.surface_.triangles);
   centre_ = polyhedron.centre();
+}
+
+std::uint32_t CubemapBuilder::defaultResolution(std::size_t faces, std::size_t triangles) {
+  // From the plane faces; where they are made of many more triangles (a CAD shape's caps and
+  // side quads), up to kZoneResolution from the triangles: a zone's thin faces take one entry
+  // per cell, and on a coarser grid a cell's shell between its radii is thick.
+  constexpr std::uint32_t kZoneResolution = 64;
+  return std::max(defaultResolution(faces),
+                  std::min(defaultResolution(triangles), kZoneResolution));
 }
 
 std::uint32_t CubemapBuilder::defaultResolution(std::size_t faces) {

@@ -66,6 +66,8 @@ class CubemapBuilder {
   // === base grid (build.cpp)
   // the default G for `faces` faces
   static std::uint32_t defaultResolution(std::size_t faces);
+  // the default G for `faces` plane faces made of `triangles` triangles
+  static std::uint32_t defaultResolution(std::size_t faces, std::size_t triangles);
   // the centre and the cube around it that holds the polyhedron; false when there is none
   // or the directions from it overflow
   bool aimFromCentre();

@@ -184,15 +184,15 @@ struct FaceBounds {
 // Tightens [lo, hi] with each listed face's part inside the pyramid. A ray leaves a convex
 // polyhedron at the nearest of the face planes it meets ahead, so a face whose plane every
 // ray of the pyramid meets ahead bounds every exit point of the cell by itself: the smallest
-// such bound serves as well as the largest. A crowded leaf (the thin faces of a zone) keeps
-// its whole-face lower bound and takes the upper one from a spread sample of its faces.
+// such bound serves as well as the largest. A leaf listing more than `sample` faces (the thin
+// faces of a zone) keeps its whole-face lower bound and takes the upper one from a spread
+// sample of its faces.
 void tightenInPyramid(const CellPyramid& cp, const detail::SurfaceCopy& surface, Vec3 c,
                       const FaceBounds& whole, const std::uint32_t* first, std::uint32_t count,
-                      double& lo, double& hi) {
-  constexpr std::uint32_t kSample = 32;
+                      std::uint32_t sample, double& lo, double& hi) {
   const std::vector<Vec3>& v = surface.vertices;
-  const bool all = count <= kSample;
-  const std::uint32_t step = all ? 1 : count / kSample;
+  const bool all = count <= sample;
+  const std::uint32_t step = all ? 1 : (count + sample - 1) / sample;
   double tightLo = HUGE_VAL, tightHi = 0.0, anyPlane = HUGE_VAL;
   for (std::uint32_t k = 0; k < count; k += step) {
     const std::uint32_t f = first[k];
@@ -213,6 +213,8 @@ void tightenInPyramid(const CellPyramid& cp, const detail::SurfaceCopy& surface,
 }  // namespace cubemap
 
 void CubemapBuilder::setLeafRadii() {
+  // the faces a leaf's pyramid tightens its radii with: all of them up to 32
+  constexpr std::uint32_t kSample = 32;
   CubemapLocator& L = locator_;
   const cubemap::FaceBounds whole(L.surface_, polyhedron_, L.centre_);
   std::vector<std::uint32_t> faces;  // a zone leaf's, expanded
@@ -229,7 +231,7 @@ void CubemapBuilder::setLeafRadii() {
     }
     if (count && !(hi <= lo * (1 + 0x1p-10)))
       cubemap::tightenInPyramid(cubemap::pyramidOf(L.resolution_, cf, level, i, j), L.surface_,
-                                L.centre_, whole, first, count, lo, hi);
+                                L.centre_, whole, first, count, kSample, lo, hi);
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
   };
