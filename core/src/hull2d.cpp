@@ -12,17 +12,10 @@
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
 #include "convexloc/polygon.hpp"
+#include "detail/polyhedron_build.hpp"
 
 namespace convexloc {
 namespace {
-
-// "(x, y)" with enough digits to find the point again
-std::string show(Vec2 p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << '(' << p.x << ", " << p.y << ')';
-  return s.str();
-}
 
 // x, then y
 bool lexLess(Vec2 a, Vec2 b) {
@@ -37,10 +30,10 @@ void refuseDegenerate(std::span<const Vec2> points, const std::vector<Vec2>& hul
     throw GeometryError("a hull needs at least 3 points not on one line, got " +
                         (n == 0 ? std::string("none") : std::to_string(n)));
   const std::string zero = "the hull has zero area: the " + std::to_string(n) + " points ";
-  if (hull.size() == 1) throw GeometryError(zero + "are all equal to " + show(hull[0]));
+  if (hull.size() == 1) throw GeometryError(zero + "are all equal to " + detail::show(hull[0]));
   if (hull.size() == 2)
-    throw GeometryError(zero + "are collinear, on the segment from " + show(hull[0]) + " to " +
-                        show(hull[1]));
+    throw GeometryError(zero + "are collinear, on the segment from " + detail::show(hull[0]) +
+                        " to " + detail::show(hull[1]));
 }
 
 }  // namespace

@@ -19,17 +19,18 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/polyhedron_build.hpp"
 
 namespace convexloc {
-namespace {
 
-// "(x, y)" with enough digits to find the point again
-std::string show(Vec2 p) {
+std::string detail::show(Vec2 p) {
   std::ostringstream s;
   s.precision(17);
   s << '(' << p.x << ", " << p.y << ')';
   return s.str();
 }
+
+namespace {
 
 // b lies on the segment from a to c, given that the three are collinear and distinct
 bool between(Vec2 a, Vec2 b, Vec2 c) {
@@ -73,7 +74,7 @@ struct Input {
   // the line of the last point: where a whole-polygon problem is reported
   std::size_t lastLine() const { return points.empty() ? 0 : lineOf(points.size() - 1); }
   std::string name(std::size_t i) const {
-    return "vertex " + std::to_string(i + 1) + ' ' + show(points[i]);
+    return "vertex " + std::to_string(i + 1) + ' ' + detail::show(points[i]);
   }
 };
 
@@ -109,7 +110,7 @@ void rejectCollinear(const Input& in) {
   while (far < n && in[far] == in[0]) ++far;
   if (far == n)
     throw GeometryError(
-        "fewer than 3 distinct vertices: all " + std::to_string(n) + " are " + show(in[0]),
+        "fewer than 3 distinct vertices: all " + std::to_string(n) + " are " + detail::show(in[0]),
         in.lastLine());
   bool flat = true;
   for (std::size_t i = far + 1; i < n && flat; ++i) flat = orient2d(in[0], in[far], in[i]) == 0;

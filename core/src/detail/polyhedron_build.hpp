@@ -27,6 +27,8 @@ long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]);
 
 // "(x, y, z)" with enough digits to find the point again
 std::string show(Vec3 p);
+// "(x, y)" likewise (polygon.cpp)
+std::string show(Vec2 p);
 
 // Validates and normalises a mesh into a ConvexPolyhedron, step by step; the steps run in
 // the order declared.

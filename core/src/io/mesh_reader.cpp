@@ -10,8 +10,44 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/text_reader.hpp"
+#include "io/mesh_parsers.hpp"
 
 namespace convexloc {
+namespace {
+
+// a format's parser run over a FILE or over text, through its source type
+template <class Source, class Input>
+MeshData parseWith(Input in, MeshData (*parse)(Source&)) {
+  Source src(in);
+  return parse(src);
+}
+
+}  // namespace
+
+MeshData parseOff(std::FILE* file) {
+  return parseWith(file, detail::parseOffFrom);
+}
+MeshData parseOff(std::string_view text) {
+  return parseWith(text, detail::parseOffFrom);
+}
+MeshData parseObj(std::FILE* file) {
+  return parseWith(file, detail::parseObjFrom);
+}
+MeshData parseObj(std::string_view text) {
+  return parseWith(text, detail::parseObjFrom);
+}
+MeshData parseStl(std::FILE* file) {
+  return parseWith(file, detail::parseStlFrom);
+}
+MeshData parseStl(std::string_view bytes) {
+  return parseWith(bytes, detail::parseStlFrom);
+}
+MeshData parsePly(std::FILE* file) {
+  return parseWith(file, detail::parsePlyFrom);
+}
+MeshData parsePly(std::string_view bytes) {
+  return parseWith(bytes, detail::parsePlyFrom);
+}
 
 std::optional<MeshFormat> meshFormatOf(std::string_view path) {
   if (path.size() < 4) return std::nullopt;
@@ -51,8 +87,9 @@ ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
     // faces no longer exactly planar (coordinates rounded by an exporter) fail this way
     const std::string what = e.what();
     if (what.rfind("not convex", 0) != 0) throw;
-    throw GeometryError(what + " (where rounded coordinates left faces not exactly planar, "
-                               "--hull takes the convex hull of the vertices; hull=True in Python)",
+    throw GeometryError(what +
+                            " (where rounded coordinates left faces not exactly planar, "
+                            "--hull takes the convex hull of the vertices; hull=True in Python)",
                         e.line());
   }
 }

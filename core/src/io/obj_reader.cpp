@@ -10,6 +10,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/text_reader.hpp"
+#include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 
 namespace convexloc {
@@ -102,8 +103,10 @@ struct ObjReading {
   }
 };
 
+}  // namespace
+
 // the OBJ subset of the header comment: v and f statements, the rest ignored
-MeshData parseObjFrom(LineReader& src) {
+MeshData detail::parseObjFrom(LineReader& src) {
   ObjReading obj;
   std::string_view line, tok;
   while (src.next(line)) {
@@ -122,18 +125,6 @@ MeshData parseObjFrom(LineReader& src) {
                          std::to_string(obj.mesh.vertices.size()) + " vertices",
                      obj.maxRefLine);
   return std::move(obj.mesh);
-}
-
-}  // namespace
-
-MeshData parseObj(std::FILE* file) {
-  LineReader src(file);
-  return parseObjFrom(src);
-}
-
-MeshData parseObj(std::string_view text) {
-  LineReader src(text);
-  return parseObjFrom(src);
 }
 
 }  // namespace convexloc

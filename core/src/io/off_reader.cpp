@@ -13,6 +13,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/text_reader.hpp"
+#include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 
 namespace convexloc {
@@ -179,8 +180,10 @@ void offFace(std::string_view text, std::size_t line, std::size_t vertices,
   numbersOnly(t, line);
 }
 
+}  // namespace
+
 // the OFF grammar of the header comment: header, vertices, faces, then nothing but comments
-MeshData parseOffFrom(LineReader& src) {
+MeshData detail::parseOffFrom(LineReader& src) {
   const OffHeader header = readOffHeader(src);
   MeshData mesh;
   for (std::size_t i = 0; i < header.vertices; ++i) {
@@ -201,18 +204,6 @@ MeshData parseOffFrom(LineReader& src) {
     throw ParseError("unexpected text after the last face: " + quote(tok), src.line());
   }
   return mesh;
-}
-
-}  // namespace
-
-MeshData parseOff(std::FILE* file) {
-  LineReader src(file);
-  return parseOffFrom(src);
-}
-
-MeshData parseOff(std::string_view text) {
-  LineReader src(text);
-  return parseOffFrom(src);
 }
 
 }  // namespace convexloc

@@ -11,6 +11,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
 #include "io/byte_source.hpp"
+#include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 #include "io/ply_format.hpp"
 
@@ -302,21 +303,11 @@ class PlyBody {
   MeshData mesh_;
 };
 
-MeshData parsePlyFrom(ByteSource& src) {
-  const PlyHeader header = detail::readPlyHeader(src);
-  return PlyBody(src, header).read();
-}
-
 }  // namespace
 
-MeshData parsePly(std::FILE* file) {
-  ByteSource src(file);
-  return parsePlyFrom(src);
-}
-
-MeshData parsePly(std::string_view bytes) {
-  ByteSource src(bytes);
-  return parsePlyFrom(src);
+MeshData detail::parsePlyFrom(ByteSource& src) {
+  const PlyHeader header = detail::readPlyHeader(src);
+  return PlyBody(src, header).read();
 }
 
 }  // namespace convexloc

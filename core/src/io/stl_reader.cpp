@@ -12,6 +12,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
 #include "io/byte_source.hpp"
+#include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 
 namespace convexloc {
@@ -267,21 +268,11 @@ bool isAsciiStl(ByteSource& src) {
   return head.substr(i, 5) == "solid" && (i + 5 == head.size() || spaceByte(head[i + 5]));
 }
 
-MeshData parseStlFrom(ByteSource& src) {
-  if (isAsciiStl(src)) return AsciiStl(src).read();
-  return parseBinary(src);
-}
-
 }  // namespace
 
-MeshData parseStl(std::FILE* file) {
-  ByteSource src(file);
-  return parseStlFrom(src);
-}
-
-MeshData parseStl(std::string_view bytes) {
-  ByteSource src(bytes);
-  return parseStlFrom(src);
+MeshData detail::parseStlFrom(ByteSource& src) {
+  if (isAsciiStl(src)) return AsciiStl(src).read();
+  return parseBinary(src);
 }
 
 }  // namespace convexloc
