@@ -13,15 +13,8 @@
 #include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 
-namespace convexloc {
+namespace convexloc::detail {
 namespace {
-
-using detail::coordinates;
-using detail::integer;
-using detail::number;
-using detail::numbersOnly;
-using detail::quote;
-using detail::Tokens;
 
 // === OBJ: v and f statements, every other one ignored
 
@@ -106,7 +99,7 @@ struct ObjReading {
 }  // namespace
 
 // the OBJ subset of the header comment: v and f statements, the rest ignored
-MeshData detail::parseObjFrom(LineReader& src) {
+MeshData parseObjFrom(LineReader& src) {
   ObjReading obj;
   std::string_view line, tok;
   while (src.next(line)) {
@@ -127,4 +120,4 @@ MeshData detail::parseObjFrom(LineReader& src) {
   return std::move(obj.mesh);
 }
 
-}  // namespace convexloc
+}  // namespace convexloc::detail

@@ -16,15 +16,8 @@
 #include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
 
-namespace convexloc {
+namespace convexloc::detail {
 namespace {
-
-using detail::coordinates;
-using detail::integer;
-using detail::number;
-using detail::numbersOnly;
-using detail::quote;
-using detail::Tokens;
 
 // a count from an OFF header ("vertex" or "face" count), checked against the limit
 std::size_t headerCount(std::string_view token, std::string_view what, std::size_t line) {
@@ -183,7 +176,7 @@ void offFace(std::string_view text, std::size_t line, std::size_t vertices,
 }  // namespace
 
 // the OFF grammar of the header comment: header, vertices, faces, then nothing but comments
-MeshData detail::parseOffFrom(LineReader& src) {
+MeshData parseOffFrom(LineReader& src) {
   const OffHeader header = readOffHeader(src);
   MeshData mesh;
   for (std::size_t i = 0; i < header.vertices; ++i) {
@@ -206,4 +199,4 @@ MeshData detail::parseOffFrom(LineReader& src) {
   return mesh;
 }
 
-}  // namespace convexloc
+}  // namespace convexloc::detail
