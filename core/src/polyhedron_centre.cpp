@@ -182,6 +182,15 @@ std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
       rel[i] = {v[i].x * 0.5 - c.x * 0.5, v[i].y * 0.5 - c.y * 0.5, v[i].z * 0.5 - c.z * 0.5};
     }
   scaleAxes(rel);
+  // a solid angle depends on its three directions only: each scaled exactly (a power of two)
+  // to a largest coordinate in [1, 2), so that no length or product in it overflows or
+  // underflows however far the vertices lie
+  for (Vec3& r : rel) {
+    const double m = std::max({std::fabs(r.x), std::fabs(r.y), std::fabs(r.z)});
+    if (!(m > 0) || !std::isfinite(m)) continue;
+    const int e = -std::ilogb(m);
+    r = {std::ldexp(r.x, e), std::ldexp(r.y, e), std::ldexp(r.z, e)};
+  }
   return rel;
 }
 

@@ -7,6 +7,7 @@
 
 #include "logic/app/interaction.hpp"
 #include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
 #include "logic/scene/scene3d.hpp"
 #include "logic/draw/structure3d.hpp"
 
@@ -87,6 +88,28 @@ TEST(Scene3D, StlAndPlyOpenAndAPointCloudShowsItsHull) {
   ASSERT_TRUE(m.open(writeTemp("viewer_cloud.ply", cloud))) << m.error();
   EXPECT_EQ(m.scene3d().polyhedron().vertexCount(), 8u);
   EXPECT_EQ(m.scene3d().label(), "viewer_cloud.ply");
+}
+
+TEST(Scene3D, HullOpensAMeshWhoseFaceIsNotPlanar) {
+  // a cube of quads with one corner pushed off its top face: refused as given, named; with
+  // --hull the viewer opens the convex hull of its corners
+  const std::string off = writeTemp(
+      "viewer_bent.off",
+      "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 1 -1\n-1 -1 1\n1 -1 1\n-1 1 1\n"
+      "1 1 0.999999\n4 7 6 4 5\n4 0 2 3 1\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
+  cv::Model m;
+  EXPECT_FALSE(m.open(off));
+  EXPECT_NE(m.error().find("is not planar"), std::string::npos) << m.error();
+  cv::Options o;
+  o.shape = off;
+  o.hull = true;
+  EXPECT_EQ(m.apply(o), "") << m.error();
+  EXPECT_EQ(m.dim, cv::Dim::Three);
+  EXPECT_EQ(m.scene3d().polyhedron().vertexCount(), 8u);
+  EXPECT_EQ(m.scene3d().polyhedron().planeCount(), 7u);
+  o.hull = false;
+  o.shape.clear();
+  m.apply(o);  // the choice lasts for one application of the options
 }
 
 TEST(Scene3D, MethodsAndGrid) {

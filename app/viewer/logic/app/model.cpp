@@ -164,6 +164,7 @@ std::string Model::apply(const Options& o) {
 }
 
 void Model::applyShape(const Options& o, bool method3d) {
+  Traits3D::hullOfFiles = o.hull;
   if (!o.shape.empty()) {
     if (!open(o.shape)) note(error_);
   } else if (o.preset) {

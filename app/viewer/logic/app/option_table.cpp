@@ -139,6 +139,10 @@ const OptionSpec kOptions[] = {
        o.method = v[0];
        return true;
      }},
+    {"--hull", "", 0, kScene,
+     "open a mesh file (.off, .obj, .stl, .ply) as the convex hull of its vertices, its faces "
+     "ignored (a mesh whose rounded coordinates left faces not exactly planar)",
+     "", false, setFlag<&Options::hull>},
     {"--resolution", "R", 1, kScene,
      "uniform slabs, polar slabs per octant, cube grid size (0: automatic)",
      "a whole number from 0 (automatic) to 2^26", false,

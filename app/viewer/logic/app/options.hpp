@@ -59,6 +59,7 @@ struct Options {
   std::string svg;       // render, write the scene as this SVG and exit (with --screenshot too)
   bool present = false;  // presentation mode: panels hidden, caption, legend movable
   bool noLegend = false;
+  bool hull = false;    // --hull: mesh files open as the convex hull of their vertices
   std::string caption;  // a caption written large over the scene
   // lectures and the paper's figures
   std::optional<int> figure;              // --figure N: start from the paper's figure N

@@ -24,8 +24,9 @@ std::vector<Vec3> Traits3D::sprayPoints(const ConvexPolyhedron& p, std::size_t n
 
 ConvexPolyhedron Traits3D::readShape(const std::string& path) {
   const MeshData mesh = readMesh(path);
-  // a point cloud (a scan's PLY) has no surface of its own: the viewer shows its convex hull
-  if (mesh.faceCount() == 0 && !mesh.vertices.empty())
+  // a point cloud (a scan's PLY) has no surface of its own: the viewer shows its convex hull,
+  // as it does for any mesh with --hull
+  if (hullOfFiles || (mesh.faceCount() == 0 && !mesh.vertices.empty()))
     return ConvexPolyhedron::hullOf(mesh.vertices);
   return ConvexPolyhedron(mesh);
 }

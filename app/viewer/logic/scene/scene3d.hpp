@@ -18,8 +18,8 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate3d.hpp"
 #include "convexloc/polyhedron.hpp"
-#include "logic/view/camera3d.hpp"
 #include "logic/scene/scene_common.hpp"
+#include "logic/view/camera3d.hpp"
 
 namespace convexloc::viewer {
 
@@ -53,6 +53,8 @@ struct Traits3D
   static std::vector<Vec3> sprayPoints(const ConvexPolyhedron& p, std::size_t n, std::uint64_t seed,
                                        bool nearBoundary);
   static ConvexPolyhedron readShape(const std::string& path);
+  // --hull: a mesh file opens as the convex hull of its vertices, its faces ignored
+  static inline bool hullOfFiles = false;
   static constexpr std::span<const Method3D> kMethods = kAllMethods3D;
   static constexpr Method3D kDefaultMethod = Method3D::Cubemap;
   // one grid size, kept across methods; only the cube map reads it when compared
