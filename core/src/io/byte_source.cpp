@@ -90,7 +90,8 @@ bool ByteSource::nextLine(std::string_view& line) {
   std::size_t scanned = 0;  // bytes already searched for the LF
   for (;;) {
     const char* from = data_ + begin_ + scanned;
-    const char* lf = static_cast<const char*>(std::memchr(from, '\n', end_ - begin_ - scanned));
+    const std::size_t left = end_ - begin_ - scanned;  // nothing to search (perhaps no buffer)
+    const char* lf = left ? static_cast<const char*>(std::memchr(from, '\n', left)) : nullptr;
     if (lf || eof_) {
       const std::size_t len = lf ? static_cast<std::size_t>(lf - (data_ + begin_)) : end_ - begin_;
       if (!lf && len == 0) return false;
