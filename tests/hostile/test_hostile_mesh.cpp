@@ -25,13 +25,6 @@ using convexloc::MeshData;
 using convexloc::ParseError;
 using convexloc::Vec3;
 
-// the peak resident memory of this process so far, in KiB
-long peakKiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
-}
-
 // what reading a mesh gave: the error's line and message, or none
 struct Outcome {
   std::optional<MeshData> mesh;
@@ -67,7 +60,7 @@ const std::string kTetraFaces = "3 0 1 2\n3 0 2 3\n3 0 3 1\n3 1 3 2\n";
 // === Counts in headers are limits checked, never allocations
 
 TEST(HostileMesh, AbsurdHeaderCountsFailFastWithoutAllocating) {
-  const long before = peakKiB();
+  const long before = hostile::peakKiB();
   auto t0 = std::chrono::steady_clock::now();
   expectError(read("OFF\n4 1000000000000 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + kTetraFaces, true), 2,
               "announces 1000000000000 faces; at most 134217728 are supported");
@@ -88,7 +81,7 @@ TEST(HostileMesh, AbsurdHeaderCountsFailFastWithoutAllocating) {
   expectError(read("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", false), 4, "out of range");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_LT(seconds, 1.0);
-  EXPECT_LT(peakKiB() - before, 16 * 1024) << "a count in a header was used to allocate";
+  EXPECT_LT(hostile::peakKiB() - before, 16 * 1024) << "a count in a header was used to allocate";
 }
 
 // === Lines

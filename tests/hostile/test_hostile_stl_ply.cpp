@@ -22,6 +22,7 @@
 #include "fuzz_support.hpp"
 #include "mesh_bytes.hpp"
 #include "shapes3d.hpp"
+#include "tool.hpp"
 
 namespace {
 
@@ -29,13 +30,6 @@ using convexloc::MeshData;
 using convexloc::ParseError;
 using convexloc::PlyEncoding;
 using convexloc::Vec3;
-
-// the peak resident memory of this process so far, in KiB
-long peakKiB() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
-}
 
 // what reading gave: a mesh, or the error's line and message
 struct Outcome {
@@ -193,7 +187,7 @@ TEST(HostileStlPly, TheWrongByteOrderIsNamed) {
 // === Counts refused before anything is allocated
 
 TEST(HostileStlPly, ABillionFacetsClaimedAllocateNothing) {
-  const long before = peakKiB();
+  const long before = hostile::peakKiB();
   std::string head(80, ' ');
   meshbytes::Bytes b;
   b.text(head).uint(1000000000, 4);
@@ -248,7 +242,7 @@ TEST(HostileStlPly, ABillionFacetsClaimedAllocateNothing) {
                        "property float y\nproperty float z\nend_header\n\n\n",
                    false),
               10, "the file ends before nothing 2 of 1000000000000000000");
-  EXPECT_LT(peakKiB() - before, 16 * 1024) << "a count in a file was used to allocate";
+  EXPECT_LT(hostile::peakKiB() - before, 16 * 1024) << "a count in a file was used to allocate";
 }
 
 // === Indices and structure

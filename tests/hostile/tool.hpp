@@ -30,6 +30,13 @@ namespace hostile {
 
 namespace fs = std::filesystem;
 
+// the peak resident memory of this process so far, in KiB
+inline long peakKiB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
 // the convexloc binary under test
 inline const std::string kBin = CONVEXLOC_BIN;
 
