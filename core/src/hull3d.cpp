@@ -393,7 +393,10 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   MeshData mesh;
   mesh.vertices.assign(points.begin(), points.end());
   for (const auto& t : IncrementalHull(points, simplex).triangles()) mesh.addFace(t);
-  return ConvexPolyhedron(mesh);
+  // every triangle's plane has every point on its inner side or on it (exact orient3d), so
+  // the surface is the boundary of the convex hull and winds once around its inside: the
+  // validation's floating-point winding count is left out, every exact check still runs
+  return ConvexPolyhedron(mesh, nullptr, true);
 }
 
 }  // namespace convexloc

@@ -137,6 +137,21 @@ TEST(ExactHull3D, TheIssuesCloudKeepsEveryPointOnItsHull) {
   EXPECT_EQ(h.faceCount(), 396u);
 }
 
+TEST(ExactHull3D, ANeedleFrom1eMinus308To1e154IsAccepted) {
+  // found by fuzzing: seen from its inside, the corners near the origin and the one near 1e154
+  // round to two antipodal directions, so a floating-point winding count saw two turns
+  const std::vector<Vec3> cloud = {
+      {-0x1.cc121cdc315fap+415, -0x1.bac1d2d37d1e4p+415, -0x1.e67ae2e778b1p+417},
+      {-0x1.a0991a5b39378p+353, 0x1.9346d2c9d578ep+350, 0x1.25574a9abf383p+353},
+      {0x1.6e56735725705p-865, 0x1.e9084e918f0c3p-863, -0x1.e361767b2ab13p-865},
+      {0x1.f554042fecadcp+512, -0x1.93c31cd10a036p+513, 0x1.7cfc7b0bc65b2p+512},
+      {0, 0, 0x1p-190},
+      {0, 0, 0x1p-1022},
+      {0x1.9a3f69fc40e6ap-738, 0x1.29924da7c209p-735, 0x1.9d7acdf6cfd4cp-735}};
+  const ConvexPolyhedron h = checkedHull(cloud, true);
+  EXPECT_GE(h.vertexCount(), 4u);
+}
+
 TEST(ExactHull3D, FlatEllipsoids) {
   for (double offset : {0.0, 1e6}) {
     SCOPED_TRACE(offset);

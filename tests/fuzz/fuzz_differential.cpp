@@ -104,10 +104,9 @@ void differential3D(ByteSource& src, Encoding encoding) {
       poly.emplace(box(input[0], input[1]));
     }
   } catch (const convexloc::GeometryError& e) {
-    // the exact hull of small integers exists whenever they are not all on one plane (at
-    // extreme magnitudes hullOf may still refuse a cloud, e.g. tests/data/fuzz/differential/
-    // hull_at_1e154_winds_once: refused, never answered wrongly)
-    if (mode == 0 && encoding == Encoding::SmallInt && !coplanar(input))
+    // the exact hull exists whenever the points are not all on one plane, at any magnitude
+    // (tests/data/fuzz/differential/hull_at_1e154_winds_once: a needle from 1e-222 to 1e154)
+    if (mode == 0 && !coplanar(input))
       fail(std::string("hullOf rejected points that are not coplanar: ") + e.what());
     // a box is a valid polyhedron unless it is flat
     if (mode == 2 && input[0].x != input[1].x && input[0].y != input[1].y &&

@@ -163,7 +163,10 @@ class ConvexPolyhedron {
 
  private:
   friend class detail::PolyhedronBuilder;
-  ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32_t>* suspects);
+  // `suspects`, when given, collects the faces a refusal names; `hullByConstruction` says the
+  // mesh is an exact hull's, which winds once around its inside by construction
+  ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32_t>* suspects,
+                   bool hullByConstruction = false);
 
   std::vector<Vec3> vertices_;
   std::vector<Triangle> triangles_;
