@@ -7,6 +7,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/names.hpp"
 
 namespace convexloc {
 namespace {
@@ -63,26 +64,18 @@ std::vector<Vec2> valtr(std::size_t n, Rng& rng) {
   return v;
 }
 
+// in the order of PolygonKind
+constexpr std::string_view kNames[] = {"regular",    "random", "ellipse",    "sliver",
+                                       "tiny-edges", "offset", "degenerate", "triangle"};
+
 }  // namespace
 
 std::string_view toString(PolygonKind k) {
-  switch (k) {
-    case PolygonKind::Regular: return "regular";
-    case PolygonKind::Random: return "random";
-    case PolygonKind::Ellipse: return "ellipse";
-    case PolygonKind::Sliver: return "sliver";
-    case PolygonKind::TinyEdges: return "tiny-edges";
-    case PolygonKind::Offset: return "offset";
-    case PolygonKind::Degenerate: return "degenerate";
-    case PolygonKind::Triangle: return "triangle";
-  }
-  return "?";
+  return detail::nameOf(kNames, k);
 }
 
 std::optional<PolygonKind> parsePolygonKind(std::string_view name) {
-  for (PolygonKind k : kAllPolygonKinds)
-    if (toString(k) == name) return k;
-  return std::nullopt;
+  return detail::enumNamed<PolygonKind>(kNames, name);
 }
 
 std::vector<Vec2> convexHull(std::span<const Vec2> points) {

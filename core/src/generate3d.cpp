@@ -9,6 +9,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/names.hpp"
 #include "detail/prisms.hpp"
 
 namespace convexloc {
@@ -178,33 +179,20 @@ MeshData gridBox(Vec3 lo, Vec3 hi, const std::size_t (&counts)[3], bool squares)
   return mesh;
 }
 
+// in the order of PolyhedronKind
+constexpr std::string_view kNames[] = {"tetrahedron",    "cube",      "octahedron",  "dodecahedron",
+                                       "icosahedron",    "geodesic",  "sphere-hull", "cube-hull",
+                                       "ellipsoid-hull", "thin-slab", "offset",      "tiny-faces",
+                                       "coplanar",       "cylinder",  "prism"};
+
 }  // namespace
 
 std::string_view toString(PolyhedronKind k) {
-  switch (k) {
-    case PolyhedronKind::Tetrahedron: return "tetrahedron";
-    case PolyhedronKind::Cube: return "cube";
-    case PolyhedronKind::Octahedron: return "octahedron";
-    case PolyhedronKind::Dodecahedron: return "dodecahedron";
-    case PolyhedronKind::Icosahedron: return "icosahedron";
-    case PolyhedronKind::Geodesic: return "geodesic";
-    case PolyhedronKind::SphereHull: return "sphere-hull";
-    case PolyhedronKind::CubeHull: return "cube-hull";
-    case PolyhedronKind::EllipsoidHull: return "ellipsoid-hull";
-    case PolyhedronKind::ThinSlab: return "thin-slab";
-    case PolyhedronKind::Offset: return "offset";
-    case PolyhedronKind::TinyFaces: return "tiny-faces";
-    case PolyhedronKind::Coplanar: return "coplanar";
-    case PolyhedronKind::Cylinder: return "cylinder";
-    case PolyhedronKind::Prism: return "prism";
-  }
-  return "?";
+  return detail::nameOf(kNames, k);
 }
 
 std::optional<PolyhedronKind> parsePolyhedronKind(std::string_view name) {
-  for (PolyhedronKind k : kAllPolyhedronKinds)
-    if (toString(k) == name) return k;
-  return std::nullopt;
+  return detail::enumNamed<PolyhedronKind>(kNames, name);
 }
 
 MeshData smallHull(std::span<const Vec3> points) {

@@ -47,6 +47,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 
 #include "detail/exact_number.hpp"
 #include "detail/expansion.hpp"
@@ -169,34 +170,40 @@ std::array<detail::ExactInt, K> integers(const std::array<double, K>& values) {
   return det.sign();
 }
 
+// the three stages in order, each counted: narrow integers when the coordinates are close in
+// scale, expansions when every exponent lies in [lo, hi], else multiprecision on `values`
+template <std::size_t K, class Narrow, class Expansion>
+int staged(const std::array<double, K>& values, int lo, int hi, Narrow narrowSign,
+           Expansion expansionSign,
+           int (*multiprecisionSign)(const std::array<double, K>&)) noexcept {
+  const narrow::Magnitudes m =
+      std::apply([](auto... v) { return narrow::Magnitudes{v...}; }, values);
+  if (const int sign = narrowSign(m); sign != narrow::kDeclined) {
+    ++tCounts.narrowIntegers;
+    return sign;
+  }
+  if (m.within(lo, hi)) {
+    ++tCounts.expansions;
+    return expansionSign();
+  }
+  ++tCounts.multiprecision;
+  return multiprecisionSign(values);
+}
+
 }  // namespace
 
 CONVEXLOC_SCALAR int detail::crossExact(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
-  const narrow::Magnitudes m{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y};
-  if (const int sign = narrow::cross(p0, p1, q0, q1, m); sign != narrow::kDeclined) {
-    ++tCounts.narrowIntegers;
-    return sign;
-  }
-  if (m.within(kPlaneLo, kPlaneHi)) {
-    ++tCounts.expansions;
-    return crossExpansion(p0, p1, q0, q1);
-  }
-  ++tCounts.multiprecision;
-  return crossMultiprecision({p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y});
+  return staged(
+      std::array<double, 8>{p0.x, p0.y, p1.x, p1.y, q0.x, q0.y, q1.x, q1.y}, kPlaneLo, kPlaneHi,
+      [&](const narrow::Magnitudes& m) { return narrow::cross(p0, p1, q0, q1, m); },
+      [&] { return crossExpansion(p0, p1, q0, q1); }, crossMultiprecision);
 }
 
 CONVEXLOC_SCALAR int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
-  const narrow::Magnitudes m{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
-  if (const int sign = narrow::orient3d(a, b, c, d, m); sign != narrow::kDeclined) {
-    ++tCounts.narrowIntegers;
-    return sign;
-  }
-  if (m.within(kSpaceLo, kSpaceHi)) {
-    ++tCounts.expansions;
-    return orient3dExpansion(a, b, c, d);
-  }
-  ++tCounts.multiprecision;
-  return orient3dMultiprecision({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
+  return staged(
+      std::array<double, 12>{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z}, kSpaceLo,
+      kSpaceHi, [&](const narrow::Magnitudes& m) { return narrow::orient3d(a, b, c, d, m); },
+      [&] { return orient3dExpansion(a, b, c, d); }, orient3dMultiprecision);
 }
 
 unsigned long long exactFallbackCount() noexcept {

@@ -8,8 +8,8 @@
 
 #include "convexloc/locate3d.hpp"
 #include "convexloc/timing.hpp"
-#include "detail/batch_loop.hpp"
 #include "detail/plane_tests3d.hpp"
+#include "detail/sink_queries.hpp"
 #include "detail/sinks3d.hpp"
 #include "detail/walk_step.hpp"
 
@@ -52,10 +52,7 @@ WalkLocator::WalkLocator(const ConvexPolyhedron& polyhedron) {
 
 template <class Sink>
 Location WalkLocator::run(Vec3 p, Sink& sink) const noexcept {
-  if (!detail::isFinite(p)) {
-    sink.nonFinite();
-    return Location::Outside;
-  }
+  if (detail::refusedAsNonFinite(p, sink)) return Location::Outside;
   auto testAll = [&] {
     sink.fallback();
     return detail::testAll(surface_, p, sink);
@@ -79,25 +76,13 @@ Location WalkLocator::run(Vec3 p, Sink& sink) const noexcept {
   return detail::walkAndTest(surface_, mesh_, c, p, start, maxVisits_, sink, testAll);
 }
 
-Location WalkLocator::locate(Vec3 p) const noexcept {
-  detail::NoSink3D sink;
-  return run(p, sink);
-}
-
-void WalkLocator::locate(std::span<const Vec3> points, std::span<Location> out) const noexcept {
-  detail::locateEach(*this, points, out);
-}
-
-Trace3D WalkLocator::trace(Vec3 p) const {
-  return detail::traced(Method3D::Walk, centre_, [&](auto& sink) { return run(p, sink); });
-}
+template class detail::SinkQueries<WalkLocator, Vec3, Trace3D>;
 
 Stats3D WalkLocator::stats() const {
-  Stats3D s =
-      detail::baseStats(surface_,
-                        sizeof(*this) + mesh_.bytes() +
-                            detail::bytesOf(startFaces_) + detail::bytesOf(startDirections_),
-                        buildSeconds_);
+  Stats3D s = detail::baseStats(surface_,
+                                sizeof(*this) + mesh_.bytes() + detail::bytesOf(startFaces_) +
+                                    detail::bytesOf(startDirections_),
+                                buildSeconds_);
   s.centred = centre_.has_value();
   return s;
 }

@@ -32,19 +32,19 @@ struct Problem {
   std::string message;
   std::size_t line = 0;
 };
-Problem problemOf(MeshData (*parse)(std::string_view), const std::string& text) {
+Problem problemOf(MeshFormat format, const std::string& text) {
   try {
-    parse(text);
+    parseMesh(format, text);
   } catch (const ParseError& e) {
     return {e.what(), e.line()};
   }
   return {"no error", 0};
 }
 Problem offProblem(const std::string& text) {
-  return problemOf(parseOff, text);
+  return problemOf(MeshFormat::Off, text);
 }
 Problem objProblem(const std::string& text) {
-  return problemOf(parseObj, text);
+  return problemOf(MeshFormat::Obj, text);
 }
 
 // a cube in OBJ with texture and normal references and statements to ignore
@@ -59,7 +59,7 @@ std::string cubeObj() {
 }  // namespace
 
 TEST(OffReader, ReadsACubeWithCommentsBlankLinesAndColours) {
-  MeshData m = parseOff(kCubeOff);
+  MeshData m = parseMesh(MeshFormat::Off, kCubeOff);
   ASSERT_EQ(m.vertices.size(), 8u);
   ASSERT_EQ(m.faceCount(), 6u);
   EXPECT_EQ(m.vertices[5], (Vec3{1, -1, 1}));
@@ -71,15 +71,17 @@ TEST(OffReader, ReadsACubeWithCommentsBlankLinesAndColours) {
 }
 
 TEST(OffReader, HeaderVariants) {
-  EXPECT_EQ(parseOff("OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n")
+  EXPECT_EQ(parseMesh(MeshFormat::Off,
+                      "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n")
                 .faceCount(),
             4u);
-  EXPECT_EQ(
-      parseOff("4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n").faceCount(),
-      4u);
-  MeshData c = parseOff(
-      "COFF\n4 4 6\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n0 0 1 1 0 0 1\n"
-      "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+  EXPECT_EQ(parseMesh(MeshFormat::Off,
+                      "4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n")
+                .faceCount(),
+            4u);
+  MeshData c = parseMesh(MeshFormat::Off,
+                         "COFF\n4 4 6\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n0 0 1 1 0 0 1\n"
+                         "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
   EXPECT_EQ(c.vertices[1], (Vec3{1, 0, 0}));
   EXPECT_THAT(offProblem("4OFF\n1 1 0\n").message, HasSubstr("only 3D OFF"));
   EXPECT_THAT(offProblem("nOFF\n3\n").message, HasSubstr("only 3D OFF"));
@@ -137,7 +139,7 @@ TEST(OffReader, BadLinesNameTheirLine) {
 }
 
 TEST(ObjReader, ReadsReferencesOfEveryFormAndIgnoresOtherStatements) {
-  MeshData m = parseObj(cubeObj());
+  MeshData m = parseMesh(MeshFormat::Obj, cubeObj());
   ASSERT_EQ(m.vertices.size(), 8u);
   ASSERT_EQ(m.faceCount(), 6u);
   EXPECT_EQ(m.face(0)[2], 3u);
@@ -146,10 +148,10 @@ TEST(ObjReader, ReadsReferencesOfEveryFormAndIgnoresOtherStatements) {
   ConvexPolyhedron p(m);
   EXPECT_DOUBLE_EQ(p.volume(), 8.0);
   // a face before its vertices (positive references may point forward)
-  MeshData fwd = parseObj("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  MeshData fwd = parseMesh(MeshFormat::Obj, "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
   EXPECT_EQ(fwd.faceCount(), 1u);
   // vertex colours
-  EXPECT_EQ(parseObj("v 1 2 3 0.5 0.5 0.5\n").vertices[0], (Vec3{1, 2, 3}));
+  EXPECT_EQ(parseMesh(MeshFormat::Obj, "v 1 2 3 0.5 0.5 0.5\n").vertices[0], (Vec3{1, 2, 3}));
 }
 
 TEST(ObjReader, BadLinesNameTheirLine) {
@@ -180,7 +182,7 @@ TEST(MeshWriters, RoundTripTheSameDoubles) {
     else
       writeObj(f, m);
     std::rewind(f);
-    MeshData back = format == 0 ? parseOff(f) : parseObj(f);
+    MeshData back = format == 0 ? parseMesh(MeshFormat::Off, f) : parseMesh(MeshFormat::Obj, f);
     std::fclose(f);
     EXPECT_EQ(back.vertices, m.vertices);
     EXPECT_EQ(back.indices, m.indices);

@@ -97,14 +97,17 @@ std::vector<Encoded> encodings(const MeshData& m) {
 // every encoding of `mesh` (float-exact) gives the polyhedron of its OFF
 void everyEncodingAgrees(const MeshData& mesh) {
   const std::string off = meshbytes::written([&](std::FILE* f) { writeOff(f, mesh); });
-  const ConvexPolyhedron want(parseOff(off));
+  const ConvexPolyhedron want(parseMesh(MeshFormat::Off, off));
   const std::vector<Vec3> queries = queriesFor(want);
   for (const Encoded& e : encodings(mesh)) {
     SCOPED_TRACE(e.name);
-    const MeshData fromMemory = e.stl ? parseStl(e.bytes) : parsePly(e.bytes);
+    const MeshData fromMemory =
+        e.stl ? parseMesh(MeshFormat::Stl, e.bytes) : parseMesh(MeshFormat::Ply, e.bytes);
     const MeshData fromFile =
-        e.stl ? meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parseStl(f); })
-              : meshbytes::throughFile(e.bytes, [](std::FILE* f) { return parsePly(f); });
+        e.stl ? meshbytes::throughFile(e.bytes,
+                                       [](std::FILE* f) { return parseMesh(MeshFormat::Stl, f); })
+              : meshbytes::throughFile(e.bytes,
+                                       [](std::FILE* f) { return parseMesh(MeshFormat::Ply, f); });
     EXPECT_EQ(fromMemory.vertices, fromFile.vertices);
     EXPECT_EQ(fromMemory.indices, fromFile.indices);
     expectSame(want, fromMemory, queries);
@@ -130,12 +133,16 @@ TEST(StlPly, DoublesSurviveAsciiStlAndDoublePly) {
   const MeshData m = generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1);
   const ConvexPolyhedron want(m);
   const std::vector<Vec3> queries = queriesFor(want);
-  expectSame(want, parseStl(meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); })),
-             queries);
+  expectSame(
+      want,
+      parseMesh(MeshFormat::Stl, meshbytes::written([&](std::FILE* f) { writeStl(f, m, true); })),
+      queries);
   for (PlyEncoding enc :
        {PlyEncoding::Ascii, PlyEncoding::BinaryLittleEndian, PlyEncoding::BinaryBigEndian})
-    expectSame(want, parsePly(meshbytes::written([&](std::FILE* f) { writePly(f, m, enc); })),
-               queries);
+    expectSame(
+        want,
+        parseMesh(MeshFormat::Ply, meshbytes::written([&](std::FILE* f) { writePly(f, m, enc); })),
+        queries);
   // and the float formats refuse to round them
   EXPECT_THROW(meshbytes::written([&](std::FILE* f) { writeStl(f, m); }), Error);
   EXPECT_THROW(meshbytes::written([&](std::FILE* f) { writePly(f, m, PlyEncoding::Ascii, true); }),
@@ -148,7 +155,7 @@ TEST(StlPly, BinaryStlWeldsExactlyEqualCorners) {
   const std::string bytes = meshbytes::binaryStl({{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
                                                   {{1, 0, 0}, {-0.0, 0, 0}, {0, 0, 1}},
                                                   {{next, 0, 0}, {0, 1, 0}, {0, 0, 1}}});
-  const MeshData m = parseStl(bytes);
+  const MeshData m = parseMesh(MeshFormat::Stl, bytes);
   ASSERT_EQ(m.vertices.size(), 5u);
   EXPECT_EQ(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 0, 3, 4, 2, 3}));
   EXPECT_EQ(m.vertices[4].x, static_cast<double>(next));
@@ -167,7 +174,7 @@ TEST(StlPly, AsciiStlByHand) {
       " facet normal 1e0 0 0\n outer loop\n vertex 0 0 0\n vertex 0 0 1\n vertex 0 1 0\n endloop\n"
       " endfacet\n facet normal 1 1 1\n outer loop\n vertex 1 0 0\n vertex 0 1 0\n vertex 0 0 1\n"
       " endloop\n endfacet\nendsolid\n";
-  const MeshData m = parseStl(text);
+  const MeshData m = parseMesh(MeshFormat::Stl, text);
   ASSERT_EQ(m.faceCount(), 4u);
   EXPECT_EQ(m.vertices.size(), 4u);
   EXPECT_EQ(m.faceLines, (std::vector<std::size_t>{2, 11, 18, 25}));
@@ -198,7 +205,7 @@ TEST(StlPly, BigEndianPlyByHandWithPropertiesToSkip) {
   b.uint(0, 4).uint(1, 4).uint(1, 4).uint(2, 4);
   const unsigned faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   for (const auto& f : faces) b.uint(3, 2).uint(f[0], 4).uint(f[1], 4).uint(f[2], 4).uint(0xff, 1);
-  const MeshData m = parsePly(b.s);
+  const MeshData m = parseMesh(MeshFormat::Ply, b.s);
   ASSERT_EQ(m.vertices.size(), 4u);
   EXPECT_EQ(m.vertices[3].z, 1.0);
   EXPECT_EQ(m.vertices[1].x, 1.0);
@@ -213,7 +220,7 @@ TEST(StlPly, AsciiPlyByHand) {
       "element face 4\r\nproperty list uchar int vertex_index\r\nend_header\r\n"
       "0 0 0 0\r\n1 0 0 2 0.5 -1e3\r\n0 1 0 1 7\r\n0 0 1e0 0\r\n"
       "3 0 2 1\r\n3 0 1 3\r\n3 0 3 2\r\n3 1 2 3\r\n\r\n";
-  const MeshData m = parsePly(text);
+  const MeshData m = parseMesh(MeshFormat::Ply, text);
   EXPECT_EQ(m.vertexLines, (std::vector<std::size_t>{12, 13, 14, 15}));
   EXPECT_EQ(m.faceLines, (std::vector<std::size_t>{16, 17, 18, 19}));
   EXPECT_EQ(ConvexPolyhedron(m).triangles().size(), 4u);

@@ -1,4 +1,4 @@
-// Fuzz target: the OFF reader (parseOff), then ConvexPolyhedron and every 3D method; see
+// Fuzz target: the OFF reader (parseMesh), then ConvexPolyhedron and every 3D method; see
 // mesh_reader_target.hpp for what is checked.
 #include <cstddef>
 #include <cstdint>
@@ -7,7 +7,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::meshReaderTarget(
-      data, size, [](std::string_view text) { return convexloc::parseOff(text); },
-      [](std::FILE* file) { return convexloc::parseOff(file); });
+      data, size,
+      [](std::string_view text) { return convexloc::parseMesh(convexloc::MeshFormat::Off, text); },
+      [](std::FILE* file) { return convexloc::parseMesh(convexloc::MeshFormat::Off, file); });
   return 0;
 }

@@ -7,7 +7,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::meshReaderTarget(
-      data, size, [](std::string_view bytes) { return convexloc::parsePly(bytes); },
-      [](std::FILE* file) { return convexloc::parsePly(file); });
+      data, size,
+      [](std::string_view bytes) {
+        return convexloc::parseMesh(convexloc::MeshFormat::Ply, bytes);
+      },
+      [](std::FILE* file) { return convexloc::parseMesh(convexloc::MeshFormat::Ply, file); });
   return 0;
 }

@@ -7,7 +7,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::meshReaderTarget(
-      data, size, [](std::string_view bytes) { return convexloc::parseStl(bytes); },
-      [](std::FILE* file) { return convexloc::parseStl(file); });
+      data, size,
+      [](std::string_view bytes) {
+        return convexloc::parseMesh(convexloc::MeshFormat::Stl, bytes);
+      },
+      [](std::FILE* file) { return convexloc::parseMesh(convexloc::MeshFormat::Stl, file); });
   return 0;
 }

@@ -22,6 +22,7 @@ namespace {
 
 using convexloc::ConvexPolyhedron;
 using convexloc::MeshData;
+using convexloc::MeshFormat;
 using convexloc::ParseError;
 using convexloc::Vec3;
 
@@ -39,7 +40,7 @@ Outcome read(const std::string& text, bool off) {
   Outcome out;
   auto t0 = std::chrono::steady_clock::now();
   try {
-    out.mesh = off ? convexloc::parseOff(f) : convexloc::parseObj(f);
+    out.mesh = convexloc::parseMesh(off ? MeshFormat::Off : MeshFormat::Obj, f);
   } catch (const ParseError& e) {
     out.line = e.line();
     out.error = e.what();

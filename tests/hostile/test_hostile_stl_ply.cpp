@@ -27,6 +27,7 @@
 namespace {
 
 using convexloc::MeshData;
+using convexloc::MeshFormat;
 using convexloc::ParseError;
 using convexloc::PlyEncoding;
 using convexloc::Vec3;
@@ -51,10 +52,10 @@ Outcome read(const std::string& bytes, bool stl) {
     return o;
   };
   Outcome memory =
-      attempt([&] { return stl ? convexloc::parseStl(bytes) : convexloc::parsePly(bytes); });
+      attempt([&] { return convexloc::parseMesh(stl ? MeshFormat::Stl : MeshFormat::Ply, bytes); });
   fuzz::MemFile file(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   Outcome viaFile = attempt(
-      [&] { return stl ? convexloc::parseStl(file.get()) : convexloc::parsePly(file.get()); });
+      [&] { return convexloc::parseMesh(stl ? MeshFormat::Stl : MeshFormat::Ply, file.get()); });
   EXPECT_EQ(memory.error, viaFile.error);
   EXPECT_EQ(memory.line, viaFile.line);
   EXPECT_EQ(memory.mesh.has_value(), viaFile.mesh.has_value());
@@ -320,7 +321,7 @@ TEST(HostileStlPly, APipeReadsTheSame) {
     std::FILE* f = fdopen(fds[0], "rb");
     Outcome o;
     try {
-      o.mesh = stl ? convexloc::parseStl(f) : convexloc::parsePly(f);
+      o.mesh = convexloc::parseMesh(stl ? MeshFormat::Stl : MeshFormat::Ply, f);
     } catch (const ParseError& e) {
       o.error = e.what();
     }
@@ -335,7 +336,7 @@ TEST(HostileStlPly, APipeReadsTheSame) {
   for (const std::string& bytes : {stl, stlOf(sphere, true)}) {
     const Outcome whole = throughPipe(bytes, true);
     ASSERT_TRUE(whole.mesh.has_value()) << whole.error;
-    const MeshData inMemory = convexloc::parseStl(bytes);
+    const MeshData inMemory = convexloc::parseMesh(MeshFormat::Stl, bytes);
     EXPECT_EQ(whole.mesh->indices, inMemory.indices);
     EXPECT_EQ(whole.mesh->vertices, inMemory.vertices);
     EXPECT_EQ(read(bytes, true).mesh->vertices, inMemory.vertices);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "convexloc/detail/locator_variant.hpp"
+#include "convexloc/detail/sink_queries.hpp"
 #include "convexloc/geometry.hpp"
 #include "convexloc/methods.hpp"
 #include "convexloc/polyhedron.hpp"
@@ -167,22 +168,22 @@ struct WalkMesh {
 
 // === halfspace, O(F): inside iff on the inner side of every face plane (eq. 2)
 
-class HalfspaceLocator {
+// locate, the batch and trace come from SinkQueries
+class HalfspaceLocator : public detail::SinkQueries<HalfspaceLocator, Vec3, Trace3D> {
  public:
   // keeps a copy of the surface; needs no centre
   explicit HalfspaceLocator(const ConvexPolyhedron& polyhedron);
-  // the sign of every face plane, in order, up to the first outer side
-  Location locate(Vec3 p) const noexcept;
-  // locate(p) for each point, over the shorter of the two spans
-  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
-  // the plane tests locate(p) makes
-  Trace3D trace(Vec3 p) const;
   // faces, vertices, memory and build time; no cells
   Stats3D stats() const;
   // none: the method has no cells
   std::vector<Cell3D> cells() const { return {}; }
 
  private:
+  friend SinkQueries;
+  static constexpr Method3D kMethod = Method3D::Halfspace;
+  // the sign of every face plane, in order, up to the first outer side
+  template <class Sink>
+  Location run(Vec3 p, Sink& sink) const noexcept;
   detail::SurfaceCopy surface_;
   double buildSeconds_ = 0.0;
 };
@@ -190,26 +191,26 @@ class HalfspaceLocator {
 // === walk, O(sqrt F) expected: across face adjacency toward the face the ray from the
 // centre through the point leaves by (ref. [11]), then one plane test
 
-class WalkLocator {
+// locate (walks from the start face nearest p's direction, then tests one plane), the batch
+// and trace (the faces visited, every edge test, the final plane test) come from SinkQueries
+class WalkLocator : public detail::SinkQueries<WalkLocator, Vec3, Trace3D> {
  public:
   // keeps the surface and its adjacency, and about F^(1/3) start faces spread over it
   explicit WalkLocator(const ConvexPolyhedron& polyhedron);
   // the centre, when the polyhedron has one (else every query tests all faces)
   std::optional<Vec3> centre() const noexcept { return centre_; }
-  // walks from the start face nearest p's direction, then tests one plane
-  Location locate(Vec3 p) const noexcept;
-  // locate(p) for each point, over the shorter of the two spans
-  void locate(std::span<const Vec3> points, std::span<Location> out) const noexcept;
-  // the faces visited, every edge test, the final plane test
-  Trace3D trace(Vec3 p) const;
   // faces, vertices, memory and build time; no cells
   Stats3D stats() const;
   // none: the walk has no cells
   std::vector<Cell3D> cells() const { return {}; }
 
  private:
+  friend SinkQueries;
+  static constexpr Method3D kMethod = Method3D::Walk;
   template <class Sink>
   Location run(Vec3 p, Sink& sink) const noexcept;
+  // the trace's centre is the walk's
+  void completeTrace(Trace3D& t) const { t.centre = centre_; }
   detail::SurfaceCopy surface_;
   detail::WalkMesh mesh_;
   std::vector<std::uint32_t> startFaces_;              // triangles a walk may start from

@@ -39,15 +39,11 @@ std::optional<MeshFormat> meshFormatOf(std::string_view path);
 // then "V F [E]" (on the header line or the next), V vertex lines "x y z", F face lines
 // "k i1 ... ik [colour]" with 0-based indices and k >= 3. '#' starts a comment; blank
 // lines are skipped; one record per line; nothing may follow the last face.
-MeshData parseOff(std::FILE* file);
-MeshData parseOff(std::string_view text);
 
 // OBJ: "v x y z [w = 1 | r g b [a]]" and "f a b c ..." where each reference is "i", "i/t",
 // "i//n" or "i/t/n" with i 1-based, or negative counting back from the last vertex so far;
 // every other statement (vn, vt, o, g, s, usemtl, l, ...) is ignored. Indices are returned
 // 0-based. A face may refer to a vertex defined later in the file.
-MeshData parseObj(std::FILE* file);
-MeshData parseObj(std::string_view text);
 
 // STL, binary or ASCII. Binary: an 80-byte header, a little-endian uint32 facet count, then
 // 50 bytes a facet (normal, 3 vertices as float32, a uint16 attribute); the file must be
@@ -58,8 +54,6 @@ MeshData parseObj(std::string_view text);
 // byte below 9, and any count over kMaxMeshElements is refused. Corners with exactly equal
 // coordinates become one vertex (in order of first use); the facet normal is ignored: the
 // orientation comes from the order of the vertices, as STL requires them anyway.
-MeshData parseStl(std::FILE* file);
-MeshData parseStl(std::string_view bytes);
 
 // PLY 1.0: "ply", "format ascii|binary_little_endian|binary_big_endian 1.0", comment and
 // obj_info lines, elements with their properties, "end_header". Element "vertex" needs
@@ -68,8 +62,11 @@ MeshData parseStl(std::string_view bytes);
 // "vertex_indices" (or "vertex_index") with an integer count and index type. Every other
 // property and element is read past, lists included. A file without faces (a point cloud)
 // gives a mesh with vertices only. ASCII records are one a line.
-MeshData parsePly(std::FILE* file);
-MeshData parsePly(std::string_view bytes);
+
+// Parses a mesh in `format` (grammars above) from an open file, read to its end, or from the
+// text or bytes in memory. Throws ParseError naming the line (text) or byte offset (binary).
+MeshData parseMesh(MeshFormat format, std::FILE* file);
+MeshData parseMesh(MeshFormat format, std::string_view bytes);
 
 // Reads the mesh file at `path` ("-" is standard input, read as OFF), choosing the format by
 // extension. Throws Error when it cannot be opened, UsageError for another extension.

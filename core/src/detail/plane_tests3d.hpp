@@ -23,6 +23,14 @@ inline constexpr std::uint32_t kNoFace = 0xffffffffu;
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
+// true, and the sink told, when p has an infinite or NaN coordinate (then p is Outside)
+template <class Sink>
+bool refusedAsNonFinite(Vec3 p, Sink& sink) {
+  if (isFinite(p)) return false;
+  sink.nonFinite();
+  return true;
+}
+
 // orient3d of p against face f: > 0 on the inner side
 [[gnu::always_inline]] inline int planeSign(const SurfaceCopy& surface, std::uint32_t f, Vec3 p) {
   const ConvexPolyhedron::Triangle& t = surface.faces[f];

@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "convexloc/locate3d.hpp"
+#include "detail/sink_queries.hpp"
 
 namespace convexloc::detail {
 namespace {
@@ -63,6 +64,17 @@ struct TraceSink3D {
   // the radius filter runs unless the trace was asked without it
   bool radii() const { return t.radiusFilter; }
 };
+
+}  // namespace
+
+// the 3D sinks for SinkQueries
+template <>
+struct Sinks<Trace3D> {
+  using None = NoSink3D;
+  using Record = TraceSink3D;
+};
+
+namespace {
 
 // the trace of one query: `query(sink)` runs it into a TraceSink3D, its answer the result
 template <class Query>

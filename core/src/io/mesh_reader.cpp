@@ -15,38 +15,24 @@
 namespace convexloc {
 namespace {
 
-// a format's parser run over a FILE or over text, through its source type
-template <class Source, class Input>
-MeshData parseWith(Input in, MeshData (*parse)(Source&)) {
-  Source src(in);
-  return parse(src);
+// the format's parser run over a FILE or over text: OFF and OBJ read lines, STL and PLY bytes
+template <class Input>
+MeshData parseAs(MeshFormat format, Input in) {
+  if (format == MeshFormat::Off || format == MeshFormat::Obj) {
+    LineReader src(in);
+    return format == MeshFormat::Off ? detail::parseOffFrom(src) : detail::parseObjFrom(src);
+  }
+  detail::ByteSource src(in);
+  return format == MeshFormat::Stl ? detail::parseStlFrom(src) : detail::parsePlyFrom(src);
 }
 
 }  // namespace
 
-MeshData parseOff(std::FILE* file) {
-  return parseWith(file, detail::parseOffFrom);
+MeshData parseMesh(MeshFormat format, std::FILE* file) {
+  return parseAs(format, file);
 }
-MeshData parseOff(std::string_view text) {
-  return parseWith(text, detail::parseOffFrom);
-}
-MeshData parseObj(std::FILE* file) {
-  return parseWith(file, detail::parseObjFrom);
-}
-MeshData parseObj(std::string_view text) {
-  return parseWith(text, detail::parseObjFrom);
-}
-MeshData parseStl(std::FILE* file) {
-  return parseWith(file, detail::parseStlFrom);
-}
-MeshData parseStl(std::string_view bytes) {
-  return parseWith(bytes, detail::parseStlFrom);
-}
-MeshData parsePly(std::FILE* file) {
-  return parseWith(file, detail::parsePlyFrom);
-}
-MeshData parsePly(std::string_view bytes) {
-  return parseWith(bytes, detail::parsePlyFrom);
+MeshData parseMesh(MeshFormat format, std::string_view text) {
+  return parseAs(format, text);
 }
 
 std::optional<MeshFormat> meshFormatOf(std::string_view path) {
@@ -66,13 +52,7 @@ MeshData readMesh(const std::string& path) {
   if (!format)
     throw UsageError("unknown mesh format: '" + path + "' (expected .off, .obj, .stl or .ply)");
   InputFile in(path);
-  switch (*format) {
-    case MeshFormat::Off: return parseOff(in.get());
-    case MeshFormat::Obj: return parseObj(in.get());
-    case MeshFormat::Stl: return parseStl(in.get());
-    case MeshFormat::Ply: break;
-  }
-  return parsePly(in.get());
+  return parseMesh(*format, in.get());
 }
 
 ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
