@@ -70,44 +70,15 @@ LOCATORS_2D = {
 LOCATORS_3D = {cls.method: cls for cls in (HalfspaceLocator, WalkLocator, CubemapLocator)}
 
 
-def _signature_of(function):
-    """The inspect.Signature in the first line of a pybind11 docstring, "name(a: T, *,
-    b: U = 1) -> R" (defaults that are not Python literals are kept as their text)."""
-    line = function.__doc__.splitlines()[0]
-    inside = line[line.index("(") + 1:line.rindex(")")]
-    parts, depth, start = [], 0, 0
-    for k, c in enumerate(inside):
-        depth += c in "([{"
-        depth -= c in ")]}"
-        if c == "," and depth == 0:
-            parts.append(inside[start:k].strip())
-            start = k + 1
-    parts.append(inside[start:].strip())
-    parameters, kind = [], _inspect.Parameter.POSITIONAL_OR_KEYWORD
-    for part in filter(None, parts):
-        if part == "*":
-            kind = _inspect.Parameter.KEYWORD_ONLY
-            continue
-        name, _, default = part.partition("=")
-        name = name.split(":")[0].strip()
-        value = _inspect.Parameter.empty
-        if default:
-            try:
-                value = eval(default.strip(), {"__builtins__": {}})  # a literal: 0, None, False
-            except Exception:
-                value = default.strip()
-        parameters.append(_inspect.Parameter(name, kind, default=value))
-    return _inspect.Signature(parameters)
-
-
 def _signed(function):
-    """`function` (a pybind11 builtin) behind a Python function that inspect.signature reads."""
+    """`function` (a pybind11 builtin with a text signature) behind a Python function of this
+    module, with the same signature."""
 
     @_functools.wraps(function)
     def wrapper(*args, **kwargs):
         return function(*args, **kwargs)
 
-    wrapper.__signature__ = _signature_of(function)
+    wrapper.__signature__ = _inspect.signature(function)
     wrapper.__module__ = __name__
     return wrapper
 

@@ -199,14 +199,3 @@ def locate_chunks(source: _Source, locator: _AnyLocator, *, chunk: int = ...,
 
 def set_vector_batches(enabled: bool) -> None: ...
 def vector_batches() -> bool: ...
-
-__all__ = [
-    "Location", "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
-    "Error", "FileError", "GeometryError", "ParseError", "UsageError",
-    "Polygon", "Polyhedron", "read_polygon", "read_polyhedron",
-    "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
-    "HalfspaceLocator", "WalkLocator", "CubemapLocator",
-    "iter_locate", "locate_chunks",
-    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
-    "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
-]

@@ -43,8 +43,8 @@ class PolarStep(TypedDict):
     base: int
     step: int
 
-class Trace2D(TypedDict):
-    """What one 2D query did (trace()): the cell, each test with its sign, the result."""
+class _TraceCommon(TypedDict):
+    """The fields every trace has: the method, the answer, the cell's radius decision."""
 
     method: str
     result: int
@@ -55,6 +55,10 @@ class Trace2D(TypedDict):
     distance: float
     inner_radius: float
     outer_radius: float
+
+class Trace2D(_TraceCommon):
+    """What one 2D query did (trace()): the cell, each test with its sign, the result."""
+
     outside_box: bool
     cell: int
     octant: int
@@ -94,18 +98,9 @@ class Cell2D(TypedDict):
     y1: float
     edges: Indices
 
-class Trace3D(TypedDict):
+class Trace3D(_TraceCommon):
     """What one 3D query did (trace()): the cube cell or the walk, each test, the result."""
 
-    method: str
-    result: int
-    location: str
-    crowded: bool
-    at_centre: bool
-    by_radius: bool
-    distance: float
-    inner_radius: float
-    outer_radius: float
     non_finite: bool
     fallback: bool
     centre: tuple[float, float, float] | None

@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 
 #include <optional>
+#include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -66,11 +67,25 @@ bool boundaryCounts(bool covers, const py::object& boundary) {
   return boundary.cast<bool>();
 }
 
+// the docstring of contains and covers (or hull_*): `shape` says what the points are tested
+// against, `dims` their width, `locator` what answers
+std::string containsDoc(bool covers, const char* dims, const char* shape, const char* locator) {
+  const std::string counted = covers ? std::string("lies inside or on the boundary of ")
+                                     : std::string("lies strictly inside ");
+  const std::string scope =
+      covers ? "The boundary counts, as in Shapely's covers."
+             : "The interior only, as in Shapely's contains; the covers form counts the boundary "
+               "too (boundary=True is the deprecated old way to ask for that).";
+  return std::string("For each of the (M, ") + dims + ") points, whether it " + counted + shape +
+         ": an (M,) bool array, exact. " + scope + " Builds a " + locator +
+         ", then locates the batch.";
+}
+
 // Defines `name`(shape, points, *, workers=-1): makes the shape when it is not one already
 // (with `make`), then answers with Locator; `covers` says whether the boundary counts.
 template <class Locator, class Point, class Shape, class Make>
 void defineContains(py::module_& m, const char* name, bool covers, const char* shapeArg, Make make,
-                    const char* doc) {
+                    const std::string& doc) {
   auto body = [make, covers](const py::object& shape, const py::object& points,
                              const py::object& workers, const py::object& threads,
                              const py::object& boundary) {
@@ -103,27 +118,16 @@ void defineContains(py::module_& m, const char* name, bool covers, const char* s
 }  // namespace
 
 void bindConveniences(py::module_& m) {
-  defineContains<PolarLocator, Vec2, ConvexPolygon>(
-      m, "contains", false, "polygon", &polygonOf,
-      "For each of the (M, 2) points, whether it lies strictly inside the convex polygon (a "
-      "Polygon, or its (N, 2) vertices): an (M,) bool array, exact. The interior only, as "
-      "Shapely's contains; covers() counts the boundary too (boundary=True is the deprecated "
-      "old way to ask for that). Builds a PolarLocator, then locates the batch.");
-  defineContains<PolarLocator, Vec2, ConvexPolygon>(
-      m, "covers", true, "polygon", &polygonOf,
-      "For each of the (M, 2) points, whether it lies inside or on the boundary of the convex "
-      "polygon (a Polygon, or its (N, 2) vertices): an (M,) bool array, exact, as Shapely's "
-      "covers. Builds a PolarLocator, then locates the batch.");
-  defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
-      m, "hull_contains", false, "cloud", &hullOf,
-      "For each of the (M, 3) points, whether it lies strictly inside the convex hull of the "
-      "(K, 3) cloud (or inside a Polyhedron): an (M,) bool array, exact (the exact hull). "
-      "hull_covers() counts the boundary too. Builds a CubemapLocator, then locates.");
-  defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
-      m, "hull_covers", true, "cloud", &hullOf,
-      "For each of the (M, 3) points, whether it lies inside or on the convex hull of the "
-      "(K, 3) cloud (or of a Polyhedron): an (M,) bool array, exact (the exact hull). "
-      "Builds a CubemapLocator, then locates.");
+  for (const bool covers : {false, true}) {
+    defineContains<PolarLocator, Vec2, ConvexPolygon>(
+        m, covers ? "covers" : "contains", covers, "polygon", &polygonOf,
+        containsDoc(covers, "2", "the convex polygon (a Polygon, or its (N, 2) vertices)",
+                    "PolarLocator"));
+    defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
+        m, covers ? "hull_covers" : "hull_contains", covers, "cloud", &hullOf,
+        containsDoc(covers, "3", "the convex hull of the (K, 3) cloud (or a Polyhedron)",
+                    "CubemapLocator"));
+  }
 }
 
 }  // namespace convexloc::python

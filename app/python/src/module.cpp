@@ -21,10 +21,10 @@ PYBIND11_MODULE(_core, m) {
   m.attr("BOUNDARY") = static_cast<int>(cl::Location::Boundary);
   m.attr("OUTSIDE") = static_cast<int>(cl::Location::Outside);
   using convexloc::python::signedDoc;
+  py::options options;  // every docstring leads with its text signature (signedDoc)
+  options.disable_function_signatures();
   convexloc::python::registerErrors(m);
   convexloc::python::bindShapes(m);
-  py::options options;  // from here on the docstrings lead with text signatures
-  options.disable_function_signatures();
   convexloc::python::bindLocators2D(m);
   convexloc::python::bindLocators3D(m);
   convexloc::python::bindConveniences(m);

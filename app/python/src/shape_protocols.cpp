@@ -168,29 +168,38 @@ py::object restoredHistory(py::handle self, std::size_t slot) {
   return py::tuple(py::dict(state)["_history"])[slot];
 }
 
-void defineShapeProtocols(py::class_<ConvexPolygon>& c) {
+// equality, hashing and pickling: `state(self, shape)` gives the pickled tuple, and
+// `restore(items)` the shape and its history from the tuple's `count` checked items
+template <class Shape, class State, class Restore>
+void defineProtocols(py::class_<Shape>& c, const char* name, std::size_t count, State state,
+                     Restore restore) {
   defineEquality(c);
   pickleAnyProtocol(c);
-  c.def(py::pickle(
-      [](const py::object& self) {
-        const auto& p = self.cast<const ConvexPolygon&>();
+  c.def(
+      py::pickle([state](const py::object& self) { return state(self, self.cast<const Shape&>()); },
+                 [restore, count, name](const py::tuple& saved) {
+                   return restore(stateItems(saved, count, name));
+                 }));
+}
+
+void defineShapeProtocols(py::class_<ConvexPolygon>& c) {
+  defineProtocols(
+      c, "Polygon", 3,
+      [](const py::object& self, const ConvexPolygon& p) {
         const py::tuple history = py::make_tuple(
             self.attr("source_index"), self.attr("dropped_count"), self.attr("was_clockwise"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec2>(p.vertices()), history);
       },
-      [](const py::tuple& state) {
-        const py::tuple items = stateItems(state, 3, "Polygon");
+      [](const py::tuple& items) {
         const std::vector<Vec2> vertices = pointsFromState<Vec2>(items[1]);
         return std::make_pair(ConvexPolygon(vertices), historyDict(items[2]));
-      }));
+      });
 }
 
 void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
-  defineEquality(c);
-  pickleAnyProtocol(c);
-  c.def(py::pickle(
-      [](const py::object& self) {
-        const auto& p = self.cast<const ConvexPolyhedron&>();
+  defineProtocols(
+      c, "Polyhedron", 4,
+      [](const py::object& self, const ConvexPolyhedron& p) {
         py::array_t<std::uint32_t> triangles(
             {static_cast<py::ssize_t>(p.faceCount()), py::ssize_t{3}});
         std::copy_n(p.triangles().data()->data(), 3 * p.faceCount(), triangles.mutable_data());
@@ -199,8 +208,7 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
         return py::make_tuple(kStateVersion, coordinateArray<Vec3>(p.vertices()), triangles,
                               history);
       },
-      [](const py::tuple& state) {
-        const py::tuple items = stateItems(state, 4, "Polyhedron");
+      [](const py::tuple& items) {
         MeshData mesh;
         mesh.vertices = pointsFromState<Vec3>(items[1]);
         const auto triangles = items[2].cast<py::array_t<std::uint32_t, py::array::c_style>>();
@@ -213,7 +221,7 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
           made.emplace(mesh);
         }
         return std::make_pair(std::move(*made), historyDict(items[3]));
-      }));
+      });
 }
 
 }  // namespace convexloc::python

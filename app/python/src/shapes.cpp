@@ -167,6 +167,18 @@ void indexHistory(py::class_<Shape>& c, const char* name, std::size_t slot,
       c, name, slot, [get](const Shape& s) { return arrayOf((s.*get)(), {}); }, doc);
 }
 
+// the classes' docstrings
+constexpr const char* kPolygonDoc =
+    "A strictly convex polygon, validated once: counter-clockwise, repeated and "
+    "collinear vertices dropped. Immutable: its arrays are read-only. Two polygons "
+    "are equal when they have the same vertices in the same counter-clockwise "
+    "order, from any start; pickle, copy and deepcopy keep the exact doubles.";
+constexpr const char* kPolyhedronDoc =
+    "A closed convex polyhedron, validated once, as triangles counter-clockwise "
+    "seen from outside. Immutable: its arrays are read-only. Two polyhedra are "
+    "equal when they have the same vertices and the same triangles, in any order; "
+    "pickle, copy and deepcopy keep the exact doubles.";
+
 // the read-only property `bounds`: the exact box as ((lo...), (hi...))
 template <class Shape>
 void boundsProperty(py::class_<Shape>& c, const char* doc) {
@@ -180,14 +192,7 @@ void boundsProperty(py::class_<Shape>& c, const char* doc) {
 
 void bindPolygon(py::module_& m) {
   using P = ConvexPolygon;
-  py::options options;  // the docstrings lead with text signatures instead
-  options.disable_function_signatures();
-  py::class_<P> c(m, "Polygon",
-                  "A strictly convex polygon, validated once: counter-clockwise, repeated and "
-                  "collinear vertices dropped. Immutable: its arrays are read-only. Two polygons "
-                  "are equal when they have the same vertices in the same counter-clockwise "
-                  "order, from any start; pickle, copy and deepcopy keep the exact doubles.",
-                  py::dynamic_attr());
+  py::class_<P> c(m, "Polygon", kPolygonDoc, py::dynamic_attr());
   c.def(py::init(&polygonFrom), py::arg("vertices"),
         signedDoc("__init__", "(self, vertices)",
                   "Validates the (N, 2) vertices (either orientation), or the exterior ring of "
@@ -249,14 +254,7 @@ void definePolyhedronMakers(py::class_<ConvexPolyhedron>& c) {
 
 void bindPolyhedron(py::module_& m) {
   using P = ConvexPolyhedron;
-  py::options options;  // the docstrings lead with text signatures instead
-  options.disable_function_signatures();
-  py::class_<P> c(m, "Polyhedron",
-                  "A closed convex polyhedron, validated once, as triangles counter-clockwise "
-                  "seen from outside. Immutable: its arrays are read-only. Two polyhedra are "
-                  "equal when they have the same vertices and the same triangles, in any order; "
-                  "pickle, copy and deepcopy keep the exact doubles.",
-                  py::dynamic_attr());
+  py::class_<P> c(m, "Polyhedron", kPolyhedronDoc, py::dynamic_attr());
   definePolyhedronMakers(c);
   arrayProperty(c, "vertices", &P::vertices,
                 "(V, 3) float64, read-only: the vertices the triangles use");
@@ -290,14 +288,18 @@ void bindShapes(py::module_& m) {
   bindPolygon(m);
   bindPolyhedron(m);
   m.def("read_polygon", &readPolygon, py::arg("path"),
-        "Reads a polygon file (one vertex 'x y' per line). Raises ParseError, GeometryError or "
-        "FileError with the command-line tool's message, 'FILE:LINE: problem'.");
+        signedDoc(
+            "read_polygon", "(path)",
+            "Reads a polygon file (one vertex 'x y' per line). Raises ParseError, GeometryError or "
+            "FileError with the command-line tool's message, 'FILE:LINE: problem'."));
   m.def("read_polyhedron", &readPolyhedron, py::arg("path"), py::kw_only(), py::arg("hull") = false,
-        "Reads an .off, .obj, .stl or .ply polyhedron; with hull=True, the convex hull of the "
-        "file's vertices (its faces ignored: a point cloud without faces works). Raises "
-        "ParseError, GeometryError or FileError with the command-line tool's message, "
-        "'FILE:LINE: problem' ('FILE: byte N: problem' in binary data); UsageError for another "
-        "extension.");
+        signedDoc(
+            "read_polyhedron", "(path, *, hull=False)",
+            "Reads an .off, .obj, .stl or .ply polyhedron; with hull=True, the convex hull of the "
+            "file's vertices (its faces ignored: a point cloud without faces works). Raises "
+            "ParseError, GeometryError or FileError with the command-line tool's message, "
+            "'FILE:LINE: problem' ('FILE: byte N: problem' in binary data); UsageError for another "
+            "extension."));
 }
 
 }  // namespace convexloc::python
