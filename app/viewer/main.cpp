@@ -19,6 +19,7 @@
 #include "gl/renderer.hpp"
 #include "gl/scene_view.hpp"
 #include "logic/app/interaction.hpp"
+#include "logic/app/lecture.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
 #include "platform/frame_stats.hpp"
@@ -54,7 +55,15 @@ int answerWithoutWindow(const cv::ParsedOptions& parsed) {
     std::cerr << "convexloc-viewer: " << parsed.error << "\n";
     return 2;
   }
-  if (!parsed.options.whySvg.empty()) return cv::measureToSvg(parsed.options);
+  const cv::Options& o = parsed.options;
+  if (!o.whySvg.empty() || !o.whyRecord.empty()) return cv::measureToSvg(o);
+  if (!o.checkFile.empty() || !o.notesFile.empty()) {
+    std::string out, err;
+    const int code = cv::lectureReport(o, out, err);
+    std::cout << out;
+    std::cerr << err;
+    return code;
+  }
   if (parsed.options.help) std::cout << cv::usageText();
   if (parsed.options.version) std::cout << "convexloc-viewer " CONVEXLOC_VERSION "\n";
   return parsed.options.help || parsed.options.version ? 0 : -1;
@@ -220,6 +229,7 @@ int main(int argc, char** argv) {
     cv::drawUi(model, renderer, ui, stats.seconds());
     view.sync(model, renderer);
     cv::drawLabels(model, ui, view);
+    cv::blankIfAsked(ui.show);
     ImGui::Render();
 
     drawScene(model, renderer, view, size, samples, ui);
@@ -236,6 +246,8 @@ int main(int argc, char** argv) {
     ui.frameMs = stats.smoothedMs();
     if (lastFrame) break;
   }
+  // --export: a lecture with problems wrote its good slides, and says so by its exit code
+  if (exporter.active() && !ui.show.lecture.allProblems().empty()) exitCode = 1;
   if (headless)
     std::printf(
         "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "

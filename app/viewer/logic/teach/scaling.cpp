@@ -190,6 +190,17 @@ void ScalingWorker::start(ScalingConfig config) {
   });
 }
 
+void ScalingWorker::show(ScalingConfig config, ScalingResult result) {
+  cancel();
+  config_ = std::move(config);
+  const std::lock_guard lock(mutex_);
+  progress_ = {};
+  progress_.result = std::move(result);
+  progress_.finished = true;
+  progress_.done = progress_.total = 1;
+  progress_.current = "recorded timings, not measured here";
+}
+
 void ScalingWorker::cancel() {
   stop_ = true;
   wait();

@@ -112,6 +112,8 @@ class ScalingWorker {
   ~ScalingWorker();
   // starts a run (a running one is cancelled first)
   void start(ScalingConfig config);
+  // a finished run's results, recorded earlier, shown as if just measured
+  void show(ScalingConfig config, ScalingResult result);
   // asks the run to stop and waits for it
   void cancel();
   // waits for the run to end
