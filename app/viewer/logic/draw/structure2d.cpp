@@ -364,12 +364,12 @@ void drawStep(const StepDraw& d, const Step& s, bool current, std::size_t number
     case StepFocus::Search:
       for (const SlabProbe& p : d.t.probes)
         if (p.rank == s.item)
-          probeLine(d, p.y, hi, current ? 2.5f : 1.25f, current ? numbered("y", p.rank) : "");
-      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+          probeLine(d, p.y, hi, current ? 2.5f : 1.25f, current ? sortedY(p.rank) : "");
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "x.y");
       break;
     case StepFocus::Index:
       stepCell(d, s.item, current);
-      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "x.y");
       break;
     case StepFocus::Octant: stepOctant(d, static_cast<int>(s.item), current); break;
     case StepFocus::Cell: stepCell(d, s.item, current); break;
@@ -397,7 +397,7 @@ void probeSteps(const Scene2D& scene, const Probe& probe, const Palette& pal,
   out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
   out.marker(at2(x), colour, 13.0f, MarkerShape::Disc);
   if (opt.showLabels)
-    out.label(at2(x), done ? std::string(toString(t.result)) : "p",
+    out.label(at2(x), done ? std::string(toString(t.result)) : "x",
               done ? textColourOf(pal, t.result) : pal.text, {12.0f, 12.0f});
 }
 
