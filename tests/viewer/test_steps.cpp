@@ -355,3 +355,26 @@ TEST(Steps, OverlayFillsTheFaceTestedAtThatStep) {
   EXPECT_EQ(one.fills.size(), 6u);
   EXPECT_EQ(none.fills.size(), 6 * s.probe()->trace.faces.size());
 }
+
+// the wedge's rays are labelled with the numbers the Steps window gives their tests (step 1
+// is the fan, so the first ray is step 2, not ray 1)
+TEST(Steps, WedgeRayLabelsCarryTheirStepNumbers) {
+  cv::Scene2D s;
+  const ConvexPolygon poly = octagon();
+  ASSERT_TRUE(s.setShape(poly.vertices(), "octagon"));
+  s.setMethod(Method2D::Wedge);
+  s.place({0.1, 0.05});
+  const cv::StepModel m = cv::buildSteps(s.probe()->trace, {0.1, 0.05}, poly);
+  std::vector<std::string> expected;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    if (m.steps[i].focus == cv::StepFocus::Ray)
+      expected.push_back(std::to_string(i + 1) + cv::signText(m.steps[i].sign));
+  ASSERT_GE(expected.size(), 2u);
+  EXPECT_NE(expected.front().rfind("1", 0), 0u);
+  cv::DrawList all;
+  cv::buildOverlay2D(s, cv::paletteFor(cv::Theme::Light), {}, all);
+  for (const std::string& text : expected)
+    EXPECT_TRUE(std::any_of(all.labels.begin(), all.labels.end(),
+                            [&](const cv::Label& l) { return l.text == text; }))
+        << text;
+}
