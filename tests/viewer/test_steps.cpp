@@ -378,3 +378,23 @@ TEST(Steps, WedgeRayLabelsCarryTheirStepNumbers) {
                             [&](const cv::Label& l) { return l.text == text; }))
         << text;
 }
+
+// the polar query's first step highlights its octant without a second "octant K" label
+TEST(Steps, PolarOctantStepNamesItsOctantOnce) {
+  cv::Scene2D s;
+  ASSERT_TRUE(s.setShape(octagon().vertices(), "octagon"));
+  s.setMethod(Method2D::Polar);
+  s.setTraceOptions({.radii = false});
+  s.place({0.1, -0.6});
+  s.setStep(0);
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
+  cv::DrawList base, overlay;
+  cv::buildStructure2D(s, pal, {}, base);
+  cv::buildOverlay2D(s, pal, {}, overlay);
+  const std::string name = "octant " + std::to_string(s.probe()->trace.octant);
+  std::size_t seen = 0;
+  for (const cv::DrawList* d : {&base, &overlay})
+    seen += static_cast<std::size_t>(std::count_if(
+        d->labels.begin(), d->labels.end(), [&](const cv::Label& l) { return l.text == name; }));
+  EXPECT_EQ(seen, 1u);
+}

@@ -334,10 +334,7 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
   const float w = current ? 2.5f : 1.25f;
   d.out.segment(at2(c), at2(toGlm(cells[octant * q].hitLo)), colour, w);
   d.out.segment(at2(c), at2(toGlm(cells[octant * q + q - 1].hitHi)), colour, w);
-  if (current && d.opt.showLabels)
-    d.out.label(
-        at2(0.5 * (toGlm(cells[octant * q].hitLo) + toGlm(cells[octant * q + q - 1].hitHi))),
-        numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
+  // the octant's number is the structure's own label (polarRays): not written a second time
 }
 
 // polar: the cell's two radii around the centre
