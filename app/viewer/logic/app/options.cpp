@@ -167,7 +167,8 @@ std::string usageText() {
       "mode), Space new spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P\n"
       "presentation mode, G legend, Left/Right previous/next step of the placed point's query, R\n"
       "the radius filter on/off (paper-faithful mode); in a lecture PageDown / PageUp next and\n"
-      "previous slide, Home / End first and last.");
+      "previous slide, Home / End first and last, B (or .) blank screen, N speaker notes, D\n"
+      "dismiss a slide's problems. Every key press counts once, in order.");
   return app.help();
 }
 
