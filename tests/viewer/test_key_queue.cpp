@@ -49,10 +49,9 @@ cv::SlideShow fiveSlides() {
 TEST(KeyQueue, EveryPressIsOneActionInOrder) {
   cv::KeyQueue q(kBindings);
   for (int key : {Next, Next, Left, Next, Prev}) q.press({key}, false);
-  EXPECT_EQ(kinds(q.drain()),
-            (std::vector<ActionKind>{ActionKind::NextSlide, ActionKind::NextSlide,
-                                     ActionKind::PrevStep, ActionKind::NextSlide,
-                                     ActionKind::PreviousSlide}));
+  EXPECT_EQ(kinds(q.drain()), (std::vector<ActionKind>{ActionKind::NextSlide, ActionKind::NextSlide,
+                                                       ActionKind::PrevStep, ActionKind::NextSlide,
+                                                       ActionKind::PreviousSlide}));
   // drained whole: nothing is left for the next frame
   EXPECT_TRUE(q.empty());
   EXPECT_TRUE(q.drain().empty());
@@ -66,8 +65,7 @@ TEST(KeyQueue, RepeatsOnlyWhereTheKeyRepeatsAndTypingKeepsAllButF12) {
   q.press({F12}, true);           // a screenshot even then
   q.press({F12, false, true}, false);
   q.press({99}, false);  // unbound
-  EXPECT_EQ(kinds(q.drain()), (std::vector<ActionKind>{ActionKind::NextStep,
-                                                       ActionKind::Screenshot,
+  EXPECT_EQ(kinds(q.drain()), (std::vector<ActionKind>{ActionKind::NextStep, ActionKind::Screenshot,
                                                        ActionKind::SaveSvg}));
 }
 
@@ -92,7 +90,8 @@ TEST(KeyQueue, LeftLeftMovesTwoSteps) {
   cv::KeyQueue q(kBindings);
   cv::Model m;
   const cv::ParsedLecture p = cv::parseLecture(
-      "slide S\ngenerate regular\nn 64\nmethod wedge\nprobe 0.3,0.2\nstep 5\nspray 0\n", "t.lecture");
+      "slide S\ngenerate regular\nn 64\nmethod wedge\nprobe 0.3,0.2\nstep 5\nspray 0\n",
+      "t.lecture");
   ASSERT_TRUE(p.clean());
   cv::SlideShow show;
   show.lecture = p.lecture;

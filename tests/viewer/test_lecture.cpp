@@ -116,8 +116,8 @@ TEST(Lecture, ErrorsNameFileAndLine) {
       errorOf("\nslide A\npreset sliver\ngenerate regular\n").rfind("t.lecture:2: slide 'A'", 0),
       0u);
   EXPECT_EQ(errorOf("# nothing\n"), "t.lecture:1: no slides (start one with: slide TITLE)");
-  EXPECT_EQ(joined(cv::loadLecture("/no/such.lecture")).rfind("/no/such.lecture: cannot be read", 0),
-            0u);
+  EXPECT_EQ(
+      joined(cv::loadLecture("/no/such.lecture")).rfind("/no/such.lecture: cannot be read", 0), 0u);
 }
 
 TEST(Figures, EveryFigureParsesAndIsLight) {

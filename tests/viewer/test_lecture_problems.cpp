@@ -42,17 +42,17 @@ bool contains(const std::string& s, const std::string& part) {
 TEST(LectureProblems, ThreeMistakesGiveThreeLinesAndTheOtherSlidesStay) {
   const fs::path dir = scratchDir("three");
   writeFile(dir / "talk.lecture",
-            "slide One\n"                  // 1
-            "methd polar\n"                // 2: a typo of a key
-            "spray 100\n"                  // 3
-            "slide Two\n"                  // 4
-            "method wedge\n"               // 5
-            "slide Three\n"                // 6
-            "probe 1.2,0.5x\n"             // 7: a bad number
-            "slide Four\n"                 // 8
-            "shape missing.txt\n"          // 9: a file that is not there
-            "slide Five\n"                 // 10
-            "generate regular\n");         // 11
+            "slide One\n"           // 1
+            "methd polar\n"         // 2: a typo of a key
+            "spray 100\n"           // 3
+            "slide Two\n"           // 4
+            "method wedge\n"        // 5
+            "slide Three\n"         // 6
+            "probe 1.2,0.5x\n"      // 7: a bad number
+            "slide Four\n"          // 8
+            "shape missing.txt\n"   // 9: a file that is not there
+            "slide Five\n"          // 10
+            "generate regular\n");  // 11
   const cv::ParsedLecture p = cv::loadLecture((dir / "talk.lecture").string());
   const std::string file = (dir / "talk.lecture").string();
   ASSERT_EQ(p.problems.size(), 3u);
@@ -125,8 +125,9 @@ TEST(LectureProblems, ProblemsBeforeTheFirstSlideShowOnItUntilDismissed) {
       "method polar\nslide A\nspray 0\nslide B\nresolution lots\nslide C\n", "t.lecture");
   ASSERT_EQ(p.problems.size(), 2u);
   EXPECT_EQ(p.problems[0].rfind("t.lecture:1: 'method' comes before any slide", 0), 0u);
-  EXPECT_EQ(p.problems[1], "t.lecture:5: resolution needs a whole number from 0 (automatic) to "
-                           "2^26, not 'lots'");
+  EXPECT_EQ(p.problems[1],
+            "t.lecture:5: resolution needs a whole number from 0 (automatic) to "
+            "2^26, not 'lots'");
   cv::SlideShow show;
   show.lecture = p.lecture;
   cv::Model m;
@@ -169,7 +170,8 @@ TEST(LectureProblems, OptionsNameTheBadValueAndTheNearestName) {
     return cv::parseOptions(args).error;
   };
   EXPECT_EQ(error({"--probe", "1.2,0.5x"}), "--probe needs X,Y or X,Y,Z ('0.5x' is not a number)");
-  EXPECT_EQ(error({"--line", "-3", "1", "3", "2a"}), "--line needs X1 Y1 X2 Y2 ('2a' is not a number)");
+  EXPECT_EQ(error({"--line", "-3", "1", "3", "2a"}),
+            "--line needs X1 Y1 X2 Y2 ('2a' is not a number)");
   EXPECT_EQ(error({"--theme", "purple"}), "--theme needs dark or light, not 'purple'");
   EXPECT_TRUE(contains(error({"--method", "cubmap"}), "(did you mean cubemap?)"));
   EXPECT_FALSE(contains(error({"--method", "zzz"}), "did you mean"));
@@ -205,8 +207,8 @@ TEST(WhyRecord, ARecordReadsBackExactly) {
   EXPECT_EQ(back.memory.at(0).polarBytes, 1544u);
   EXPECT_EQ(cv::scalingRecord(back, cb), text);
   // a bad line: FILE:LINE naming it
-  EXPECT_FALSE(cv::parseScalingRecord("convexloc-why 1\n2d polr 8 1 0 4 100\n", "w.txt", back, cb,
-                                      error));
+  EXPECT_FALSE(
+      cv::parseScalingRecord("convexloc-why 1\n2d polr 8 1 0 4 100\n", "w.txt", back, cb, error));
   EXPECT_EQ(error, "w.txt:2: unknown method 'polr' for 2d");
   EXPECT_FALSE(cv::parseScalingRecord("slide A\n", "w.txt", back, cb, error));
   EXPECT_EQ(error.rfind("w.txt:1: not a Why O(1) record", 0), 0u);

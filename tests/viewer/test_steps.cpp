@@ -374,9 +374,9 @@ TEST(Steps, WedgeRayLabelsCarryTheirStepNumbers) {
   cv::DrawList all;
   cv::buildOverlay2D(s, cv::paletteFor(cv::Theme::Light), {}, all);
   for (const std::string& text : expected)
-    EXPECT_TRUE(std::any_of(all.labels.begin(), all.labels.end(),
-                            [&](const cv::Label& l) { return l.text == text; }))
-        << text;
+    EXPECT_TRUE(std::any_of(all.labels.begin(), all.labels.end(), [&](const cv::Label& l) {
+      return l.text == text;
+    })) << text;
 }
 
 // the polar query's first step highlights its octant without a second "octant K" label

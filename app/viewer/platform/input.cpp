@@ -1,7 +1,6 @@
 // convexloc-viewer — GLFW callbacks and keys, turned into the viewer's input and actions.
 #include "platform/input.hpp"
 
-
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>

@@ -282,9 +282,9 @@ ParsedLecture loadLecture(const std::string& path) {
     ParsedLecture r;
     std::error_code ec;
     r.lecture.path = path;
-    r.lecture.problems.push_back(
-        path + ": cannot be read (looked for " +
-        std::filesystem::absolute(path, ec).lexically_normal().string() + ")");
+    r.lecture.problems.push_back(path + ": cannot be read (looked for " +
+                                 std::filesystem::absolute(path, ec).lexically_normal().string() +
+                                 ")");
     r.problems = r.lecture.problems;
     return r;
   }
@@ -360,8 +360,7 @@ std::vector<std::string> SlideShow::shownProblems() const {
   const std::size_t own = lecture.slides.size();
   const auto put = [this](std::size_t k) { return k < dismissed.size() && dismissed[k]; };
   std::vector<std::string> shown;
-  if ((current == 0 || !active()) && !put(own))
-    shown = lecture.problems;
+  if ((current == 0 || !active()) && !put(own)) shown = lecture.problems;
   if (active() && !put(current))
     shown.insert(shown.end(), slide().problems.begin(), slide().problems.end());
   return shown;

@@ -24,14 +24,14 @@ class Model;
 // one slide: its title, its options, its caption, its notes and its problems
 struct Slide {
   std::string title;
-  std::size_t line = 0;                // the line of `slide TITLE`
-  std::vector<std::string> args;       // the slide's keys as a command line
-  std::vector<std::string> keys;       // the keys the slide itself gives, in order
-  std::vector<std::size_t> keyLines;   // the line of each key
-  std::string caption;                 // free text shown under the title
-  std::vector<std::string> notes;      // the speaker's notes, a line each
-  std::vector<std::string> problems;   // "FILE:LINE: problem", in line order
-  Options options;                     // args (the good lines), parsed
+  std::size_t line = 0;               // the line of `slide TITLE`
+  std::vector<std::string> args;      // the slide's keys as a command line
+  std::vector<std::string> keys;      // the keys the slide itself gives, in order
+  std::vector<std::size_t> keyLines;  // the line of each key
+  std::string caption;                // free text shown under the title
+  std::vector<std::string> notes;     // the speaker's notes, a line each
+  std::vector<std::string> problems;  // "FILE:LINE: problem", in line order
+  Options options;                    // args (the good lines), parsed
   // whether the slide itself gives `key`
   bool gives(std::string_view key) const;
   // whether the slide can be shown as written

@@ -38,8 +38,8 @@ void checkSlides(ParsedLecture& parsed, Model& model) {
     model.reset();
     const std::string problem = model.apply(o);
     if (!problem.empty())
-      s.problems.push_back(located(lecture.path, lineOfProblem(s, problem),
-                                   "slide '" + s.title + "': " + problem));
+      s.problems.push_back(
+          located(lecture.path, lineOfProblem(s, problem), "slide '" + s.title + "': " + problem));
   }
   model.reset();
   parsed.problems = lecture.allProblems();

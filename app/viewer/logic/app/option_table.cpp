@@ -90,8 +90,10 @@ bool applyMethod(const Values& v, Options& o, std::string& why) {
   for (Method2D m : kAllMethods2D) names.push_back(toString(m));
   for (Method3D m : kAllMethods3D) names.push_back(toString(m));
   const std::string near = nearestWord(v[0], names);
-  why = "--method needs halfplane, wedge, slab, uniform or polar (2D), halfspace, walk or "
-        "cubemap (3D), not '" + v[0] + "'" + (near.empty() ? "" : " (did you mean " + near + "?)");
+  why =
+      "--method needs halfplane, wedge, slab, uniform or polar (2D), halfspace, walk or "
+      "cubemap (3D), not '" +
+      v[0] + "'" + (near.empty() ? "" : " (did you mean " + near + "?)");
   return false;
 }
 

@@ -86,7 +86,8 @@ std::string badPart(const std::vector<std::string>& values) {
   double x = 0.0;
   if (parts.size() > 1)
     for (std::string_view part : parts)
-      if (!parseDouble(part, x)) return std::string(1, '\'').append(part).append("' is not a number");
+      if (!parseDouble(part, x))
+        return std::string(1, '\'').append(part).append("' is not a number");
   return std::string("not '").append(all).append("'");
 }
 

@@ -73,7 +73,6 @@ struct MemorySample {
   std::size_t uniformBytes = 0, polarBytes = 0;  // convexloc's, at core's resolution
 };
 
-
 struct ScalingResult {
   std::vector<ScalingSeries> series;      // one per 2D method, in kAllMethods2D order
   std::vector<ScalingSeries3D> series3d;  // one per 3D method (none when no F was asked)

@@ -29,9 +29,9 @@ template <class Method>
 void sampleLines(const char* dim, const std::vector<SeriesOf<Method>>& series, std::string& out) {
   for (const auto& s : series)
     for (const ScalingSample& x : s.samples)
-      out += std::string(dim) + " " + std::string(toString(s.method)) + " " +
-             std::to_string(x.n) + " " + exact(x.predicates) + " " + exact(x.cellEdges) + " " +
-             exact(x.nsPerQuery) + " " + std::to_string(x.bytes) + "\n";
+      out += std::string(dim) + " " + std::string(toString(s.method)) + " " + std::to_string(x.n) +
+             " " + exact(x.predicates) + " " + exact(x.cellEdges) + " " + exact(x.nsPerQuery) +
+             " " + std::to_string(x.bytes) + "\n";
 }
 
 // a finite double, whole
@@ -57,8 +57,8 @@ struct RecordReader {
   std::string sample(const std::vector<std::string>& w, std::vector<SeriesOf<Method>>& series,
                      std::span<const Method> methods) {
     if (w.size() != 7) return "a sample needs METHOD N PREDICATES CELL_EDGES NS_PER_QUERY BYTES";
-    const auto m = std::find_if(methods.begin(), methods.end(),
-                                [&](Method x) { return toString(x) == w[1]; });
+    const auto m =
+        std::find_if(methods.begin(), methods.end(), [&](Method x) { return toString(x) == w[1]; });
     if (m == methods.end()) return "unknown method '" + w[1] + "' for " + w[0];
     ScalingSample s;
     if (!readCount(w[2], s.n) || !readDouble(w[3], s.predicates) ||
@@ -126,8 +126,8 @@ std::string scalingRecord(const ScalingResult& r, const ScalingConfig& c) {
   sampleLines("3d", r.series3d, out);
   out += "# memory GAP PAPER_SLABS PAPER_BYTES UNIFORM_BYTES POLAR_BYTES\n";
   for (const MemorySample& m : r.memory)
-    out += "memory " + exact(m.gap) + " " + exact(m.paperSlabs) + " " + exact(m.paperBytes) +
-           " " + std::to_string(m.uniformBytes) + " " + std::to_string(m.polarBytes) + "\n";
+    out += "memory " + exact(m.gap) + " " + exact(m.paperSlabs) + " " + exact(m.paperBytes) + " " +
+           std::to_string(m.uniformBytes) + " " + std::to_string(m.polarBytes) + "\n";
   return out;
 }
 

@@ -20,6 +20,7 @@ void showFigure(Model& model, UiState& ui, int n) {
   const std::vector<std::string> words = figureArgs(n);
   const std::vector<std::string_view> args(words.begin(), words.end());
   ui.show.lecture = figureLecture(n, parseOptions(args).options);
+  ui.show.dismissed.clear();
   ui.show.lecture.slides[0].keys = {"figure", "theme"};
   goToSlide(model, ui, 0);
 }
@@ -146,9 +147,9 @@ void problemsBox(SlideShow& show, ScreenRect area) {
   if (problems.empty()) return;
   const ImGuiIO& io = ImGui::GetIO();
   const float w = std::min(static_cast<float>(area.size().x) * 0.9f, ImGui::GetFontSize() * 50.0f);
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x + area.hi.x) * 0.5f,
-                                 io.DisplaySize.y * 0.5f),
-                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowPos(
+      ImVec2(static_cast<float>(area.lo.x + area.hi.x) * 0.5f, io.DisplaySize.y * 0.5f),
+      ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0.0f), ImVec2(w, io.DisplaySize.y * 0.8f));
   ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(0.84f, 0.37f, 0.0f, 1.0f));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 3.0f);
@@ -160,7 +161,11 @@ void problemsBox(SlideShow& show, ScreenRect area) {
   ImGui::TextUnformatted(show.active() ? "This slide is not shown as written (the other slides "
                                          "play on):"
                                        : "This lecture has no slide to show:");
-  for (const std::string& p : problems) ImGui::BulletText("%s", p.c_str());
+  // a bullet, then the problem wrapped at the box's edge (BulletText does not wrap)
+  for (const std::string& p : problems) {
+    ImGui::Bullet();
+    ImGui::TextUnformatted(p.c_str());
+  }
   ImGui::PopTextWrapPos();
   if (ImGui::Button("Dismiss (D)")) show.dismiss();
   ImGui::End();
@@ -173,9 +178,10 @@ void notesWindow(const SlideShow& show, bool& open) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 30.0f, ImGui::GetFontSize() * 14.0f),
                            ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - ImGui::GetFontSize() * 31.0f,
-                                 ImGui::GetFontSize()),
-                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(
+      ImVec2(io.DisplaySize.x - ImGui::GetFontSize() * 31.0f, ImGui::GetFontSize()),
+      ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(1.0f);
   if (!ImGui::Begin("Speaker notes (N)", &open, ImGuiWindowFlags_NoFocusOnAppearing)) {
     ImGui::End();
     return;

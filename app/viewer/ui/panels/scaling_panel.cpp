@@ -139,9 +139,8 @@ void scalingWindow(Model& model, UiState& ui) {
   const std::string what = p.running          ? "measuring " + p.current
                            : p.cancelled      ? "cancelled"
                            : !p.error.empty() ? p.error
-                           : p.finished       ? (p.current.starts_with("recorded") ? p.current
-                                                                                    : "done")
-                                              : "press Measure";
+                           : p.finished ? (p.current.starts_with("recorded") ? p.current : "done")
+                                        : "press Measure";
   // the progress on the controls' row where it has room, so that the plots get the height
   if (ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x >
       ImGui::GetFontSize() * 12.0f)
@@ -167,8 +166,7 @@ void scalingWindow(Model& model, UiState& ui) {
 namespace {
 
 // the measurement --why-svg and --why-record write: --why-from's record, else measured now
-bool measureOrRead(const Options& options, ScalingResult& r, ScalingConfig& c,
-                   std::string& error) {
+bool measureOrRead(const Options& options, ScalingResult& r, ScalingConfig& c, std::string& error) {
   if (!options.whyFrom.empty()) return readScalingRecord(options.whyFrom, r, c, error);
   ScalingWorker worker;
   c = scalingConfig(options.whyMost);
