@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -248,4 +249,42 @@ TEST(WhyRecord, TheShippedSlideReadsItsRecordAndTheCaptionIsTrue) {
   EXPECT_TRUE(m.whyOpen);
   EXPECT_TRUE(m.scaling->snapshot().finished);
   EXPECT_FALSE(m.scaling->running());
+}
+
+TEST(LectureProblems, KeyLinesEndAtACommentAndExtraValuesAreNamed) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide A #1\nfigure 6   # Fig. 6's settings\nstep 2 #\ncaption a # b\nnotes c # d\n",
+      "t.lecture");
+  ASSERT_TRUE(p.clean()) << p.problems.front();
+  const cv::Slide& s = p.lecture.slides[0];
+  EXPECT_EQ(s.title, "A #1");
+  EXPECT_EQ(s.options.figure, 6);
+  EXPECT_EQ(s.options.step, 2);
+  EXPECT_EQ(s.caption, "a # b");
+  EXPECT_EQ(s.notes, std::vector<std::string>{"c # d"});
+  const cv::ParsedLecture q = cv::parseLecture("slide A\nn 3 4 5\nhide-ui now\n", "t.lecture");
+  ASSERT_EQ(q.problems.size(), 2u);
+  EXPECT_EQ(q.problems[0],
+            "t.lecture:2: 'n' was given more values than it takes ('4 5' is left "
+            "over)");
+  EXPECT_EQ(q.problems[1],
+            "t.lecture:3: 'hide-ui' was given more values than it takes ('now' is "
+            "left over)");
+}
+
+// a lecturer writes a lecture from docs/viewer.md: its example of the format is a clean
+// lecture (its shape path read beside the shipped lecture, as the example says)
+TEST(LectureProblems, TheDocumentedExampleIsACleanLecture) {
+  std::ifstream in(std::string(CONVEXLOC_SOURCE_DIR) + "/docs/viewer.md");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t start = doc.find("```text\nslide Polar query");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t from = doc.find('\n', start) + 1;
+  const std::string example = doc.substr(from, doc.find("```", from) - from);
+  const cv::ParsedLecture p = cv::parseLecture(
+      example, "example.lecture", std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures");
+  EXPECT_TRUE(p.clean()) << p.problems.front();
+  ASSERT_EQ(p.lecture.slides.size(), 2u);
+  EXPECT_EQ(p.lecture.slides[0].options.step, 2);
+  EXPECT_EQ(p.lecture.slides[0].notes.size(), 2u);
 }

@@ -26,8 +26,9 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
 }
 
-// A line's words: split at blanks, a double-quoted word may hold blanks. False (and
-// `error`) on a quote that is not closed.
+// A line's words: split at blanks, a double-quoted word may hold blanks, a word starting
+// with `#` starts a comment to the end of the line. False (and `error`) on a quote that is
+// not closed.
 bool splitWords(std::string_view s, std::vector<std::string>& words, std::string& error) {
   std::size_t i = 0;
   while (i < s.size()) {
@@ -35,6 +36,7 @@ bool splitWords(std::string_view s, std::vector<std::string>& words, std::string
       ++i;
       continue;
     }
+    if (s[i] == '#') break;
     if (s[i] == '"') {
       const std::size_t close = s.find('"', i + 1);
       if (close == std::string_view::npos) {
@@ -98,13 +100,24 @@ std::string filePath(const std::string& path, const std::string& baseDir, std::s
 
 // the keys a lecture line may start with: every option a slide may set, and the lecture's own
 std::vector<std::string_view> lectureKeys() {
-  std::vector<std::string_view> keys = {"slide", "caption", "notes"};
+  std::vector<std::string_view> keys = {"slide", "caption", "notes", "shape"};
   for (const OptionSpec& s : optionTable()) {
     std::string_view names = s.names;
     names = names.substr(names.rfind(',') == std::string_view::npos ? 0 : names.rfind(',') + 1);
     if (!s.run && names.starts_with("--")) keys.push_back(names.substr(2));
   }
   return keys;
+}
+
+// the words of a key's line past the values its option takes, blank-separated
+std::string leftOver(const std::string& key, const std::vector<std::string>& words) {
+  std::size_t takes = 0;
+  for (const OptionSpec& s : optionTable())
+    if (std::string_view(s.names).ends_with("--" + key)) takes = static_cast<std::size_t>(s.count);
+  std::string rest;
+  for (std::size_t i = 1 + takes; i < words.size(); ++i)
+    rest += (rest.empty() ? "" : " ") + words[i];
+  return rest;
 }
 
 // "unknown key 'methd' (did you mean method?)"
@@ -223,13 +236,15 @@ class LectureReader {
       fail(unknownKey(key));
       return false;
     }
-    if (!p.error.empty()) {
-      fail(inLectureWords(p.error));
+    // a value the option does not take reads as a shape file (two as two shape files)
+    if (key != "shape" && (p.error.starts_with("more than one shape given") ||
+                           (p.error.empty() && !p.options.shape.empty()))) {
+      fail("'" + key + "' was given more values than it takes ('" + leftOver(key, words) +
+           "' is left over)");
       return false;
     }
-    if (key != "shape" && !p.options.shape.empty()) {
-      fail("'" + key + "' was given more values than it takes ('" + p.options.shape +
-           "' is left over)");
+    if (!p.error.empty()) {
+      fail(inLectureWords(p.error));
       return false;
     }
     return true;
