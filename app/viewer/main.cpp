@@ -24,6 +24,7 @@
 #include "logic/app/options.hpp"
 #include "platform/frame_stats.hpp"
 #include "platform/input.hpp"
+#include "platform/notes_window.hpp"
 #include "platform/window.hpp"
 #include "ui/frame.hpp"
 #include "ui/key_actions.hpp"
@@ -163,6 +164,16 @@ bool writeFrameFiles(const cv::Options& options, bool headless, const cv::FrameS
   return lastFrame;
 }
 
+// The speaker notes in their own window while N asks for them during a lecture; where no
+// second window opens they are drawn inside the main one (the next frame's panels).
+void showNotes(cv::NotesWindow& notes, const cv::Window& window, cv::UiState& ui) {
+  bool wanted = ui.showNotes && ui.show.active();
+  ui.notesOwnWindow = notes.update(
+      wanted, window.handle(), [](float pixels) { cv::loadFont(pixels, false); },
+      [&ui] { cv::notesContents(ui.show); });
+  if (ui.show.active()) ui.showNotes = wanted;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -204,6 +215,7 @@ int main(int argc, char** argv) {
     if (headless) return 1;
   }
   cv::SceneView view;
+  cv::NotesWindow notes;
   cv::Interaction interaction;
   cv::FrameStats stats;
   cv::IdleCounter idle;
@@ -240,6 +252,7 @@ int main(int argc, char** argv) {
         writeFrameFiles(options, headless, stats, size, model, view, ui, exporter, exitCode);
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();
+    if (!headless) showNotes(notes, window, ui);
     if (ui.reloadShaders && !renderer.reload()) model.fail("shaders failed to compile: see View");
     ui.reloadShaders = false;
     stats.end();

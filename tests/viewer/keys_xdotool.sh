@@ -2,7 +2,8 @@
 # The key queue against the real window: a five-slide lecture under Xvfb, xdotool types three
 # quick PageDowns (10 ms apart, faster than a frame), then End, PageUp, B and PageDown (which
 # only brings the blanked slide back). The viewer prints each slide's notes on stdout as it
-# is shown: the slides seen must be 1, 2, 3, 4, then 5, 4, and nothing after the blank.
+# is shown: the slides seen must be 1, 2, 3, 4, then 5, 4, and nothing after the blank. N
+# opens the notes' own window and closes it again.
 # usage: keys_xdotool.sh VIEWER OUTDIR   (run under xvfb-run)
 set -euo pipefail
 viewer=$1 out=$2
@@ -22,6 +23,17 @@ xdotool key --delay 10 End Prior
 sleep 2
 xdotool key --delay 10 b Next
 sleep 2
+# N opens the speaker notes in a window of their own; N again closes it
+xdotool key n
+sleep 2
+xdotool search --name "speaker notes" >/dev/null || { echo "N opened no notes window" >&2; exit 1; }
+xdotool key n
+sleep 2
+if xdotool search --name "speaker notes" >/dev/null; then
+  echo "the notes window stayed open after a second N" >&2
+  exit 1
+fi
+kill -0 "$pid"  # still running
 seen=$(grep -o '^--- [0-9]*' "$out/stdout.txt" | cut -d' ' -f2 | tr '\n' ' ')
 if [[ $seen != "1 2 3 4 5 4 " ]]; then
   echo "slides shown: '$seen', expected '1 2 3 4 5 4 '" >&2

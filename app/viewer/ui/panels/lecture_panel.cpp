@@ -201,6 +201,35 @@ void notesWindow(const SlideShow& show, bool& open) {
   ImGui::End();
 }
 
+void notesContents(const SlideShow& show) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+  ImGui::SetNextWindowSize(io.DisplaySize);
+  ImGui::Begin(
+      "##notes", nullptr,
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  if (!show.active()) {
+    ImGui::TextDisabled("no lecture");
+    ImGui::End();
+    return;
+  }
+  const Slide& s = show.slide();
+  const std::size_t count = show.lecture.slides.size();
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%zu / %zu%s", show.current + 1, count,
+                      show.blank ? "  (screen blanked)" : "");
+  ImGui::TextUnformatted(s.title.c_str());
+  ImGui::Separator();
+  if (s.notes.empty()) ImGui::TextDisabled("(no notes on this slide)");
+  for (const std::string& line : s.notes) ImGui::TextUnformatted(line.c_str());
+  if (show.current + 1 < count) {
+    ImGui::Separator();
+    ImGui::TextDisabled("next: %s", show.lecture.slides[show.current + 1].title.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
 void blankIfAsked(const SlideShow& show) {
   if (!show.blank) return;
   const ImGuiIO& io = ImGui::GetIO();
@@ -210,7 +239,8 @@ void blankIfAsked(const SlideShow& show) {
 
 void slideCard(Model& model, UiState& ui, ScreenRect area) {
   problemsBox(ui.show, area);
-  notesWindow(ui.show, ui.showNotes);
+  // the notes inside the main window where they cannot have one of their own
+  if (!ui.notesOwnWindow) notesWindow(ui.show, ui.showNotes);
   if (!ui.show.active()) {
     keepBand(model, 0.0f);
     return;

@@ -42,6 +42,10 @@ void problemsBox(SlideShow& show, ScreenRect area);
 // the speaker notes' window (movable; N shows and hides it): the slide, its notes, the next
 void notesWindow(const SlideShow& show, bool& open);
 
+// the speaker notes filling their own window (platform/notes_window.hpp): the slide, its
+// notes, the next slide's title
+void notesContents(const SlideShow& show);
+
 // the whole window black while the show is blanked (B)
 void blankIfAsked(const SlideShow& show);
 
