@@ -19,10 +19,12 @@
 #include "gl/renderer.hpp"
 #include "gl/scene_view.hpp"
 #include "logic/app/interaction.hpp"
+#include "logic/app/lecture.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
 #include "platform/frame_stats.hpp"
 #include "platform/input.hpp"
+#include "platform/notes_window.hpp"
 #include "platform/window.hpp"
 #include "ui/frame.hpp"
 #include "ui/key_actions.hpp"
@@ -54,7 +56,15 @@ int answerWithoutWindow(const cv::ParsedOptions& parsed) {
     std::cerr << "convexloc-viewer: " << parsed.error << "\n";
     return 2;
   }
-  if (!parsed.options.whySvg.empty()) return cv::measureToSvg(parsed.options);
+  const cv::Options& o = parsed.options;
+  if (!o.whySvg.empty() || !o.whyRecord.empty()) return cv::measureToSvg(o);
+  if (!o.checkFile.empty() || !o.notesFile.empty()) {
+    std::string out, err;
+    const int code = cv::lectureReport(o, out, err);
+    std::cout << out;
+    std::cerr << err;
+    return code;
+  }
   if (parsed.options.help) std::cout << cv::usageText();
   if (parsed.options.version) std::cout << "convexloc-viewer " CONVEXLOC_VERSION "\n";
   return parsed.options.help || parsed.options.version ? 0 : -1;
@@ -154,6 +164,16 @@ bool writeFrameFiles(const cv::Options& options, bool headless, const cv::FrameS
   return lastFrame;
 }
 
+// The speaker notes in their own window while N asks for them during a lecture; where no
+// second window opens they are drawn inside the main one (the next frame's panels).
+void showNotes(cv::NotesWindow& notes, const cv::Window& window, cv::UiState& ui) {
+  bool wanted = ui.showNotes && ui.show.active();
+  ui.notesOwnWindow = notes.update(
+      wanted, window.handle(), [](float pixels) { cv::loadFont(pixels, false); },
+      [&ui] { cv::notesContents(ui.show); });
+  if (ui.show.active()) ui.showNotes = wanted;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -195,6 +215,7 @@ int main(int argc, char** argv) {
     if (headless) return 1;
   }
   cv::SceneView view;
+  cv::NotesWindow notes;
   cv::Interaction interaction;
   cv::FrameStats stats;
   cv::IdleCounter idle;
@@ -220,6 +241,7 @@ int main(int argc, char** argv) {
     cv::drawUi(model, renderer, ui, stats.seconds());
     view.sync(model, renderer);
     cv::drawLabels(model, ui, view);
+    cv::blankIfAsked(ui.show);
     ImGui::Render();
 
     drawScene(model, renderer, view, size, samples, ui);
@@ -230,12 +252,15 @@ int main(int argc, char** argv) {
         writeFrameFiles(options, headless, stats, size, model, view, ui, exporter, exitCode);
     if (headless) cv::finishGl();  // time what the GL really did
     window.swapBuffers();
+    if (!headless) showNotes(notes, window, ui);
     if (ui.reloadShaders && !renderer.reload()) model.fail("shaders failed to compile: see View");
     ui.reloadShaders = false;
     stats.end();
     ui.frameMs = stats.smoothedMs();
     if (lastFrame) break;
   }
+  // --export: a lecture with problems wrote its good slides, and says so by its exit code
+  if (exporter.active() && !ui.show.lecture.allProblems().empty()) exitCode = 1;
   if (headless)
     std::printf(
         "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "

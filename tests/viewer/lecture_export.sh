@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Exports a lecture under xvfb-run and checks that every slide became a PNG and a
-# well-formed SVG; a bad lecture must exit 1 and write nothing.
+# well-formed SVG; a lecture whose only slide is bad must exit 1 and write nothing, one with
+# some bad slides writes the others and exits 1.
 # usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR
 set -euo pipefail
 xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5
@@ -34,4 +35,17 @@ if "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$out/bad.lecture" 
 fi
 grep -q "bad.lecture:3: unknown key 'wobble'" "$out/bad.err"
 [[ ! -e $out/bad ]]
-echo "$pngs slides exported (PNG and SVG)"
+# a lecture with mistakes on two of its four slides: both reported, the good slides written
+# under their own numbers, exit 1
+printf 'slide A\nspray 0\nslide B\nmethd polar\nslide C\nprobe 1,2x\nslide D\nspray 0\n' \
+  >"$out/mixed.lecture"
+if "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$out/mixed.lecture" \
+  --export "$out/mixed" --size 640x360 2>"$out/mixed.err"; then
+  echo "a lecture with problems exited 0" >&2
+  exit 1
+fi
+grep -q "mixed.lecture:4: unknown key 'methd'" "$out/mixed.err"
+grep -q "mixed.lecture:6: probe needs" "$out/mixed.err"
+[[ -e $out/mixed/slide-01.png && -e $out/mixed/slide-04.svg ]]
+[[ ! -e $out/mixed/slide-02.png && ! -e $out/mixed/slide-03.png ]]
+echo "$pngs slides exported (PNG and SVG); a lecture with problems: its good slides"

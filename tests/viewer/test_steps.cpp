@@ -3,6 +3,8 @@
 // --step and --paper, and numbers that never break across lines.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -68,10 +70,17 @@ TEST(Steps, SlabShowsEachProbeOfTheBinarySearch) {
   expectOneLineEach(m);
   const std::vector<std::string> c = captions(m);
   ASSERT_GE(c.size(), 7u);
-  EXPECT_EQ(c[0], "probe 1: y2 = 0 <= p.y: go up");
-  EXPECT_EQ(c[1], "probe 2: y4 = 1 > p.y: go down");
-  EXPECT_EQ(c[2], "probe 3: y3 = 0.707107 > p.y: go down");
-  EXPECT_EQ(c[3], "slab 2 (between y2 and y3)");
+  EXPECT_EQ(c[0], "probe 1: y(2) = 0 <= x.y: go up");
+  EXPECT_EQ(c[1], "probe 2: y(4) = 1 > x.y: go down");
+  EXPECT_EQ(c[2], "probe 3: y(3) = 0.707107 > x.y: go down");
+  EXPECT_EQ(c[3], "slab 2 (between y(2) and y(3))");
+  // y(k) is the k-th of the sorted distinct vertex y, whatever vertex has it
+  std::vector<double> ys;
+  for (std::size_t i = 0; i < poly.size(); ++i) ys.push_back(poly.vertex(i).y);
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  for (const convexloc::SlabProbe& probe : SlabLocator(poly).trace(p).probes)
+    EXPECT_EQ(probe.y, ys.at(static_cast<std::size_t>(probe.rank)));
   EXPECT_EQ(m.steps[0].focus, cv::StepFocus::Search);
   EXPECT_EQ(m.steps[0].item, 2);
   EXPECT_EQ(m.steps[0].line, 1);
@@ -112,7 +121,7 @@ TEST(Steps, PolarShowsTheOctantTheRatioAndTheSlab) {
   const cv::StepModel m = cv::buildSteps(t, p, poly);
   expectOneLineEach(m);
   ASSERT_GE(m.steps.size(), 3u);
-  EXPECT_EQ(m.steps[0].caption.rfind("octant 0: d = p - x_T = (0.5,0.215", 0), 0u)
+  EXPECT_EQ(m.steps[0].caption.rfind("octant 0: d = x - x_T = (0.5,0.215", 0), 0u)
       << m.steps[0].caption;
   EXPECT_EQ(m.steps[0].focus, cv::StepFocus::Octant);
   EXPECT_EQ(m.steps[1].caption, "ratio |dy|/|dx| = 0.43: k = floor(4*0.43) = 1 -> cell 1");
@@ -170,7 +179,7 @@ TEST(Steps, CubemapShowsTheCubeFaceAndTheCell) {
   const cv::StepModel m = cv::buildSteps3D(cm.trace(p), p, 2.0);
   expectOneLineEach(m);
   ASSERT_GE(m.steps.size(), 3u);
-  EXPECT_EQ(m.steps[0].caption, "d = p - x_T = (0.5,0.1,-0.2): cube face +x");
+  EXPECT_EQ(m.steps[0].caption, "d = x - x_T = (0.5,0.1,-0.2): cube face +x");
   EXPECT_EQ(m.steps[0].item, 0);
   EXPECT_EQ(m.steps[1].caption, "(s,t) = (0.2,-0.4) -> cell (2,1) of 4x4");
   // paper-faithful: a face test decides instead of the radii
@@ -345,4 +354,47 @@ TEST(Steps, OverlayFillsTheFaceTestedAtThatStep) {
   // tested
   EXPECT_EQ(one.fills.size(), 6u);
   EXPECT_EQ(none.fills.size(), 6 * s.probe()->trace.faces.size());
+}
+
+// the wedge's rays are labelled with the numbers the Steps window gives their tests (step 1
+// is the fan, so the first ray is step 2, not ray 1)
+TEST(Steps, WedgeRayLabelsCarryTheirStepNumbers) {
+  cv::Scene2D s;
+  const ConvexPolygon poly = octagon();
+  ASSERT_TRUE(s.setShape(poly.vertices(), "octagon"));
+  s.setMethod(Method2D::Wedge);
+  s.place({0.1, 0.05});
+  const cv::StepModel m = cv::buildSteps(s.probe()->trace, {0.1, 0.05}, poly);
+  std::vector<std::string> expected;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    if (m.steps[i].focus == cv::StepFocus::Ray)
+      expected.push_back(std::to_string(i + 1) + cv::signText(m.steps[i].sign));
+  ASSERT_GE(expected.size(), 2u);
+  EXPECT_NE(expected.front().rfind("1", 0), 0u);
+  cv::DrawList all;
+  cv::buildOverlay2D(s, cv::paletteFor(cv::Theme::Light), {}, all);
+  for (const std::string& text : expected)
+    EXPECT_TRUE(std::any_of(all.labels.begin(), all.labels.end(), [&](const cv::Label& l) {
+      return l.text == text;
+    })) << text;
+}
+
+// the polar query's first step highlights its octant without a second "octant K" label
+TEST(Steps, PolarOctantStepNamesItsOctantOnce) {
+  cv::Scene2D s;
+  ASSERT_TRUE(s.setShape(octagon().vertices(), "octagon"));
+  s.setMethod(Method2D::Polar);
+  s.setTraceOptions({.radii = false});
+  s.place({0.1, -0.6});
+  s.setStep(0);
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
+  cv::DrawList base, overlay;
+  cv::buildStructure2D(s, pal, {}, base);
+  cv::buildOverlay2D(s, pal, {}, overlay);
+  const std::string name = "octant " + std::to_string(s.probe()->trace.octant);
+  std::size_t seen = 0;
+  for (const cv::DrawList* d : {&base, &overlay})
+    seen += static_cast<std::size_t>(std::count_if(
+        d->labels.begin(), d->labels.end(), [&](const cv::Label& l) { return l.text == name; }));
+  EXPECT_EQ(seen, 1u);
 }

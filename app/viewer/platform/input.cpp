@@ -1,12 +1,12 @@
 // convexloc-viewer — GLFW callbacks and keys, turned into the viewer's input and actions.
 #include "platform/input.hpp"
 
-#include <algorithm>
-
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
+
+#include "logic/app/key_queue.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -18,46 +18,57 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
   for (int i = 0; i < count; ++i) gDropped.emplace_back(paths[i]);
 }
 
-// Keys that went down since the last keyActions, in order. A presentation clicker's press
-// and release can both fall between two frames, where ImGui's key state (down at the frame
-// or not) would miss the press; the callback sees every one.
-std::vector<int> gPressed;
-bool gHadPresses = false;  // the last keyActions took some: the frames go on a while
+// every key the viewer acts on, and its action
+constexpr KeyBinding kKeys[] = {
+    // F12 always (a screenshot even while typing), Shift+F12 the SVG
+    {GLFW_KEY_F12, {ActionKind::SaveSvg, 0}, false, true, 1},
+    {GLFW_KEY_F12, {ActionKind::Screenshot, 0}, false, true, 0},
+    {GLFW_KEY_F, {ActionKind::Fit, 0}},
+    {GLFW_KEY_H, {ActionKind::ToggleUi, 0}},
+    {GLFW_KEY_T, {ActionKind::ToggleTheme, 0}},
+    {GLFW_KEY_ESCAPE, {ActionKind::ClearPoint, 0}},
+    {GLFW_KEY_SPACE, {ActionKind::NewSpray, 0}},
+    {GLFW_KEY_L, {ActionKind::ToggleLines, 0}},
+    {GLFW_KEY_V, {ActionKind::SaveSvg, 0}},
+    {GLFW_KEY_P, {ActionKind::TogglePresent, 0}},
+    {GLFW_KEY_G, {ActionKind::ToggleLegend, 0}},
+    {GLFW_KEY_R, {ActionKind::ToggleRadii, 0}},
+    // a lecture's keys: what a presentation clicker sends (its blank key sends B or '.')
+    {GLFW_KEY_PAGE_DOWN, {ActionKind::NextSlide, 0}},
+    {GLFW_KEY_PAGE_UP, {ActionKind::PreviousSlide, 0}},
+    {GLFW_KEY_HOME, {ActionKind::FirstSlide, 0}},
+    {GLFW_KEY_END, {ActionKind::LastSlide, 0}},
+    {GLFW_KEY_B, {ActionKind::ToggleBlank, 0}},
+    {GLFW_KEY_PERIOD, {ActionKind::ToggleBlank, 0}},
+    {GLFW_KEY_N, {ActionKind::ToggleNotes, 0}},
+    {GLFW_KEY_D, {ActionKind::DismissProblems, 0}},
+    // keys 1..5 choose a method
+    {GLFW_KEY_1, {ActionKind::ChooseMethod, 0}},
+    {GLFW_KEY_2, {ActionKind::ChooseMethod, 1}},
+    {GLFW_KEY_3, {ActionKind::ChooseMethod, 2}},
+    {GLFW_KEY_4, {ActionKind::ChooseMethod, 3}},
+    {GLFW_KEY_5, {ActionKind::ChooseMethod, 4}},
+    // the placed point's query step by step (the arrows repeat while held)
+    {GLFW_KEY_LEFT, {ActionKind::PrevStep, 0}, true},
+    {GLFW_KEY_RIGHT, {ActionKind::NextStep, 0}, true},
+};
+
+// Every key press since the last keyActions, as actions in order. A presentation clicker's
+// press and release can both fall between two frames, where ImGui's key state (down at the
+// frame or not) would miss the press, and three quick presses would read as one; the
+// callback sees every one.
+KeyQueue gKeys(kKeys);
+bool gPressedSince = false;  // a key went down since the last keyActions
+bool gHadPresses = false;    // the last keyActions took some: the frames go on a while
 
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-  if (action == GLFW_PRESS) gPressed.push_back(key);
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  gPressedSince = true;
+  // whether a text field has the keyboard, as ImGui decided at the last frame
+  gKeys.press({key, action == GLFW_REPEAT, (mods & GLFW_MOD_SHIFT) != 0},
+              ImGui::GetIO().WantCaptureKeyboard);
 }
-
-// a key went down since the last frame (no repeats)
-bool pressed(int key) {
-  return std::find(gPressed.begin(), gPressed.end(), key) != gPressed.end();
-}
-
-// the keys that ask for one action each, while ImGui does not want the keyboard
-struct KeyBinding {
-  int key;
-  ActionKind kind;
-};
-constexpr KeyBinding kKeys[] = {
-    {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
-    {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
-    {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
-    {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
-    {GLFW_KEY_G, ActionKind::ToggleLegend},
-};
-// a lecture's keys: what a presentation clicker sends
-constexpr KeyBinding kSlideKeys[] = {
-    {GLFW_KEY_PAGE_DOWN, ActionKind::NextSlide},
-    {GLFW_KEY_PAGE_UP, ActionKind::PreviousSlide},
-    {GLFW_KEY_HOME, ActionKind::FirstSlide},
-    {GLFW_KEY_END, ActionKind::LastSlide},
-};
-// keys 1..5 choose a method
-constexpr int kMethodKeys = 5;
-// the placed point's query step by step (the arrows repeat while held)
-constexpr KeyBinding kStepKeys[] = {{GLFW_KEY_LEFT, ActionKind::PrevStep},
-                                    {GLFW_KEY_RIGHT, ActionKind::NextStep}};
 
 }  // namespace
 
@@ -94,25 +105,9 @@ PointerInput pointerInput(bool hovering) {
 }
 
 std::vector<Action> keyActions() {
-  std::vector<Action> actions;
-  // the presses are taken once, whether ImGui wants the keyboard or not
-  gHadPresses = !gPressed.empty();
-  struct Taken {
-    ~Taken() { gPressed.clear(); }
-  } taken;
-  if (pressed(GLFW_KEY_F12))
-    actions.push_back({ImGui::GetIO().KeyShift ? ActionKind::SaveSvg : ActionKind::Screenshot, 0});
-  if (ImGui::GetIO().WantCaptureKeyboard) return actions;
-  for (const KeyBinding& b : kKeys)
-    if (pressed(b.key)) actions.push_back({b.kind, 0});
-  for (const KeyBinding& b : kSlideKeys)
-    if (pressed(b.key)) actions.push_back({b.kind, 0});
-  for (int k = 0; k < kMethodKeys; ++k)
-    if (pressed(GLFW_KEY_1 + k)) actions.push_back({ActionKind::ChooseMethod, k});
-  for (const KeyBinding& b : kStepKeys)
-    if (ImGui::IsKeyPressed(b.key, true)) actions.push_back({b.kind, 0});
-  if (pressed(GLFW_KEY_R)) actions.push_back({ActionKind::ToggleRadii, 0});
-  return actions;
+  gHadPresses = gPressedSince;
+  gPressedSince = false;
+  return gKeys.drain();
 }
 
 bool hadInput(bool dropped) {

@@ -23,8 +23,8 @@ std::vector<std::string> takeDroppedFiles();
 // the mouse this frame, from ImGui's IO; `hovering`: the cursor is over the window
 PointerInput pointerInput(bool hovering);
 
-// The actions the keys pressed this frame ask for: F12 always; the others (F, H, T, Esc,
-// Space, 1..5) only when ImGui does not want the keyboard.
+// The actions the keys pressed since the last call ask for, one a press, in order: F12
+// always; the others only when ImGui did not want the keyboard (see logic/app/key_queue.hpp).
 std::vector<Action> keyActions();
 
 // whether the mouse, a key or a drop came in this frame

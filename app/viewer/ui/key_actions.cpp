@@ -69,6 +69,9 @@ void perform(const Action& action, Model& model, UiState& ui) {
     case ActionKind::PreviousSlide:
     case ActionKind::FirstSlide:
     case ActionKind::LastSlide: moveSlide(action.kind, model, ui); break;
+    case ActionKind::ToggleBlank: ui.show.blank = !ui.show.blank; break;
+    case ActionKind::ToggleNotes: ui.showNotes = !ui.showNotes; break;
+    case ActionKind::DismissProblems: ui.show.dismiss(); break;
   }
 }
 

@@ -75,6 +75,8 @@ struct UiState {
   // the lecture (or the paper's figure) shown, and the spray settings the Points panel last
   // took from the scene
   SlideShow show;
+  bool showNotes = false;       // the speaker notes' window (N)
+  bool notesOwnWindow = false;  // they have a window of their own (else one inside this)
   // a slide moved to by a key shows no hovered cell until the pointer moves
   bool pointerStill = false;
   SpraySettings sprayFollowed{~std::size_t{0}, 0, false};

@@ -30,13 +30,15 @@ bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui,
   }
   ++written_;
   frames_ = 0;
-  if (ui.show.current + 1 >= ui.show.lecture.slides.size()) {
+  // the next slide that can be shown as written (the others were reported at the start)
+  const std::size_t next = ui.show.goodFrom(ui.show.current + 1);
+  if (next >= ui.show.lecture.slides.size()) {
     finished_ = true;
     return true;
   }
-  problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(ui.show.current) + 1);
+  problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(next));
   if (!problem.empty()) {
-    std::cerr << "convexloc-viewer: slide " << ui.show.current + 1 << ": " << problem << "\n";
+    std::cerr << "convexloc-viewer: slide " << next + 1 << ": " << problem << "\n";
     return false;
   }
   return true;

@@ -1,5 +1,6 @@
-// convexloc-viewer — --export DIR: every slide of the lecture (or the figure) rendered and
-// written as DIR/slide-01.png and slide-01.svg, slide-02..., driven by the frame loop.
+// convexloc-viewer — --export DIR: every good slide of the lecture (or the figure) rendered
+// and written as DIR/slide-01.png and slide-01.svg, slide-02..., driven by the frame loop; a
+// slide with problems keeps its number and is left out (its problems were reported).
 #pragma once
 
 #include <cstddef>

@@ -28,6 +28,9 @@ enum class ActionKind : std::uint8_t {
   PreviousSlide,
   FirstSlide,
   LastSlide,
+  ToggleBlank,      // the screen black (B), again or a slide key: back
+  ToggleNotes,      // the speaker notes' window shown or hidden
+  DismissProblems,  // the problems shown over the slide put away
 };
 
 struct Action {

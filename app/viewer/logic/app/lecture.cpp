@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "logic/app/model.hpp"
+#include "logic/app/option_table.hpp"
+#include "logic/app/option_values.hpp"
 #include "logic/teach/figures.hpp"
 
 namespace convexloc::viewer {
@@ -24,8 +26,9 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
 }
 
-// A line's words: split at blanks, a double-quoted word may hold blanks. False (and
-// `error`) on a quote that is not closed.
+// A line's words: split at blanks, a double-quoted word may hold blanks, a word starting
+// with `#` starts a comment to the end of the line. False (and `error`) on a quote that is
+// not closed.
 bool splitWords(std::string_view s, std::vector<std::string>& words, std::string& error) {
   std::size_t i = 0;
   while (i < s.size()) {
@@ -33,6 +36,7 @@ bool splitWords(std::string_view s, std::vector<std::string>& words, std::string
       ++i;
       continue;
     }
+    if (s[i] == '#') break;
     if (s[i] == '"') {
       const std::size_t close = s.find('"', i + 1);
       if (close == std::string_view::npos) {
@@ -75,114 +79,180 @@ std::string inLectureWords(std::string message) {
   return message;
 }
 
-// a shape path relative to the lecture file where it is there, else as written
-std::string shapePath(const std::string& path, const std::string& baseDir) {
+// A file a slide names (a shape, a Why O(1) record): relative to the lecture file where it
+// is there, else as written (the working directory); `problem` names every place looked at
+// when it is in neither.
+std::string filePath(const std::string& path, const std::string& baseDir, std::string& problem) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (baseDir.empty() || fs::path(path).is_absolute()) return path;
+  if (fs::exists(path, ec) && (baseDir.empty() || fs::path(path).is_absolute())) return path;
   const fs::path near = fs::path(baseDir) / path;
-  return fs::exists(near, ec) ? near.lexically_normal().string() : path;
+  if (!baseDir.empty() && !fs::path(path).is_absolute() && fs::exists(near, ec))
+    return near.lexically_normal().string();
+  if (fs::exists(path, ec)) return path;
+  const std::string here = fs::absolute(path, ec).lexically_normal().string();
+  problem = "file '" + path + "' not found (looked for ";
+  if (!baseDir.empty() && !fs::path(path).is_absolute())
+    problem += fs::absolute(near, ec).lexically_normal().string() + " and ";
+  problem += here + ")";
+  return path;
 }
 
-// Reads the lecture line by line; `fail` records the first problem with its line.
+// the keys a lecture line may start with: every option a slide may set, and the lecture's own
+std::vector<std::string_view> lectureKeys() {
+  std::vector<std::string_view> keys = {"slide", "caption", "notes", "shape"};
+  for (const OptionSpec& s : optionTable()) {
+    std::string_view names = s.names;
+    names = names.substr(names.rfind(',') == std::string_view::npos ? 0 : names.rfind(',') + 1);
+    if (!s.run && names.starts_with("--")) keys.push_back(names.substr(2));
+  }
+  return keys;
+}
+
+// the words of a key's line past the values its option takes, blank-separated
+std::string leftOver(const std::string& key, const std::vector<std::string>& words) {
+  std::size_t takes = 0;
+  for (const OptionSpec& s : optionTable())
+    if (std::string_view(s.names).ends_with("--" + key)) takes = static_cast<std::size_t>(s.count);
+  std::string rest;
+  for (std::size_t i = 1 + takes; i < words.size(); ++i)
+    rest += (rest.empty() ? "" : " ") + words[i];
+  return rest;
+}
+
+// "unknown key 'methd' (did you mean method?)"
+std::string unknownKey(const std::string& key) {
+  const std::vector<std::string_view> keys = lectureKeys();
+  const std::string near = nearestWord(key, keys);
+  return "unknown key '" + key + "'" + (near.empty() ? "" : " (did you mean " + near + "?)");
+}
+
+// Reads the lecture line by line. A problem is kept with the slide it spoils (or the
+// lecture, before the first slide) and the reading goes on: the bad line is left out.
 class LectureReader {
  public:
   LectureReader(std::string source, std::string baseDir)
       : source_(std::move(source)), baseDir_(std::move(baseDir)) {}
 
-  // one line of the file; false once a problem is found
-  bool line(std::string_view raw, std::size_t number) {
+  // one line of the file
+  void line(std::string_view raw, std::size_t number) {
     line_ = number;
     const std::string_view s = trimmed(raw);
-    if (s.empty() || s.front() == '#') return true;
+    if (s.empty() || s.front() == '#') return;
     const std::size_t blank = std::min(s.find_first_of(" \t"), s.size());
     const std::string key(s.substr(0, blank));
     const std::string_view rest = s.substr(blank);
     if (key == "slide") return startSlide(rest);
     if (out_.slides.empty())
       return fail("'" + key + "' comes before any slide (start one with: slide TITLE)");
-    return slideKey(key, rest);
+    slideKey(key, rest);
   }
 
-  // the last slide checked as a whole; the lecture, or the problem
+  // the last slide checked as a whole; the lecture with every problem
   ParsedLecture finish() {
-    if (error_.empty() && !out_.slides.empty()) finishSlide();
-    if (error_.empty() && out_.slides.empty()) fail("no slides (start one with: slide TITLE)");
+    if (!out_.slides.empty()) finishSlide();
+    if (out_.slides.empty()) fail("no slides (start one with: slide TITLE)");
     ParsedLecture r;
-    r.error = error_;
-    if (error_.empty()) r.lecture = std::move(out_);
+    r.lecture = std::move(out_);
+    r.problems = r.lecture.allProblems();
     return r;
   }
 
  private:
-  bool fail(const std::string& problem) {
-    if (error_.empty()) error_ = located(source_, line_, problem);
-    return false;
+  // the problem at the current line, kept with the slide being read (the lecture's before one)
+  void fail(const std::string& problem) {
+    const std::string text = located(source_, line_, problem);
+    if (out_.slides.empty())
+      out_.problems.push_back(text);
+    else
+      out_.slides.back().problems.push_back(text);
   }
 
-  bool startSlide(std::string_view title) {
-    if (!out_.slides.empty() && !finishSlide()) return false;
+  void startSlide(std::string_view title) {
+    if (!out_.slides.empty()) finishSlide();
     Slide s;
     s.title = std::string(trimmed(title));
     s.line = line_;
     if (s.title.empty()) s.title = "Slide " + std::to_string(out_.slides.size() + 1);
     out_.slides.push_back(std::move(s));
-    return true;
   }
 
   // the whole slide through the parser: options that exclude each other
-  bool finishSlide() {
+  void finishSlide() {
     Slide& s = out_.slides.back();
     const std::vector<std::string_view> args(s.args.begin(), s.args.end());
     ParsedOptions p = parseOptions(args);
-    if (!p.error.empty()) {
-      line_ = s.line;
-      return fail("slide '" + s.title + "': " + inLectureWords(p.error));
-    }
     s.options = std::move(p.options);
+    if (!p.error.empty()) {
+      const std::size_t at = line_;
+      line_ = s.line;
+      fail("slide '" + s.title + "': " + inLectureWords(p.error));
+      line_ = at;
+    }
     // a figure's slide without a caption of its own says what the figure shows
     if (s.caption.empty() && s.options.figure) s.caption = figure(*s.options.figure).caption;
-    return true;
   }
 
-  bool slideKey(const std::string& key, std::string_view rest) {
+  void slideKey(const std::string& key, std::string_view rest) {
+    Slide& slide = out_.slides.back();
+    if (key == "notes") return notesLine(slide, rest);
     if (setsTheRun(key))
       return fail("'" + key + "' is not a slide key (it sets the window or the run)");
-    Slide& slide = out_.slides.back();
     std::vector<std::string> words{"--" + key};
     std::string problem;
     if (key == "caption") {
-      if (!captionText(rest, slide.caption, problem)) return fail(problem);
-      words.push_back(slide.caption);
-      // a viewer without --caption keeps the caption in the slide alone
-      const std::vector<std::string_view> probe(words.begin(), words.end());
-      if (!parseOptions(probe).error.empty()) return true;
+      std::string caption;
+      if (!captionText(rest, caption, problem)) return fail(problem);
+      slide.caption = caption;
+      words.push_back(caption);
     } else if (!splitWords(rest, words, problem)) {
       return fail(problem);
     }
-    if (key == "shape" && words.size() == 2) words = {shapePath(words[1], baseDir_)};
-    if (!checkLine(key, words)) return false;
+    // a file is looked for beside the lecture first; the shape is the command line's SHAPE
+    if ((key == "shape" || key == "why-from") && words.size() == 2) {
+      words[1] = filePath(words[1], baseDir_, problem);
+      if (!problem.empty()) return fail(key + ": " + problem);
+      if (key == "shape") words.erase(words.begin());
+    }
+    if (!checkLine(key, words)) return;
     slide.keys.push_back(key);
+    slide.keyLines.push_back(line_);
     slide.args.insert(slide.args.end(), words.begin(), words.end());
-    return true;
+  }
+
+  // a line of the speaker's notes (an empty `notes` line is an empty line of them)
+  void notesLine(Slide& slide, std::string_view rest) {
+    std::string text, problem;
+    rest = trimmed(rest);
+    if (!rest.empty() && !captionText(rest, text, problem)) return fail(problem);
+    slide.notes.push_back(text);
   }
 
   // the line alone through the parser: an unknown key, a bad or missing value, extra values
   bool checkLine(const std::string& key, const std::vector<std::string>& words) {
     const std::vector<std::string_view> args(words.begin(), words.end());
     const ParsedOptions p = parseOptions(args);
-    if (p.error.starts_with("unknown option")) return fail("unknown key '" + key + "'");
-    if (!p.error.empty()) return fail(inLectureWords(p.error));
-    if (key != "shape" && !p.options.shape.empty())
-      return fail("'" + key + "' was given more values than it takes ('" + p.options.shape +
-                  "' is left over)");
+    if (p.error.starts_with("unknown option")) {
+      fail(unknownKey(key));
+      return false;
+    }
+    // a value the option does not take reads as a shape file (two as two shape files)
+    if (key != "shape" && (p.error.starts_with("more than one shape given") ||
+                           (p.error.empty() && !p.options.shape.empty()))) {
+      fail("'" + key + "' was given more values than it takes ('" + leftOver(key, words) +
+           "' is left over)");
+      return false;
+    }
+    if (!p.error.empty()) {
+      fail(inLectureWords(p.error));
+      return false;
+    }
     return true;
   }
 
   std::string source_, baseDir_;
   Lecture out_;
   std::size_t line_ = 0;
-  std::string error_;
 };
 
 }  // namespace
@@ -196,13 +266,24 @@ bool Slide::gives(std::string_view key) const {
   return has(key) || (look && has("figure"));
 }
 
+std::vector<std::string> Lecture::allProblems() const {
+  std::vector<std::string> all = problems;
+  for (const Slide& s : slides) all.insert(all.end(), s.problems.begin(), s.problems.end());
+  return all;
+}
+
+std::size_t Lecture::goodSlides() const {
+  return static_cast<std::size_t>(
+      std::count_if(slides.begin(), slides.end(), [](const Slide& s) { return s.good(); }));
+}
+
 ParsedLecture parseLecture(std::string_view text, const std::string& source,
                            const std::string& baseDir) {
   LectureReader reader(source, baseDir);
   std::size_t number = 0;
   while (!text.empty()) {
     const std::size_t nl = std::min(text.find('\n'), text.size());
-    if (!reader.line(text.substr(0, nl), ++number)) break;
+    reader.line(text.substr(0, nl), ++number);
     text.remove_prefix(std::min(nl + 1, text.size()));
   }
   ParsedLecture r = reader.finish();
@@ -214,7 +295,12 @@ ParsedLecture loadLecture(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     ParsedLecture r;
-    r.error = path + ": cannot be read";
+    std::error_code ec;
+    r.lecture.path = path;
+    r.lecture.problems.push_back(path + ": cannot be read (looked for " +
+                                 std::filesystem::absolute(path, ec).lexically_normal().string() +
+                                 ")");
+    r.problems = r.lecture.problems;
     return r;
   }
   std::ostringstream text;
@@ -272,6 +358,38 @@ std::string SlideShow::go(Model& model, std::ptrdiff_t k) {
     lookBefore = Look{model.settings.theme, model.settings.fontScale, model.settings.showUi,
                       model.settings.present};
   return showSlide(model, lecture, current);
+}
+
+std::size_t SlideShow::target(ActionKind kind) const {
+  const std::size_t last = lecture.slides.empty() ? 0 : lecture.slides.size() - 1;
+  switch (kind) {
+    case ActionKind::NextSlide: return std::min(current + 1, last);
+    case ActionKind::PreviousSlide: return current == 0 ? 0 : current - 1;
+    case ActionKind::FirstSlide: return 0;
+    case ActionKind::LastSlide: return last;
+    default: return current;
+  }
+}
+
+std::vector<std::string> SlideShow::shownProblems() const {
+  const std::size_t own = lecture.slides.size();
+  const auto put = [this](std::size_t k) { return k < dismissed.size() && dismissed[k]; };
+  std::vector<std::string> shown;
+  if ((current == 0 || !active()) && !put(own)) shown = lecture.problems;
+  if (active() && !put(current))
+    shown.insert(shown.end(), slide().problems.begin(), slide().problems.end());
+  return shown;
+}
+
+void SlideShow::dismiss() {
+  dismissed.resize(lecture.slides.size() + 1, false);
+  if (current == 0 || !active()) dismissed[lecture.slides.size()] = true;
+  if (active()) dismissed[current] = true;
+}
+
+std::size_t SlideShow::goodFrom(std::size_t k) const {
+  while (k < lecture.slides.size() && !lecture.slides[k].good()) ++k;
+  return k;
 }
 
 }  // namespace convexloc::viewer

@@ -8,6 +8,7 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/mesh_reader.hpp"
 #include "logic/scene/presets.hpp"
+#include "logic/teach/scaling_record.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -336,7 +337,17 @@ void Model::reset() {
 // === Why O(1), the split view, the build animation
 
 void Model::applyTeachingViews(const Options& o) {
-  if (o.why) {
+  if (!o.whyFrom.empty()) {
+    ScalingResult recorded;
+    ScalingConfig config;
+    std::string problem;
+    if (readScalingRecord(o.whyFrom, recorded, config, problem)) {
+      whyOpen = true;
+      scaling->show(std::move(config), std::move(recorded));
+    } else {
+      note("why-from: " + problem);
+    }
+  } else if (o.why) {
     whyOpen = true;
     scaling->start(scalingConfig(o.whyMost));
     // a screenshot shows the finished plots

@@ -8,6 +8,7 @@
 #include <initializer_list>
 
 #include "convexloc/intersect3d.hpp"
+#include "convexloc/methods.hpp"
 #include "logic/app/option_values.hpp"
 #include "logic/teach/figures.hpp"
 
@@ -79,6 +80,23 @@ bool applyCell(const Values& v, Options& o, std::string&) {
   return true;
 }
 
+// --method M: a 2D or a 3D method's name
+bool applyMethod(const Values& v, Options& o, std::string& why) {
+  if (parseMethod2D(v[0]) || parseMethod3D(v[0])) {
+    o.method = v[0];
+    return true;
+  }
+  std::vector<std::string_view> names;
+  for (Method2D m : kAllMethods2D) names.push_back(toString(m));
+  for (Method3D m : kAllMethods3D) names.push_back(toString(m));
+  const std::string near = nearestWord(v[0], names);
+  why =
+      "--method needs halfplane, wedge, slab, uniform or polar (2D), halfspace, walk or "
+      "cubemap (3D), not '" +
+      v[0] + "'" + (near.empty() ? "" : " (did you mean " + near + "?)");
+  return false;
+}
+
 // --line X1 Y1 X2 Y2: two different points
 bool applyLine(const Values& v, Options& o, std::string& why) {
   double c[4] = {};
@@ -134,11 +152,7 @@ const OptionSpec kOptions[] = {
     // === Scene
     {"--method", "M", 1, kScene,
      "halfplane | wedge | slab | uniform | polar (2D); halfspace | walk | cubemap (3D)",
-     "a method name", false,
-     [](const Values& v, Options& o, std::string&) {
-       o.method = v[0];
-       return true;
-     }},
+     "a method name", false, applyMethod},
     {"--hull", "", 0, kScene,
      "open a mesh file (.off, .obj, .stl, .ply) as the convex hull of its vertices, its faces "
      "ignored (a mesh whose rounded coordinates left faces not exactly planar)",
@@ -272,8 +286,16 @@ const OptionSpec kOptions[] = {
      "a .lecture file", true, setText<&Options::lecture>},
     {"--export", "DIR", 1, kLectures,
      "with --lecture or --figure: write every slide as DIR/slide-NN.png "
-     "and .svg, and exit",
+     "and DIR/slide-NN.svg (PNG and SVG), and exit; a slide with problems is reported and "
+     "left out, the exit code then 1",
      "a directory", true, setText<&Options::exportDir>},
+    {"--check", "FILE", 1, kLectures,
+     "list every problem of the lecture FILE as FILE:LINE: problem and exit 1 (0 and a "
+     "one-line summary when it has none); needs no display",
+     "a .lecture file", true, setText<&Options::checkFile>},
+    {"--notes", "FILE", 1, kLectures,
+     "print the lecture FILE's speaker notes (slide number, title, notes) and exit",
+     "a .lecture file", true, setText<&Options::notesFile>},
     // === View
     {"--theme", "dark|light", 1, kView, "colours (default dark)", "dark or light", false,
      [](const Values& v, Options& o, std::string&) {
@@ -337,6 +359,19 @@ const OptionSpec kOptions[] = {
      }},
     {"--why-svg", "FILE", 1, kTeaching, "measure without a window, write the plots as SVG and exit",
      "a file name", false, setText<&Options::whySvg>},
+    {"--why-record", "FILE", 1, kTeaching,
+     "measure without a window, write the timings to FILE (text, see docs/viewer.md) and exit",
+     "a file name", true, setText<&Options::whyRecord>},
+    {"--why-from", "FILE", 1, kTeaching,
+     "Why O(1) from timings recorded by --why-record, not measured (a slide that does not "
+     "depend on the machine's load); with --why-svg, the plots of that file",
+     "a file written by --why-record", false,
+     [](const Values& v, Options& o, std::string&) {
+       if (v[0].empty()) return false;
+       o.whyFrom = v[0];
+       o.why = true;
+       return true;
+     }},
     {"--split", "M", 1, kTeaching, "2D: the scene twice, method M in the right half, one camera",
      "a 2D method name", false,
      [](const Values& v, Options& o, std::string&) {

@@ -6,7 +6,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "convexloc/geometry.hpp"
 
@@ -30,5 +33,14 @@ bool parsePoint(std::string_view s, Vec2& out);
 bool parsePoint3(std::string_view s, Vec3& out);
 // a count up to 2^26 written plainly or as 1e6
 bool parseCount(std::string_view s, std::size_t& out);
+
+// The word of `candidates` closest to `word` by edit distance (a letter inserted, dropped,
+// changed or two swapped), when it is close enough to be a typo of it; "" otherwise.
+std::string nearestWord(std::string_view word, std::span<const std::string_view> candidates);
+
+// Which part of an option's values is wrong, for its error: with several values or commas,
+// the first part that is not a number ("'0.5x' is not a number"); otherwise the values
+// themselves ("not 'lots'").
+std::string badPart(const std::vector<std::string>& values);
 
 }  // namespace convexloc::viewer

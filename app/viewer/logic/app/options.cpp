@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "logic/app/option_table.hpp"
+#include "logic/app/option_values.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -32,6 +33,13 @@ std::string needsText(const OptionSpec& s) {
   std::string_view names = s.names;
   names = names.substr(names.rfind(',') == std::string_view::npos ? 0 : names.rfind(',') + 1);
   return std::string(names) + " needs " + s.needs;
+}
+
+// what the row's option needs and which of the values `v` given is wrong
+std::string valueProblem(const OptionSpec& s, const Values& v) {
+  if (v.empty()) return needsText(s);
+  const std::string bad = badPart(v);
+  return needsText(s) + (bad.starts_with("not ") ? ", " + bad : " (" + bad + ")");
 }
 
 // the problem an option's values raise, thrown out of CLI11's parse
@@ -75,7 +83,7 @@ void declare(CLI::App& app, Options& o) {
   for (const OptionSpec& s : optionTable()) {
     const auto run = [&o, &s](const Values& v) {
       std::string why;
-      if (!s.apply(v, o, why)) throw OptionProblem{why.empty() ? needsText(s) : why};
+      if (!s.apply(v, o, why)) throw OptionProblem{why.empty() ? valueProblem(s, v) : why};
       return true;
     };
     CLI::Option* opt = nullptr;
@@ -159,7 +167,8 @@ std::string usageText() {
       "mode), Space new spray, Esc clear the point, F12 screenshot, V (or Shift+F12) SVG, P\n"
       "presentation mode, G legend, Left/Right previous/next step of the placed point's query, R\n"
       "the radius filter on/off (paper-faithful mode); in a lecture PageDown / PageUp next and\n"
-      "previous slide, Home / End first and last.");
+      "previous slide, Home / End first and last, B (or .) blank screen, N speaker notes, D\n"
+      "dismiss a slide's problems. Every key press counts once, in order.");
   return app.help();
 }
 

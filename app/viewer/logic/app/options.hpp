@@ -65,6 +65,8 @@ struct Options {
   std::optional<int> figure;              // --figure N: start from the paper's figure N
   std::string lecture;                    // --lecture FILE: a slide show
   std::string exportDir;                  // --export DIR: every slide (or the figure) as PNG
+  std::string checkFile;                  // --check FILE: list a lecture's problems and exit
+  std::string notesFile;                  // --notes FILE: print a lecture's notes and exit
   bool yGap = false;                      // 2D: mark the smallest y-gap and its slab count
   bool hideSlice = false;                 // 3D: --slice none
   bool cellAuto = false;                  // 3D: --cell auto (a one-face and a crowded cell)
@@ -73,6 +75,8 @@ struct Options {
   bool why = false;                      // open the Why O(1) window and start measuring
   std::string whySvg;                    // measure without a window, write this SVG, exit
   std::size_t whyMost = 1000000;         // the largest N measured
+  std::string whyFrom;                   // Why O(1) from this recorded file, not measured
+  std::string whyRecord;                 // measure without a window, record to this file, exit
   std::optional<std::string> split;      // 2D: this method beside the current one
   std::optional<std::size_t> buildStep;  // 2D: the build animation at this step
   // a lecture's slide with the panels shown (a table to read); excludes --hide-ui, --present

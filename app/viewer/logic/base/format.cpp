@@ -49,6 +49,10 @@ std::string numbered(std::string_view prefix, std::uint64_t n) {
   return out;
 }
 
+std::string sortedY(std::size_t rank) {
+  return "y(" + std::to_string(rank) + ")";
+}
+
 std::string nsText(double ns) {
   char buf[32];
   if (ns >= 100.0)

@@ -17,6 +17,9 @@ namespace convexloc::viewer {
 std::string approx(double v, int digits = 4);
 // `prefix` followed by `n` ("e7", "octant 3")
 std::string numbered(std::string_view prefix, std::uint64_t n);
+// "y(3)": the slab method's 4th smallest distinct vertex y (from y(0)), named so that it does
+// not read as vertex 3's
+std::string sortedY(std::size_t rank);
 // a time in nanoseconds, to 3 digits without an exponent ("6810", "154", "12.3", "4.07")
 std::string nsText(double ns);
 // " +", " 0" or " -" (the sign of a predicate, for labels)

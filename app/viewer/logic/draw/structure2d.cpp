@@ -236,6 +236,14 @@ void radiiCircles(const Trace2D& t, const Palette& pal, bool current, bool label
   }
 }
 
+// the step number (from 1) of each ray test, in the order of the trace's rays
+std::vector<std::size_t> rayStepNumbers(const StepModel& m) {
+  std::vector<std::size_t> numbers;
+  for (std::size_t i = 0; i < m.steps.size(); ++i)
+    if (m.steps[i].focus == StepFocus::Ray) numbers.push_back(i + 1);
+  return numbers;
+}
+
 // the placed point and its trace: the cell chosen, the rays and edges tested by sign
 void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
                 const View2DOptions& opt, DrawList& out) {
@@ -257,14 +265,18 @@ void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
   // the ray from the apex (polar centre, wedge vertex 0) to the point
   if (t.method == Method2D::Polar || t.method == Method2D::Wedge)
     out.segment(at2(toGlm(t.apex)), at2(x), pal.text, 1.25f, 5.0f);
-  // rays tested by bisection: from the apex through a vertex, coloured by the sign
+  // rays tested by bisection: from the apex through a vertex, coloured by the sign, each
+  // numbered as the Steps window numbers its test
+  const bool rayLabels = opt.showLabels && t.rays.size() <= 24;
+  const std::vector<std::size_t> rayStep =
+      rayLabels ? rayStepNumbers(buildSteps(t, probe.point, poly)) : std::vector<std::size_t>{};
   for (std::size_t k = 0; k < t.rays.size(); ++k) {
     const RayTest r = t.rays[k];
     if (r.vertex >= n) continue;
     const glm::dvec2 a = toGlm(t.apex), v = toGlm(poly.vertex(r.vertex));
     out.segment(at2(a), at2(a + 1.08 * (v - a)), withAlpha(signColour(pal, r.sign), 0.9f), 2.0f);
-    if (opt.showLabels && t.rays.size() <= 24)
-      out.label(at2(a + 1.08 * (v - a)), std::to_string(k + 1) + signText(r.sign),
+    if (rayLabels && k < rayStep.size())
+      out.label(at2(a + 1.08 * (v - a)), std::to_string(rayStep[k]) + signText(r.sign),
                 signColour(pal, r.sign), {0.0f, -10.0f});
   }
   // edges tested, coloured by the sign
@@ -322,10 +334,7 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
   const float w = current ? 2.5f : 1.25f;
   d.out.segment(at2(c), at2(toGlm(cells[octant * q].hitLo)), colour, w);
   d.out.segment(at2(c), at2(toGlm(cells[octant * q + q - 1].hitHi)), colour, w);
-  if (current && d.opt.showLabels)
-    d.out.label(
-        at2(0.5 * (toGlm(cells[octant * q].hitLo) + toGlm(cells[octant * q + q - 1].hitHi))),
-        numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
+  // the octant's number is the structure's own label (polarRays): not written a second time
 }
 
 // polar: the cell's two radii around the centre
@@ -364,12 +373,12 @@ void drawStep(const StepDraw& d, const Step& s, bool current, std::size_t number
     case StepFocus::Search:
       for (const SlabProbe& p : d.t.probes)
         if (p.rank == s.item)
-          probeLine(d, p.y, hi, current ? 2.5f : 1.25f, current ? numbered("y", p.rank) : "");
-      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+          probeLine(d, p.y, hi, current ? 2.5f : 1.25f, current ? sortedY(p.rank) : "");
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "x.y");
       break;
     case StepFocus::Index:
       stepCell(d, s.item, current);
-      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "p.y");
+      if (current) probeLine(d, d.point.y, withAlpha(d.pal.text, 0.8f), 1.0f, "x.y");
       break;
     case StepFocus::Octant: stepOctant(d, static_cast<int>(s.item), current); break;
     case StepFocus::Cell: stepCell(d, s.item, current); break;
@@ -397,7 +406,7 @@ void probeSteps(const Scene2D& scene, const Probe& probe, const Palette& pal,
   out.marker(at2(x), pal.rim, 17.0f, MarkerShape::Disc);
   out.marker(at2(x), colour, 13.0f, MarkerShape::Disc);
   if (opt.showLabels)
-    out.label(at2(x), done ? std::string(toString(t.result)) : "p",
+    out.label(at2(x), done ? std::string(toString(t.result)) : "x",
               done ? textColourOf(pal, t.result) : pal.text, {12.0f, 12.0f});
 }
 

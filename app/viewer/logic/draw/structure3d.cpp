@@ -142,7 +142,7 @@ void probeSteps3D(const Scene3D& scene, const Probe3D& probe, const Palette& pal
   out.marker(x, pal.rim, 17.0f, MarkerShape::Disc);
   out.marker(x, done ? colourOf(pal, t.result) : pal.text, 13.0f, MarkerShape::Disc);
   if (opt.showLabels)
-    out.label(x, done ? std::string(toString(t.result)) : "p",
+    out.label(x, done ? std::string(toString(t.result)) : "x",
               done ? textColourOf(pal, t.result) : pal.text, {12.0f, 12.0f});
 }
 

@@ -125,7 +125,7 @@ std::string rayCaption(const RayTest& r, const char* apex) {
 
 void halfplaneSteps(const Trace2D& t, StepModel& m) {
   everyTestSteps(t.edges, t.result, StepFocus::Edge, "edge e = 0 .. n-1",
-                 "orient2d(v[e], v[e+1], p)", m);
+                 "orient2d(v[e], v[e+1], x)", m);
 }
 
 // the fan from vertex 0 (wedge, and polar without a cell): the outer rays, the bisection,
@@ -139,9 +139,9 @@ void fanSteps(const Trace2D& t, StepList& l, int first) {
 
 void wedgeSteps(const Trace2D& t, const ConvexPolygon& poly, StepModel& m) {
   m.code = {"o = v[0]: the fan of rays o->v[i]",
-            "if p is clockwise of o->v[1] or ccw of o->v[n-1]: OUTSIDE",
+            "if x is clockwise of o->v[1] or ccw of o->v[n-1]: OUTSIDE",
             "bisect: the side of ray o->v[mid] keeps [lo,mid] or [mid,hi]",
-            "s = orient2d(v[lo], v[lo+1], p): one edge decides"};
+            "s = orient2d(v[lo], v[lo+1], x): one edge decides"};
   StepList l{m};
   l.add("fan from v0 = " + compact(poly.vertex(0)), 0);
   fanSteps(t, l, 1);
@@ -157,28 +157,28 @@ bool outsideTheBox(const Trace2D& t, StepList& l) {
 }
 
 void slabSteps(const Trace2D& t, StepModel& m) {
-  m.code = {"if p is outside the bounding box: OUTSIDE",
-            "binary search of p.y among the vertices' distinct y",
+  m.code = {"if x is outside the bounding box: OUTSIDE",
+            "binary search of x.y among the sorted vertex y: y(0) < y(1) < ...",
             "slab s: its two edges, rising and falling", "s = orient2d for each of the two edges",
             "OUTSIDE if one s < 0, else BOUNDARY if one s = 0, else INSIDE"};
   StepList l{m};
   if (outsideTheBox(t, l)) return;
   for (std::size_t k = 0; k < t.probes.size(); ++k) {
     const SlabProbe& p = t.probes[k];
-    l.add("probe " + std::to_string(k + 1) + ": y" + std::to_string(p.rank) + " = " + compact(p.y) +
-              (p.above ? " <= p.y: go up" : " > p.y: go down"),
+    l.add("probe " + std::to_string(k + 1) + ": " + sortedY(p.rank) + " = " + compact(p.y) +
+              (p.above ? " <= x.y: go up" : " > x.y: go down"),
           1, StepFocus::Search, p.rank);
   }
-  l.add("slab " + std::to_string(t.cell) + " (between y" + std::to_string(t.cell) + " and y" +
-            std::to_string(t.cell + 1) + ")",
+  l.add("slab " + std::to_string(t.cell) + " (between " + sortedY(t.cell) + " and " +
+            sortedY(t.cell + 1) + ")",
         2, StepFocus::Cell, t.cell);
   testSteps(t.edges, l, 3, StepFocus::Edge);
   l.result(t.result, 4);
 }
 
 void uniformSteps(const Trace2D& t, double y, StepModel& m) {
-  m.code = {"if p is outside the bounding box: OUTSIDE",
-            "slab = floor((p.y - ymin) / dy)   (eq. 4)",
+  m.code = {"if x is outside the bounding box: OUTSIDE",
+            "slab = floor((x.y - ymin) / dy)   (eq. 4)",
             "test the edges the slab lists (bisection where crowded)",
             "OUTSIDE if one s < 0, else BOUNDARY if one s = 0, else INSIDE"};
   StepList l{m};
@@ -197,7 +197,7 @@ void uniformSteps(const Trace2D& t, double y, StepModel& m) {
 // the polar cell's steps: octant, ratio, radii, the edges
 void polarCellSteps(const Trace2D& t, StepList& l) {
   const PolarIndexTrace& n = t.polar;
-  l.add("octant " + std::to_string(t.octant) + ": d = p - x_T = " + compact(n.direction), 0,
+  l.add("octant " + std::to_string(t.octant) + ": d = x - x_T = " + compact(n.direction), 0,
         StepFocus::Octant, t.octant);
   l.add(std::string("ratio ") + (n.steep ? "|dx|/|dy|" : "|dy|/|dx|") + " = " + compact(n.ratio) +
             ": k = floor(" + std::to_string(n.slabs) + "*" + compact(n.ratio) +
@@ -210,7 +210,7 @@ void polarCellSteps(const Trace2D& t, StepList& l) {
 
 void polarSteps(const Trace2D& t, StepModel& m) {
   filteredCode(t.radiusFilter,
-               {"d = p - x_T; octant from the signs of dx, dy and |dx| < |dy|",
+               {"d = x - x_T; octant from the signs of dx, dy and |dx| < |dy|",
                 "k = floor(q * min(|dx|,|dy|) / max(|dx|,|dy|)): slab k of the octant",
                 "radius filter: |d| < r_in: INSIDE; |d| > r_out: OUTSIDE",
                 "test the cell's edges (bisection where crowded)",
@@ -238,7 +238,7 @@ void polarSteps(const Trace2D& t, StepModel& m) {
 void walkSteps(const Trace3D& t, StepList& l, int line) {
   for (const WalkTest& w : t.steps) {
     l.test("face " + std::to_string(w.face) + ", edge " + std::to_string(w.edge) +
-               ": orient3d(x_T,a,b,p) = " + signWord(w.sign) +
+               ": orient3d(x_T,a,b,x) = " + signWord(w.sign) +
                (w.sign > 0 ? " (cross)" : " (stay)"),
            line, StepFocus::Walk, w.face, w.sign);
     l.m.steps.back().sub = w.edge;
@@ -246,15 +246,15 @@ void walkSteps(const Trace3D& t, StepList& l, int line) {
 }
 
 void halfspaceSteps(const Trace3D& t, StepModel& m) {
-  everyTestSteps(t.faces, t.result, StepFocus::Face, "face f = (a, b, c)", "orient3d(a, b, c, p)",
+  everyTestSteps(t.faces, t.result, StepFocus::Face, "face f = (a, b, c)", "orient3d(a, b, c, x)",
                  m);
 }
 
 void walkMethodSteps(const Trace3D& t, double scale, StepModel& m) {
   m.code = linesOf(
-      "start at the face whose direction from x_T is nearest p's\n"
-      "cross an edge (a, b) while orient3d(x_T, a, b, p) > 0\n"
-      "at the face p's ray leaves by: s = orient3d(a, b, c, p)\n"
+      "start at the face whose direction from x_T is nearest x's\n"
+      "cross an edge (a, b) while orient3d(x_T, a, b, x) > 0\n"
+      "at the face x's ray leaves by: s = orient3d(a, b, c, x)\n"
       "OUTSIDE if s < 0, BOUNDARY if s = 0, else INSIDE");
   StepList l{m};
   if (t.centre) l.add("centre x_T = " + compact(*t.centre, scale), 0);
@@ -266,7 +266,7 @@ void walkMethodSteps(const Trace3D& t, double scale, StepModel& m) {
 
 // the cube map's cell: the cube face, (s, t), the cell, the radii
 void cubeCellSteps(const Trace3D& t, double scale, StepList& l) {
-  l.add("d = p - x_T = " + compact(t.direction, scale) + ": cube face " +
+  l.add("d = x - x_T = " + compact(t.direction, scale) + ": cube face " +
             std::string(kCubeFaceNames[static_cast<std::size_t>(t.cubeFace)]),
         0, StepFocus::Octant, t.cubeFace);
   std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}) + " -> cell (" + std::to_string(t.cellI) +
@@ -279,7 +279,7 @@ void cubeCellSteps(const Trace3D& t, double scale, StepList& l) {
 
 void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
   filteredCode(t.radiusFilter,
-               {"d = p - x_T; cube face: the largest |d_i| and its sign",
+               {"d = x - x_T; cube face: the largest |d_i| and its sign",
                 "(s,t) = (d_u, d_v) / |d_major|; cell = floor((s+1)/2 * n)",
                 "radius filter: |d| < r_in: INSIDE; |d| > r_out: OUTSIDE",
                 "test the cell's faces (a walk, or a zone's bisection, where crowded)",
@@ -297,7 +297,7 @@ void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
   if (!t.zoneSteps.empty())
     l.add("the cell lies over a zone of thin faces: bisection over its edges' planes", 3);
   for (const ZoneTest& z : t.zoneSteps)
-    l.add("zone edge " + std::to_string(z.edge) + ": orient3d(x_T, a, b, p) = " + signWord(z.sign),
+    l.add("zone edge " + std::to_string(z.edge) + ": orient3d(x_T, a, b, x) = " + signWord(z.sign),
           3);
   walkSteps(t, l, 3);
   testSteps(t.faces, l, 3, StepFocus::Face);

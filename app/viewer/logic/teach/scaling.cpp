@@ -9,6 +9,7 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/timing.hpp"
 #include "logic/base/format.hpp"
+#include "logic/draw/y_gap.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -154,7 +155,7 @@ MemorySample measureMemory(double gap) {
   MemorySample s;
   s.gap = g.gap;
   s.paperSlabs = std::ceil(g.span / g.gap);
-  s.paperBytes = s.paperSlabs * kPaperSlabBytes;
+  s.paperBytes = s.paperSlabs * kPaperBytesPerSlab;
   s.uniformBytes = Locator2D(polygon, Method2D::Uniform).stats().bytes;
   s.polarBytes = Locator2D(polygon, Method2D::Polar).stats().bytes;
   return s;
@@ -188,6 +189,17 @@ void ScalingWorker::start(ScalingConfig config) {
     run();
     running_ = false;
   });
+}
+
+void ScalingWorker::show(ScalingConfig config, ScalingResult result) {
+  cancel();
+  config_ = std::move(config);
+  const std::lock_guard lock(mutex_);
+  progress_ = {};
+  progress_.result = std::move(result);
+  progress_.finished = true;
+  progress_.done = progress_.total = 1;
+  progress_.current = "recorded timings, not measured here";
 }
 
 void ScalingWorker::cancel() {

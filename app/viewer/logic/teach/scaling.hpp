@@ -69,12 +69,9 @@ using ScalingSeries3D = SeriesOf<Method3D>;
 struct MemorySample {
   double gap = 0.0;         // the polygon's smallest positive difference of vertex y
   double paperSlabs = 0.0;  // (ymax - ymin) / gap
-  double paperBytes = 0.0;  // paperSlabs * kPaperSlabBytes
+  double paperBytes = 0.0;  // paperSlabs * kPaperBytesPerSlab (logic/draw/y_gap.hpp)
   std::size_t uniformBytes = 0, polarBytes = 0;  // convexloc's, at core's resolution
 };
-
-// what the paper's slab costs at the least: its offset and its two active edges (4 B each)
-inline constexpr double kPaperSlabBytes = 12.0;
 
 struct ScalingResult {
   std::vector<ScalingSeries> series;      // one per 2D method, in kAllMethods2D order
@@ -112,6 +109,8 @@ class ScalingWorker {
   ~ScalingWorker();
   // starts a run (a running one is cancelled first)
   void start(ScalingConfig config);
+  // a finished run's results, recorded earlier, shown as if just measured
+  void show(ScalingConfig config, ScalingResult result);
   // asks the run to stop and waits for it
   void cancel();
   // waits for the run to end

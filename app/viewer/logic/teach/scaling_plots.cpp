@@ -133,7 +133,7 @@ PlotDrawing summaryDrawing(const ScalingResult& r, const ScalingConfig& c, Scree
     const MemorySample& m = r.memory.back();
     y += 0.5 * st.fontPx;
     line("smallest gap " + approx(m.gap, 2) + ": the paper's slabs take " +
-             approx(m.paperBytes / 1e9, 3) + " GB,",
+             binarySize(m.paperBytes) + ",",
          st.text);
     line("convexloc's polar " + binarySize(m.polarBytes) + ", uniform " +
              binarySize(m.uniformBytes) + " (bounded by O(N))",
@@ -203,7 +203,7 @@ LogPlot memoryPlot(const ScalingResult& r) {
     polar.points.push_back({m.gap, static_cast<double>(m.polarBytes)});
   }
   p.series = {paper, uniform, polar};
-  p.notes.push_back("paper: 12 B per slab (offset + 2 edges)");
+  p.notes.push_back("paper: 8 B per slab (its 2 edges, 4 B each)");
   return p;
 }
 

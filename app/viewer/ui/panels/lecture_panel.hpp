@@ -29,8 +29,25 @@ void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k);
 // the next, previous, first or last slide, for the key actions
 void moveSlide(ActionKind kind, Model& model, UiState& ui);
 
-// the slide card: "3 / 14: title" and the caption, over the scene's upper left corner
+// The slide card: "3 / 14: title" and the caption, over the scene's upper left corner; the
+// slide's problems over the scene until dismissed; the speaker notes' window where open.
 void slideCard(Model& model, UiState& ui, ScreenRect area);
+
+// the slide's speaker notes on stdout (a terminal on the lecturer's screen), where it has any
+void printNotes(const SlideShow& show);
+
+// the problems shown over the current slide (a bordered box mid-scene) with a Dismiss button
+void problemsBox(SlideShow& show, ScreenRect area);
+
+// the speaker notes' window (movable; N shows and hides it): the slide, its notes, the next
+void notesWindow(const SlideShow& show, bool& open);
+
+// the speaker notes filling their own window (platform/notes_window.hpp): the slide, its
+// notes, the next slide's title
+void notesContents(const SlideShow& show);
+
+// the whole window black while the show is blanked (B)
+void blankIfAsked(const SlideShow& show);
 
 // the Lecture panel in the left window: the slides and the paper's figures
 void lecturePanel(Model& model, UiState& ui);

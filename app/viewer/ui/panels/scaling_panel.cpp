@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "logic/base/format.hpp"
+#include "logic/teach/scaling_record.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -138,8 +139,8 @@ void scalingWindow(Model& model, UiState& ui) {
   const std::string what = p.running          ? "measuring " + p.current
                            : p.cancelled      ? "cancelled"
                            : !p.error.empty() ? p.error
-                           : p.finished       ? "done"
-                                              : "press Measure";
+                           : p.finished ? (p.current.starts_with("recorded") ? p.current : "done")
+                                        : "press Measure";
   // the progress on the controls' row where it has room, so that the plots get the height
   if (ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x >
       ImGui::GetFontSize() * 12.0f)
@@ -162,27 +163,48 @@ void scalingWindow(Model& model, UiState& ui) {
   if (!model.whyOpen) model.scaling->cancel();
 }
 
-int measureToSvg(const Options& options) {
+namespace {
+
+// the measurement --why-svg and --why-record write: --why-from's record, else measured now
+bool measureOrRead(const Options& options, ScalingResult& r, ScalingConfig& c, std::string& error) {
+  if (!options.whyFrom.empty()) return readScalingRecord(options.whyFrom, r, c, error);
   ScalingWorker worker;
-  const ScalingConfig c = scalingConfig(options.whyMost);
+  c = scalingConfig(options.whyMost);
   worker.start(c);
   worker.wait();
-  const ScalingProgress p = worker.snapshot();
-  if (!p.error.empty()) {
-    std::cerr << "convexloc-viewer: " << p.error << "\n";
+  ScalingProgress p = worker.snapshot();
+  error = p.error;
+  r = std::move(p.result);
+  return error.empty();
+}
+
+}  // namespace
+
+int measureToSvg(const Options& options) {
+  ScalingResult r;
+  ScalingConfig c;
+  std::string error;
+  if (!measureOrRead(options, r, c, error)) {
+    std::cerr << "convexloc-viewer: " << error << "\n";
     return 1;
   }
-  std::string error;
+  if (!options.whyRecord.empty()) {
+    if (!writeScalingRecord(options.whyRecord, r, c, error)) {
+      std::cerr << "convexloc-viewer: " << error << "\n";
+      return 1;
+    }
+    std::cout << "convexloc-viewer: recorded " << options.whyRecord << "\n";
+  }
+  if (options.whySvg.empty()) return 0;
   const std::string solid = solidSvgPath(options.whySvg);
-  if (!writeScalingSvg(options.whySvg, p.result, c, options.theme, error) ||
-      !writeScalingSvg(solid, p.result, c, options.theme, error, true)) {
+  if (!writeScalingSvg(options.whySvg, r, c, options.theme, error) ||
+      !writeScalingSvg(solid, r, c, options.theme, error, true)) {
     std::cerr << "convexloc-viewer: " << error << "\n";
     return 1;
   }
   std::cout << "convexloc-viewer: wrote " << options.whySvg << " (N = 8 .. "
             << grouped(c.sizes.back()) << ") and " << solid << " (F = 20 .. "
-            << grouped(c.faces.empty() ? 0 : c.faces.back()) << "), " << p.done
-            << " measurements\n";
+            << grouped(c.faces.empty() ? 0 : c.faces.back()) << ")\n";
   return 0;
 }
 

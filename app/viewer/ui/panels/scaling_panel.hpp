@@ -13,7 +13,8 @@ namespace convexloc::viewer {
 // the Why O(1) window, while model.whyOpen
 void scalingWindow(Model& model, UiState& ui);
 
-// --why-svg: measures in this thread, writes the SVG, says so; the exit code (0, or 1)
+// --why-svg and --why-record: measures in this thread (or reads --why-from), writes the SVG
+// and the record asked for, says so; the exit code (0, or 1)
 int measureToSvg(const Options& options);
 
 }  // namespace convexloc::viewer
