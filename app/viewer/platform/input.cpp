@@ -45,6 +45,11 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
     {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
     {GLFW_KEY_G, ActionKind::ToggleLegend},
+    // the text zoom: + (= unshifted) and -, on the main keys and the keypad
+    {GLFW_KEY_EQUAL, ActionKind::TextLarger},
+    {GLFW_KEY_KP_ADD, ActionKind::TextLarger},
+    {GLFW_KEY_MINUS, ActionKind::TextSmaller},
+    {GLFW_KEY_KP_SUBTRACT, ActionKind::TextSmaller},
 };
 // a lecture's keys: what a presentation clicker sends
 constexpr KeyBinding kSlideKeys[] = {

@@ -18,10 +18,8 @@ namespace {
 // the labels of `lists` over the scene, placed as the SVG places them: no two overlap, none
 // sits on a marker
 void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& project,
-                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows) {
-  const glm::dvec2 vp =
-      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
-  const ScreenRect area = sceneArea(model, vp);
+                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows,
+                 ScreenRect area) {
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
@@ -58,15 +56,22 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   std::vector<PixelBox> windows;
   for (const float* w : {ui.legendRect, ui.stepsRect})
     if (w[2] > w[0]) windows.push_back({{w[0], w[1]}, {w[2], w[3]}});
+  // and the slide's card and caption, and the split view's headings
+  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.splitHeadings[0],
+                              ui.splitHeadings[1]})
+    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) windows.push_back({r.lo, r.hi});
+  const glm::dvec2 vp =
+      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  const ScreenRect area = sceneArea(model, ui, vp);
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   if (!split) {
-    writeLabels(model, dl, sceneProjection(model), lists, windows);
+    writeLabels(model, dl, sceneProjection(model), lists, windows, area);
     return;
   }
   // each half's labels, clipped to it, the right half's through its own camera
   pushClip(dl, model.split.left());
-  writeLabels(model, dl, sceneProjection(model), lists, windows);
+  writeLabels(model, dl, sceneProjection(model), lists, windows, area);
   dl->PopClipRect();
   pushClip(dl, model.split.right());
   const Camera2D right = model.split.rightCamera(model.camera2d);
@@ -76,7 +81,7 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
       [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
         return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
       },
-      rightLists, windows);
+      rightLists, windows, area);
   dl->PopClipRect();
   splitDecorations(model);
 }

@@ -127,22 +127,27 @@ void loadFont(float pixels, bool recreateTexture) {
 }
 
 StyleKeeper::StyleKeeper(const Settings& settings, float dpi)
-    : dpi_(dpi), theme_(settings.theme), scale_(settings.fontScale) {
-  loadFont(kBaseFontPixels * settings.fontScale * dpi_, false);
+    : dpi_(dpi), theme_(settings.theme), scale_(settings.uiScale()) {
+  loadFont(kBaseFontPixels * scale_ * dpi_, false);
   ImGui::GetIO().FontGlobalScale = 1.0f / dpi_;
   applyStyle(theme_, scale_);
 }
 
 bool StyleKeeper::update(Settings& settings, float& pendingFontScale) {
-  const bool resized = pendingFontScale > 0.0f && pendingFontScale != settings.fontScale;
   if (pendingFontScale > 0.0f) {
     settings.fontScale = pendingFontScale;
     pendingFontScale = 0.0f;
-    loadFont(kBaseFontPixels * settings.fontScale * dpi_, true);
   }
-  if (theme_ == settings.theme && scale_ == settings.fontScale) return resized;
+  const float scale = settings.uiScale();
+  // the atlas is made again at the text's new pixel size (crisp, not a scaled bitmap); a
+  // change under half a percent (a window dragged by a pixel) keeps the one there is
+  const bool resized = std::abs(scale - scale_) > 0.005f * scale_;
+  if (!resized && theme_ == settings.theme) return false;
+  if (resized) {
+    scale_ = scale;
+    loadFont(kBaseFontPixels * scale_ * dpi_, true);
+  }
   theme_ = settings.theme;
-  scale_ = settings.fontScale;
   applyStyle(theme_, scale_);
   return resized;
 }

@@ -5,6 +5,7 @@
 
 #include "logic/app/legend.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 #include "writers/svg_writer.hpp"
 
@@ -59,10 +60,45 @@ void scene3d(const Model& model, const SceneView& view, SvgScene& s) {
   sprayOf(model.scene3d(), model, view, s);
 }
 
+// the slide's layout and the Steps window's colours, as the window draws them
+void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  const glm::dvec2 window = s.size;
+  s.layout = ui.layout;
+  s.page = pageOf(model, ui, window).page;
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  s.panel = {bg.x, bg.y, bg.z, 0.9f};
+  s.rounding = ImGui::GetStyle().WindowRounding;
+  const SlideMetrics m = windowMetrics();
+  s.layoutPadding = m.padding;
+  s.layoutSpacing = m.spacing;
+  s.highlight = pal.hoverEdge;
+  // the Why O(1) window, its plots as the window draws them
+  const UiState::WhyPlots& why = ui.whyPlots;
+  if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
+    s.window = ui.whyWindow;
+    s.windowTitle = "Why O(1): cost against N";
+    if (why.fontPx > 0.0) {
+      const ScalingProgress p = model.scaling->snapshot();
+      const PlotStyle style = plotStyle(model.settings.theme, why.fontPx);
+      s.windowSvg = svgPlots(
+          scalingDrawings(p.result, model.scaling->config(), style, why.rect.size(), why.solid),
+          why.rect.lo, why.fontPx);
+    }
+  }
+  s.step = model.step();
+  if (const std::optional<StepModel> steps = model.steps(); steps && ui.layout.steps) {
+    const Location result = model.dim == Dim::Two ? model.scene2d.probe()->trace.result
+                                                  : model.scene3d().probe()->trace.result;
+    for (const Step& st : steps->steps)
+      s.stepColours.push_back(stepColour(st, pal, textColourOf(pal, result)));
+  }
+}
+
 }  // namespace
 
-bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
-                   std::string& error) {
+bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
+                   const std::string& path, std::string& error) {
   const Palette& pal = paletteFor(model.settings.theme);
   SvgScene s;
   s.size = model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
@@ -74,14 +110,14 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const std::string&
   s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
   s.project = sceneProjection(model);
-  const ScreenRect area = sceneArea(model, s.size);
+  const ScreenRect area = sceneArea(model, ui, s.size);
   s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
-  s.caption = model.settings.caption;
-  // the legend in the scene's lower right corner, above the caption
   s.textMuted = pal.textMuted;
-  if (model.settings.showLegend) {
+  slideBoxes(model, ui, s);
+  // the legend where the window put it: the layout's corner, or where it was dragged
+  if (model.settings.showLegend && ui.legendRect[2] > ui.legendRect[0]) {
     s.legend = legendOf(model);
-    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0);  // the caption's lines push it up
+    s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, s);

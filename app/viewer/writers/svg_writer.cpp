@@ -9,33 +9,13 @@
 #include <fstream>
 
 #include "logic/base/format.hpp"
+#include "writers/svg_slide.hpp"
 
 namespace convexloc::viewer {
 namespace {
 
-// a number for an attribute: two decimals are a hundredth of a pixel
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", std::abs(v) < 5e-3 ? 0.0 : v);
-  return buf;
-}
-
-// "#rrggbb"
-std::string rgb(Rgba c) {
-  auto byte = [](float x) {
-    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255));
-  };
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
-  return buf;
-}
-
-// ` NAME="#rrggbb"`, and its opacity when not opaque
-std::string paint(const char* name, Rgba c) {
-  std::string s = std::string(" ") + name + "=\"" + rgb(c) + "\"";
-  if (c.a < 0.999f) s += std::string(" ") + name + "-opacity=\"" + num(c.a) + "\"";
-  return s;
-}
+using svg::num;
+using svg::paint;
 
 // one element of the picture and the depth it is sorted by (3D)
 struct Item {
@@ -295,48 +275,14 @@ void writeLabels(const SvgScene& s, std::string& out) {
   out += "</g>\n";
 }
 
-// the caption's font size in pixels: ImGui's caption box draws at 1.5 times the window's font,
-// which in SVG ems (see SvgScene::fontPixels) is about 1.6 times fontPixels
-double captionPixels(const SvgScene& s) {
-  return 1.6 * s.fontPixels;
-}
-
-// the caption's lines as the window breaks them (text_layout's captionLines), measured at
-// the caption's size
-std::vector<std::string> captionOf(const SvgScene& s) {
-  if (s.caption.empty()) return {};
-  const double px = captionPixels(s);
-  const double width = s.labelArea.empty() ? s.size.x : s.labelArea.hi.x - s.labelArea.lo.x;
-  return captionLines(s.caption, width, 0.5 * px,
-                      [&](std::string_view t) { return s.measure(t) * 1.6; });
-}
-
-// the height the caption's lines take at the bottom (0 without a caption)
-double captionHeight(const SvgScene& s, std::size_t lines) {
-  return lines == 0 ? 0.0 : (1.25 * static_cast<double>(lines) + 0.875) * captionPixels(s);
-}
-
-// the thinning note and the caption, along the bottom
-void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride,
-                const std::vector<std::string>& caption) {
-  if (stride > 1) {
-    const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
-                             " of " + grouped(visible) + " drawn";
-    out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
-           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
-           "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
-  }
-  // under the middle of the scene area, as the window's caption box, the last line lowest
-  const double px = captionPixels(s);
-  const double x =
-      s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
-  for (std::size_t k = 0; k < caption.size(); ++k) {
-    const double y = s.size.y - 1.2 * px - 1.25 * px * static_cast<double>(caption.size() - 1 - k);
-    out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(y) +
-           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
-           "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(caption[k]) +
-           "</text>\n";
-  }
+// the thinning note along the bottom
+void writeNote(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride) {
+  if (stride <= 1) return;
+  const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
+                           " of " + grouped(visible) + " drawn";
+  out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
+         "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
+         "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
 }
 
 // a legend row's swatch, `h` high, its left edge at x and its middle at y
@@ -367,9 +313,11 @@ std::string legendText(double x, double y, std::string_view text, Rgba c, bool e
 }
 
 // the legend as the window shows it: title, class rows in columns, a row per mark
-void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
+void writeLegend(const SvgScene& s, std::string& out) {
   const Legend& g = *s.legend;
-  const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
+  // the window's rows: a body line and a spacing each, inside its padding
+  const double f = s.fontPixels, line = 1.164 * f + s.layoutSpacing, pad = s.layoutPadding;
+  const double sw = 0.7 * f + 0.5 * f;
   auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
   double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
   for (const LegendRow& r : g.classes) {
@@ -382,7 +330,7 @@ void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
   const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
   const double w = std::max({heading, classes, rows}) + 2.0 * pad;
   const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
-  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h + captionHigh);
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
          "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
          "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
@@ -421,9 +369,10 @@ std::string sceneSvg(const SvgScene& s) {
   std::size_t visible = 0, stride = 1;
   writeScene(s, out, visible, stride);
   writeLabels(s, out);
-  const std::vector<std::string> caption = captionOf(s);
-  writeNotes(s, out, visible, stride, caption);
-  if (s.legend) writeLegend(s, out, captionHeight(s, caption.size()));
+  writeNote(s, out, visible, stride);
+  writeLetterbox(s, out);
+  writeSlideBoxes(s, out);
+  if (s.legend) writeLegend(s, out);
   out += "</svg>\n";
   return out;
 }

@@ -20,6 +20,7 @@
 #include "logic/base/colour.hpp"
 #include "logic/base/draw_list.hpp"
 #include "logic/base/xml.hpp"
+#include "logic/teach/slide_layout.hpp"
 #include "logic/view/scene_labels.hpp"
 
 namespace convexloc::viewer {
@@ -53,9 +54,23 @@ struct SvgScene {
   // stroked: the picture itself comes from the draw lists)
   std::vector<std::vector<glm::dvec3>> cells;
   std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
-  std::string caption;  // written large at the bottom when not empty, in the window's lines
-  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels), or
-  // above the caption where there is one
+  // the slide's boxes (logic/teach/slide_layout), in window pixels: the title card, the
+  // caption, the Steps window written where the window draws them (writers/svg_slide)
+  SlideLayout layout;
+  ScreenRect page;  // a slide's letterboxed page: bars beside it (empty: none)
+  Rgba panel;       // the boxes' fill (the window's)
+  double rounding = 6.0;
+  double layoutPadding = 12.0, layoutSpacing = 6.0;  // the layout's metrics (SlideMetrics)
+  // the Steps window's colours: each step's line, the current step's highlight and line
+  std::vector<Rgba> stepColours;
+  Rgba highlight;
+  int step = -1;  // the step shown (-1: all)
+  // a window over the scene written as it is drawn: its box, opaque, and its SVG inside
+  // (the Why O(1) plots); empty: none
+  ScreenRect window;
+  std::string windowTitle;
+  std::string windowSvg;
+  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
   PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
