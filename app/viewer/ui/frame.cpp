@@ -163,6 +163,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
   model.split.setArea(halves ? area : ScreenRect{});
   if (model.split.enabled() && halves) model.split.sync(model.scene2d);
+  splitHeadings(model, ui);
   advanceBuild(model, io.DeltaTime);
   scalingWindow(model, ui);
 }

@@ -50,16 +50,19 @@ void pushClip(ImDrawList* dl, const ScreenRect& r) {
 
 }  // namespace
 
+std::vector<PixelBox> labelKeepOffs(const UiState& ui) {
+  std::vector<PixelBox> boxes;
+  for (const float* w : {ui.legendRect, ui.stepsRect})
+    if (w[2] > w[0]) boxes.push_back({{w[0], w[1]}, {w[2], w[3]}});
+  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box,
+                              ui.splitHeadings[0].box, ui.splitHeadings[1].box})
+    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) boxes.push_back({r.lo, r.hi});
+  return boxes;
+}
+
 void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  // the windows floating over the scene, which labels keep off where they can
-  std::vector<PixelBox> windows;
-  for (const float* w : {ui.legendRect, ui.stepsRect})
-    if (w[2] > w[0]) windows.push_back({{w[0], w[1]}, {w[2], w[3]}});
-  // and the slide's card and caption, and the split view's headings
-  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.splitHeadings[0],
-                              ui.splitHeadings[1]})
-    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) windows.push_back({r.lo, r.hi});
+  const std::vector<PixelBox> windows = labelKeepOffs(ui);
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
   const ScreenRect area = sceneArea(model, ui, vp);
@@ -83,7 +86,7 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
       },
       rightLists, windows, area);
   dl->PopClipRect();
-  splitDecorations(model);
+  splitDecorations(model, ui);
 }
 
 }  // namespace convexloc::viewer

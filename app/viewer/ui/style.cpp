@@ -91,7 +91,19 @@ void applyStyle(Theme theme, float scale) {
   c[ImGuiCol_SliderGrabActive] = im(accent);
   c[ImGuiCol_PlotHistogram] = im(p.extraEdges);
   c[ImGuiCol_PlotHistogramHovered] = im(p.crowded);
+  // ImGui floors the sizes it scales; the spacings a slide's layout is made of are kept
+  // exact, so that a slide keeps its proportions at any page scale
+  const ImVec2 window = style.WindowPadding, frame = style.FramePadding, item = style.ItemSpacing,
+               inner = style.ItemInnerSpacing, cell = style.CellPadding;
+  const float indent = style.IndentSpacing;
   style.ScaleAllSizes(scale);
+  const auto times = [scale](ImVec2 v) { return ImVec2(v.x * scale, v.y * scale); };
+  style.WindowPadding = times(window);
+  style.FramePadding = times(frame);
+  style.ItemSpacing = times(item);
+  style.ItemInnerSpacing = times(inner);
+  style.CellPadding = times(cell);
+  style.IndentSpacing = indent * scale;
   ImGui::GetStyle() = style;
 }
 
@@ -108,7 +120,8 @@ void loadFont(float pixels, bool recreateTexture) {
     // Latin-1, punctuation, super- and subscripts, arrows, mathematical operators
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2000, 0x209F, 0x2190, 0x21FF,
                                      0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
-    if (io.Fonts->AddFontFromFileTTF(path, std::round(pixels), &cfg, ranges)) {
+    // at the exact size (not rounded): a slide's text keeps its width at any page scale
+    if (io.Fonts->AddFontFromFileTTF(path, pixels, &cfg, ranges)) {
       loaded = true;
       break;
     }

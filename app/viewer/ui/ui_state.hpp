@@ -45,7 +45,7 @@ struct UiState {
   ScreenRect fittedScene;   // the room the camera was last fitted into
   // the slide's layout this frame (ui/slide_frame): what the window's boxes and the SVG draw
   SlideLayout layout;
-  ScreenRect splitHeadings[2];  // the split view's headings this frame (none: empty)
+  TextBox splitHeadings[2];  // the split view's headings this frame (none: no lines)
   // the Why O(1) window this frame and the page of plots in it (empty: not shown), for the SVG
   struct WhyPlots {
     ScreenRect rect;

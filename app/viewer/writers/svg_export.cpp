@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include "logic/app/legend.hpp"
+#include "ui/label_overlay.hpp"
 #include "ui/scene_area.hpp"
 #include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
@@ -33,10 +34,23 @@ void sprayOf(const Scene& scene, const Model& model, const SceneView& view, SvgS
 }
 
 // 2D: the structure under the overlay, core's cells and the polygon's edges
-void scene2d(const Model& model, const SceneView& view, SvgScene& s) {
+void scene2d(const Model& model, const SceneView& view, const UiState& ui, SvgScene& s) {
   s.base = {&view.structure()};
   s.overlay = {&view.overlay()};
   const Scene2D& scene = model.scene2d;
+  if (model.split.enabled() && !model.lines2d.enabled()) {
+    SvgSplit split;
+    split.left = model.split.left();
+    split.right = model.split.right();
+    const Camera2D right = model.split.rightCamera(model.camera2d);
+    split.project = [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
+      return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
+    };
+    split.base = {&view.splitStructure()};
+    split.overlay = {&view.splitOverlay()};
+    split.headings = {ui.splitHeadings[0], ui.splitHeadings[1]};
+    s.split = std::move(split);
+  }
   if (model.lines2d.enabled()) {
     s.points.visibleMask = 0;  // the Lines mode hides the spray
     return;
@@ -78,6 +92,9 @@ void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
   if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
     s.window = ui.whyWindow;
     s.windowTitle = "Why O(1): cost against N";
+    const ImVec4 bar = ImGui::GetStyleColorVec4(ImGuiCol_TitleBgActive);
+    s.windowBar = {bar.x, bar.y, bar.z, 1.0f};
+    s.windowBarHeight = ImGui::GetFrameHeight();
     if (why.fontPx > 0.0) {
       const ScalingProgress p = model.scaling->snapshot();
       const PlotStyle style = plotStyle(model.settings.theme, why.fontPx);
@@ -112,6 +129,7 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   s.project = sceneProjection(model);
   const ScreenRect area = sceneArea(model, ui, s.size);
   s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
+  s.keepOff = labelKeepOffs(ui);
   s.textMuted = pal.textMuted;
   slideBoxes(model, ui, s);
   // the legend where the window put it: the layout's corner, or where it was dragged
@@ -120,7 +138,7 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
     s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
   }
   if (model.dim == Dim::Two)
-    scene2d(model, view, s);
+    scene2d(model, view, ui, s);
   else
     scene3d(model, view, s);
   return writeTextFile(path, sceneSvg(s), error);

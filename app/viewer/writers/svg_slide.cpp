@@ -142,8 +142,11 @@ void writeSlideBoxes(const SvgScene& s, std::string& out) {
   if (s.window.hi.x > s.window.lo.x) {
     out += "<g id=\"window\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
            rectSvg(s.window, withAlpha(s.panel, 1.0f), s.rounding) + "\n  " +
-           lineSvg(s.window.lo.x + s.layoutPadding, s.window.lo.y + 0.5 * s.layoutSpacing, 1.0,
-                   s.windowTitle, s.text, s) +
+           rectSvg({s.window.lo, {s.window.hi.x, s.window.lo.y + s.windowBarHeight}}, s.windowBar) +
+           "\n  " +
+           lineSvg(s.window.lo.x + 2.0 * s.layoutPadding,
+                   s.window.lo.y + 0.5 * (s.windowBarHeight - bodyPixels(s)), 1.0, s.windowTitle,
+                   s.text, s) +
            "\n" + s.windowSvg + "</g>\n";
   }
   writeTextBox(s, "title", l.title, l.titleLines, s.text, out);

@@ -257,7 +257,8 @@ void writeLabels(const SvgScene& s, std::string& out) {
   lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
   const auto placed = layoutSceneLabels(
       lists, s.base.size(), s.project,
-      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale);
+      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale, 400,
+      s.keepOff);
   out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
          num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
          paint("stroke", withAlpha(s.background, 0.85f)) +
@@ -356,6 +357,47 @@ void writeLegend(const SvgScene& s, std::string& out) {
   out += "</g>\n";
 }
 
+// a rectangle as a clip path `id`
+std::string clipSvg(const char* id, const ScreenRect& r) {
+  return "<clipPath id=\"" + std::string(id) + "\"><rect x=\"" + num(r.lo.x) + "\" y=\"" +
+         num(r.lo.y) + "\" width=\"" + num(r.size().x) + "\" height=\"" + num(r.size().y) +
+         "\"/></clipPath>\n";
+}
+
+// the split view: each half clipped to its rectangle (the right one through its own
+// projection and lists), the divider, the headings over the labels
+void writeSplit(const SvgScene& s, std::string& out, std::size_t& visible, std::size_t& stride) {
+  const SvgSplit& split = *s.split;
+  out += "<defs>\n" + clipSvg("left-half", split.left) + clipSvg("right-half", split.right) +
+         "</defs>\n<g id=\"left-half\" clip-path=\"url(#left-half)\">\n";
+  SvgScene left = s;
+  left.labelArea = {split.left.lo, split.left.hi};
+  writeScene(left, out, visible, stride);
+  writeLabels(left, out);
+  out += "</g>\n<g id=\"right-half\" clip-path=\"url(#right-half)\">\n";
+  SvgScene right = s;
+  right.project = split.project;
+  right.base = split.base;
+  right.overlay = split.overlay;
+  right.labelArea = {split.right.lo, split.right.hi};
+  writeScene(right, out, visible, stride);
+  writeLabels(right, out);
+  out += "</g>\n<line id=\"divider\" x1=\"" + num(split.right.lo.x) + "\" y1=\"" +
+         num(split.right.lo.y) + "\" x2=\"" + num(split.right.lo.x) + "\" y2=\"" +
+         num(split.right.hi.y) + "\"" + paint("stroke", s.textMuted) + " stroke-width=\"2\"/>\n";
+  const double em = s.fontPixels;
+  for (const TextBox& t : split.headings) {
+    if (t.lines.empty()) continue;
+    const double pad = 0.6 * 1.164 * em;
+    out += "<g class=\"heading\"><rect x=\"" + num(t.box.lo.x) + "\" y=\"" + num(t.box.lo.y) +
+           "\" width=\"" + num(t.box.size().x) + "\" height=\"" + num(t.box.size().y) +
+           "\" rx=\"4\"" + paint("fill", withAlpha(s.background, 0.9f)) + "/><text x=\"" +
+           num(t.box.lo.x + pad) + "\" y=\"" + num(t.box.lo.y + 0.5 * pad + 0.928 * em) +
+           "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(em) + "\"" +
+           paint("fill", s.text) + ">" + xmlEscape(t.lines[0]) + "</text></g>\n";
+  }
+}
+
 }  // namespace
 
 std::string sceneSvg(const SvgScene& s) {
@@ -367,8 +409,12 @@ std::string sceneSvg(const SvgScene& s) {
          "/>\n";
   writeOutlines(s, out);
   std::size_t visible = 0, stride = 1;
-  writeScene(s, out, visible, stride);
-  writeLabels(s, out);
+  if (s.split) {
+    writeSplit(s, out, visible, stride);
+  } else {
+    writeScene(s, out, visible, stride);
+    writeLabels(s, out);
+  }
   writeNote(s, out, visible, stride);
   writeLetterbox(s, out);
   writeSlideBoxes(s, out);

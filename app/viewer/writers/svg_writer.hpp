@@ -35,6 +35,15 @@ struct SvgPoints {
   Rgba rim;                   // the boundary points' rim
 };
 
+// the split view: the right half's projection and draw lists over the same points, each
+// half clipped to its rectangle, the divider between them and each half's heading
+struct SvgSplit {
+  ScreenRect left, right;
+  ScreenProjection project;  // the right half's
+  std::vector<const DrawList*> base, overlay;
+  std::vector<TextBox> headings;
+};
+
 // everything one picture is written from
 struct SvgScene {
   glm::dvec2 size{1.0};  // window pixels: the viewBox
@@ -50,6 +59,7 @@ struct SvgScene {
   std::vector<const DrawList*> overlay;  // drawn over everything
   SvgPoints points;
   std::size_t maxPoints = 4000;
+  std::optional<SvgSplit> split;  // 2D: the split view's second half
   // core's cells and the shape's edges, as selectable outlines (drawn neither filled nor
   // stroked: the picture itself comes from the draw lists)
   std::vector<std::vector<glm::dvec3>> cells;
@@ -68,12 +78,15 @@ struct SvgScene {
   // a window over the scene written as it is drawn: its box, opaque, and its SVG inside
   // (the Why O(1) plots); empty: none
   ScreenRect window;
-  std::string windowTitle;
+  std::string windowTitle;  // on its title bar, `windowBarHeight` high
+  Rgba windowBar;
+  double windowBarHeight = 0.0;
   std::string windowSvg;
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
+  PixelBox labelArea;  // the scene area: labels stay in it
+  std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
   Rgba textMuted;      // the legend's counts and subtitle
 };
 

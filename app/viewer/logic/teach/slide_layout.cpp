@@ -77,6 +77,18 @@ PageFit fitPage(glm::dvec2 window, glm::dvec2 page) {
   return f;
 }
 
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m) {
+  TextBox t;
+  if (text.empty()) return t;
+  t.lines = {text};
+  const double pad = 0.6 * m.font;
+  const glm::dvec2 size = m.measure(text);
+  const glm::dvec2 at{std::max(half.middle().x - 0.5 * size.x, half.lo.x + 2.0 * pad),
+                      half.lo.y + 1.5 * pad};
+  t.box = {at - glm::dvec2(pad, 0.5 * pad), at + size + glm::dvec2(pad, 0.5 * pad)};
+  return t;
+}
+
 double SlideMetrics::widthAt(std::string_view text, double scale) const {
   return measure(text).x * scale;
 }

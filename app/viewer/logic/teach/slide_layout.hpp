@@ -116,6 +116,11 @@ StepsLayout layoutSteps(const StepsContent& steps, const SlideMetrics& metrics, 
 // class's text colour), or the text's
 Rgba stepColour(const Step& step, const Palette& pal, Rgba result);
 
+// The split view's heading over a half (`half`, window pixels): `text` centred over it,
+// never starting left of it, near its top; the box is the text and a padding of 0.6 body
+// heights around it (half that above and below). The window and the SVG draw it from here.
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics);
+
 // the title card's, caption's and legend's text sizes relative to the body text
 inline constexpr double kTitleScale = 1.3;
 inline constexpr double kCaptionScale = 1.5;
