@@ -166,3 +166,18 @@ TEST(SlideLayout, StepsOfOneQueryLeaveTheSceneTheSameRoom) {
   EXPECT_EQ(a.scene.lo, b.scene.lo);
   EXPECT_EQ(a.scene.hi, b.scene.hi);
 }
+
+// a legend taller than the room between the card and the caption still gets its strip on
+// the right: the shape is fitted beside it, not under it (a lecture zoomed 1.5x at 720p)
+TEST(SlideLayout, ALegendTallerThanTheRoomTakesTheRightStrip) {
+  const cv::PageFit fit = cv::fitPage({1280.0, 720.0});
+  cv::SlideContent c;
+  c.area = fit.page;
+  c.title = "2 / 5: Wedges: a binary search over the rays from x0";
+  c.caption = "Rays v0->v4 (clockwise), v0->v2, v0->v3 (counter-clockwise) halve the fan.";
+  c.legend = {420.0, 400.0};
+  const cv::SlideLayout l = cv::layoutSlide(c, metricsAt(fit.scale * 1.5));
+  ASSERT_LT(l.caption.box.lo.y - l.title.box.hi.y, c.legend.y + 20.0);
+  EXPECT_FALSE(overlap(l.scene, l.legend));
+  EXPECT_GT(l.scene.size().x, 0.0);
+}

@@ -104,9 +104,12 @@ ScreenRect sceneRoom(const SlideContent& c, const SlideLayout& l, const SlideMet
   ScreenRect a = full;
   const glm::dvec2 strip = c.legend + glm::dvec2(2.0 * m.margin);
   const glm::dvec2 s = a.size();
-  const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0 && s.x > strip.x && s.y > strip.y;
+  // the share of the drawing's width or height a strip leaves (none where it does not fit)
+  const double keepsX = s.x > strip.x ? (s.x - strip.x) / s.x : 0.0;
+  const double keepsY = s.y > strip.y ? (s.y - strip.y) / s.y : 0.0;
+  const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0 && (keepsX > 0.0 || keepsY > 0.0);
   if (legend) {
-    if ((s.x - strip.x) / s.x >= (s.y - strip.y) / s.y)
+    if (keepsX >= keepsY)
       a.hi.x -= strip.x;
     else
       a.hi.y -= strip.y;
