@@ -155,7 +155,8 @@ TEST(SlideLayout, TheStepsLinesFitTheWindow) {
   const double inner = l.steps->box.size().x - 2.0 * m.padding;
   for (const std::string& h : l.steps->heading) EXPECT_LE(m.measure(h).x, inner) << h;
   for (const cv::StepLines& s : l.steps->shown)
-    for (const std::string& line : s.lines) EXPECT_LE(m.measure(line).x, l.steps->columnWidth) << line;
+    for (const std::string& line : s.lines)
+      EXPECT_LE(m.measure(line).x, l.steps->columnWidth) << line;
   for (const std::string& c : l.steps->code) EXPECT_LE(m.measure(c).x, l.steps->columnWidth) << c;
 }
 

@@ -40,10 +40,14 @@ struct KeyBinding {
   ActionKind kind;
 };
 constexpr KeyBinding kKeys[] = {
-    {GLFW_KEY_F, ActionKind::Fit},          {GLFW_KEY_H, ActionKind::ToggleUi},
-    {GLFW_KEY_T, ActionKind::ToggleTheme},  {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
-    {GLFW_KEY_SPACE, ActionKind::NewSpray}, {GLFW_KEY_L, ActionKind::ToggleLines},
-    {GLFW_KEY_V, ActionKind::SaveSvg},      {GLFW_KEY_P, ActionKind::TogglePresent},
+    {GLFW_KEY_F, ActionKind::Fit},
+    {GLFW_KEY_H, ActionKind::ToggleUi},
+    {GLFW_KEY_T, ActionKind::ToggleTheme},
+    {GLFW_KEY_ESCAPE, ActionKind::ClearPoint},
+    {GLFW_KEY_SPACE, ActionKind::NewSpray},
+    {GLFW_KEY_L, ActionKind::ToggleLines},
+    {GLFW_KEY_V, ActionKind::SaveSvg},
+    {GLFW_KEY_P, ActionKind::TogglePresent},
     {GLFW_KEY_G, ActionKind::ToggleLegend},
     // the text zoom: + (= unshifted) and -, on the main keys and the keypad
     {GLFW_KEY_EQUAL, ActionKind::TextLarger},

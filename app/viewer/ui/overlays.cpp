@@ -21,10 +21,10 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   } else {
     // the layout's lower right corner (logic/teach/slide_layout), with the padding
     const SlideLayout& l = ui.layout;
-    const glm::dvec2 corner =
-        l.legend.hi.x > 0.0
-            ? l.legend.hi
-            : glm::dvec2(area.hi.x, area.hi.y - ui.captionHeight) - glm::dvec2(10.0 * model.settings.uiScale());
+    const glm::dvec2 corner = l.legend.hi.x > 0.0
+                                  ? l.legend.hi
+                                  : glm::dvec2(area.hi.x, area.hi.y - ui.captionHeight) -
+                                        glm::dvec2(10.0 * model.settings.uiScale());
     ImGui::SetNextWindowPos(ImVec2(static_cast<float>(corner.x), static_cast<float>(corner.y)),
                             ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   }
@@ -93,8 +93,7 @@ void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
 void captionBox(Model& model, UiState& ui, ScreenRect area) {
   const TextBox& t = ui.layout.caption;
   const float before = ui.captionHeight;
-  ui.captionHeight =
-      t.lines.empty() ? 0.0f : static_cast<float>(area.hi.y - t.box.lo.y);
+  ui.captionHeight = t.lines.empty() ? 0.0f : static_cast<float>(area.hi.y - t.box.lo.y);
   // a caption of another height (a new slide's) leaves the scene other room: refit
   if (std::abs(ui.captionHeight - before) > 1.0f) model.requestFit();
   layoutBox("##caption", t, t.lines.size(), paletteFor(model.settings.theme).text);

@@ -67,8 +67,7 @@ SlideMetrics windowMetrics() {
   return m;
 }
 
-SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window,
-                        bool withSteps) {
+SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window, bool withSteps) {
   SlideContent c;
   c.area = pageArea(model, ui, window);
   c.title = cardTitle(ui);

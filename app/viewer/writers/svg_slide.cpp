@@ -57,14 +57,15 @@ std::string rectSvg(const ScreenRect& r, Rgba fill, double rounding = 0.0) {
 std::string lineSvg(double x, double top, double scale, const std::string& text, Rgba colour,
                     const SvgScene& s, const char* cls = "line") {
   const double em = scale * s.fontPixels;
-  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" + num(top + 0.928 * em) + "\" font-size=\"" + num(em) +
-         "\" xml:space=\"preserve\"" + paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" +
+         num(top + 0.928 * em) + "\" font-size=\"" + num(em) + "\" xml:space=\"preserve\"" +
+         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
 }
 
 // a text box of the layout: its box, then its lines (the first `large` at its scale, the
 // rest at the body size in `rest`)
-void writeTextBox(const SvgScene& s, const char* id, const TextBox& t, std::size_t large,
-                  Rgba rest, std::string& out) {
+void writeTextBox(const SvgScene& s, const char* id, const TextBox& t, std::size_t large, Rgba rest,
+                  std::string& out) {
   if (t.lines.empty()) return;
   const double body = bodyPixels(s), pad = s.layoutPadding;
   out += "<g id=\"" + std::string(id) + "\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
@@ -72,8 +73,8 @@ void writeTextBox(const SvgScene& s, const char* id, const TextBox& t, std::size
   double top = t.box.lo.y + pad;
   for (std::size_t k = 0; k < t.lines.size(); ++k) {
     const double scale = k < large ? t.scale : 1.0;
-    out += "  " + lineSvg(t.box.lo.x + pad, top, scale, t.lines[k], k < large ? s.text : rest, s,
-                          id) +
+    out += "  " +
+           lineSvg(t.box.lo.x + pad, top, scale, t.lines[k], k < large ? s.text : rest, s, id) +
            "\n";
     top += scale * body + s.layoutSpacing;
   }
@@ -93,8 +94,10 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
   out += "<g id=\"steps\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
          rectSvg(l.box, s.panel, s.rounding) + "\n";
   for (std::size_t k = 0; k < l.heading.size(); ++k)
-    out += "  " + lineSvg(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, 1.0,
-                          l.heading[k], s.textMuted, s) + "\n";
+    out += "  " +
+           lineSvg(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, 1.0,
+                   l.heading[k], s.textMuted, s) +
+           "\n";
   if (l.controls && !s.stepColours.empty()) {
     const std::string shown = s.step < 0 ? "all " + std::to_string(s.stepColours.size()) + " steps"
                                          : "step " + std::to_string(s.step + 1) + " of " +
@@ -109,8 +112,10 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
     if (s.step >= 0 && i > s.step) c = withAlpha(c, 0.35f);
     if (i == s.step) {
       const double h = static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing;
-      out += "  " + rectSvg({{l.listLeft - 3.0, y - 1.0}, {l.listLeft + l.columnWidth, y + h + 1.0}},
-                            withAlpha(s.highlight, 0.22f)) + "\n";
+      out += "  " +
+             rectSvg({{l.listLeft - 3.0, y - 1.0}, {l.listLeft + l.columnWidth, y + h + 1.0}},
+                     withAlpha(s.highlight, 0.22f)) +
+             "\n";
     }
     for (const std::string& line : st.lines) {
       out += "  " + lineSvg(l.listLeft, y, 1.0, line, c, s) + "\n";
@@ -119,8 +124,10 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
   }
   if (!l.sideBySide && !l.code.empty()) out += "  " + separatorSvg(l, l.codeTop, s) + "\n";
   for (std::size_t i = 0; i < l.code.size(); ++i)
-    out += "  " + lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, 1.0,
-                          l.code[i], l.codeCurrent[i] ? s.highlight : s.textMuted, s) + "\n";
+    out += "  " +
+           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, 1.0, l.code[i],
+                   l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
+           "\n";
   out += "</g>\n";
 }
 
@@ -132,7 +139,8 @@ void writeLetterbox(const SvgScene& s, std::string& out) {
   out += "<g id=\"letterbox\">\n";
   for (const ScreenRect& r :
        {ScreenRect{{0.0, 0.0}, {s.size.x, p.lo.y}}, ScreenRect{{0.0, p.hi.y}, s.size},
-        ScreenRect{{0.0, p.lo.y}, {p.lo.x, p.hi.y}}, ScreenRect{{p.hi.x, p.lo.y}, {s.size.x, p.hi.y}}})
+        ScreenRect{{0.0, p.lo.y}, {p.lo.x, p.hi.y}},
+        ScreenRect{{p.hi.x, p.lo.y}, {s.size.x, p.hi.y}}})
     if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) out += "  " + rectSvg(r, s.background) + "\n";
   out += "</g>\n";
 }

@@ -85,9 +85,9 @@ struct SvgScene {
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  PixelBox labelArea;  // the scene area: labels stay in it
+  PixelBox labelArea;             // the scene area: labels stay in it
   std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
-  Rgba textMuted;      // the legend's counts and subtitle
+  Rgba textMuted;                 // the legend's counts and subtitle
 };
 
 // the whole SVG document

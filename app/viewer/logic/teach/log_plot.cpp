@@ -198,8 +198,8 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx) {
   std::ostringstream out;
   out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
-      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\""
-      << num(fontPx) << "\">\n";
+      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << num(fontPx)
+      << "\">\n";
   for (const PlotDrawing& d : drawings) {
     out << "<g>\n";
     for (const PlotPath& p : d.paths) svgPath(out, p);

@@ -35,9 +35,8 @@ TextBox titleCard(const SlideContent& c, const SlideMetrics& m, std::size_t& tit
   const double w = std::min(c.area.size().x * 0.7, m.font * 44.0) - 2.0 * m.padding;
   t.lines = wrapAt(c.title, w, kTitleScale, m);
   titleLines = t.lines.size();
-  const std::vector<std::string> under = c.cardCaption.empty()
-                                             ? std::vector<std::string>{}
-                                             : wrapAt(c.cardCaption, w, 1.0, m);
+  const std::vector<std::string> under =
+      c.cardCaption.empty() ? std::vector<std::string>{} : wrapAt(c.cardCaption, w, 1.0, m);
   const double width = std::max(widest(t.lines, kTitleScale, m), widest(under, 1.0, m));
   const double height = linesHeight(titleLines, kTitleScale, m) +
                         (under.empty() ? 0.0 : m.spacing + linesHeight(under.size(), 1.0, m));
@@ -57,9 +56,9 @@ TextBox captionBox(const SlideContent& c, const SlideMetrics& m) {
     return t;
   }
   t.lines = wrapAt(c.caption, 0.9 * c.area.size().x - 2.0 * m.padding, kCaptionScale, m);
-  const glm::dvec2 size = glm::dvec2(widest(t.lines, kCaptionScale, m),
-                                     linesHeight(t.lines.size(), kCaptionScale, m)) +
-                          glm::dvec2(2.0 * m.padding);
+  const glm::dvec2 size =
+      glm::dvec2(widest(t.lines, kCaptionScale, m), linesHeight(t.lines.size(), kCaptionScale, m)) +
+      glm::dvec2(2.0 * m.padding);
   t.box.hi = {c.area.middle().x + 0.5 * size.x, c.area.hi.y - m.margin};
   t.box.lo = t.box.hi - size;
   return t;

@@ -48,9 +48,9 @@ struct SlideMetrics {
 // what the Steps window shows: the method's steps and code, the step shown, its controls
 struct StepsContent {
   StepModel model;
-  int step = -1;          // the step shown (-1: all)
-  bool controls = true;   // the row of buttons (a slide shows none: its keys step)
-  int codeWanted = -1;    // the pseudo-code: 1 whole, 0 the current line, -1 whole where wide
+  int step = -1;         // the step shown (-1: all)
+  bool controls = true;  // the row of buttons (a slide shows none: its keys step)
+  int codeWanted = -1;   // the pseudo-code: 1 whole, 0 the current line, -1 whole where wide
 };
 
 // a step's lines in the Steps window
@@ -62,14 +62,14 @@ struct StepLines {
 // the Steps window laid out
 struct StepsLayout {
   ScreenRect box;
-  bool sideBySide = false;  // the code in a column beside the steps
-  bool wholeCode = false;   // all the code (else the current line alone)
-  bool controls = false;    // the controls' two rows are there
+  bool sideBySide = false;           // the code in a column beside the steps
+  bool wholeCode = false;            // all the code (else the current line alone)
+  bool controls = false;             // the controls' two rows are there
   std::vector<std::string> heading;  // the method and point, and the trace's note
   double headingTop = 0.0;           // the heading's first line's top
-  double controlsTop = 0.0;  // the controls' two rows' top (none: the list's separator)
-  std::vector<StepLines> shown;  // the steps shown (a long list: a window around the current)
-  double listTop = 0.0;  // the first step line's top; the separator is a spacing above
+  double controlsTop = 0.0;          // the controls' two rows' top (none: the list's separator)
+  std::vector<StepLines> shown;      // the steps shown (a long list: a window around the current)
+  double listTop = 0.0;              // the first step line's top; the separator is a spacing above
   double listLeft = 0.0, codeLeft = 0.0;  // the columns' left edges
   double columnWidth = 0.0;               // the steps' column width
   std::vector<std::string> code;          // the code's lines shown, "> " on the current line
@@ -87,23 +87,23 @@ struct TextBox {
 
 // everything on a slide (or in the live scene) that the layout places
 struct SlideContent {
-  ScreenRect area;            // the scene's area: the page (or window) less the panels
-  std::string title;          // the slide card's text ("4 / 27: Wedges"); empty: no card
-  std::string cardCaption;    // a figure's caption under its title in the card
-  std::string caption;        // the caption box's text at the bottom; empty: none
+  ScreenRect area;          // the scene's area: the page (or window) less the panels
+  std::string title;        // the slide card's text ("4 / 27: Wedges"); empty: no card
+  std::string cardCaption;  // a figure's caption under its title in the card
+  std::string caption;      // the caption box's text at the bottom; empty: none
   std::optional<StepsContent> steps;
-  glm::dvec2 legend{0.0};     // the legend's size; zero: none floats over the scene
-  double shapeAspect = 1.0;   // the drawn shape's width over its height, about
+  glm::dvec2 legend{0.0};    // the legend's size; zero: none floats over the scene
+  double shapeAspect = 1.0;  // the drawn shape's width over its height, about
 };
 
 // the boxes of one slide, in window pixels
 struct SlideLayout {
-  TextBox title;    // the title card (with a figure's caption under the title)
-  std::size_t titleLines = 0;  // how many of title.lines are the title's (the rest caption)
-  TextBox caption;  // the caption box, centred at the bottom
+  TextBox title;                     // the title card (with a figure's caption under the title)
+  std::size_t titleLines = 0;        // how many of title.lines are the title's (the rest caption)
+  TextBox caption;                   // the caption box, centred at the bottom
   std::optional<StepsLayout> steps;  // over the lower left corner, above the caption
   ScreenRect legend;                 // over the lower right corner, above the caption
-  ScreenRect scene;  // the room the shape is fitted into, beside all of them
+  ScreenRect scene;                  // the room the shape is fitted into, beside all of them
 };
 
 // The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not

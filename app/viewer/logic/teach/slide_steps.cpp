@@ -45,7 +45,8 @@ std::vector<StepLines> aroundCurrent(const std::vector<StepLines>& all, int curr
   std::size_t total = 0;
   for (const StepLines& s : all) total += s.lines.size();
   if (total <= most || all.empty()) return all;
-  std::size_t lo = static_cast<std::size_t>(std::clamp(current, 0, static_cast<int>(all.size()) - 1));
+  std::size_t lo =
+      static_cast<std::size_t>(std::clamp(current, 0, static_cast<int>(all.size()) - 1));
   std::size_t hi = lo, lines = all[lo].lines.size();
   for (bool grew = true; grew;) {
     grew = false;
@@ -69,8 +70,8 @@ void codeLines(const StepsContent& s, bool whole, double width, const SlideMetri
   for (std::size_t i = 0; i < s.model.code.size(); ++i) {
     const bool on = static_cast<int>(i) == line;
     if (!whole && !on) continue;
-    for (std::string& t : breakAtSpaces((on ? "> " : "  ") + s.model.code[i], width, m.measure,
-                                        "    ")) {
+    for (std::string& t :
+         breakAtSpaces((on ? "> " : "  ") + s.model.code[i], width, m.measure, "    ")) {
       l.code.push_back(std::move(t));
       l.codeCurrent.push_back(on);
     }
@@ -91,8 +92,8 @@ StepsLayout stepsWith(const StepsContent& s, const SlideMetrics& m, double room,
   const bool wide = room > m.font * 40.0;
   l.wholeCode = s.codeWanted < 0 ? wide : s.codeWanted == 1;
   l.sideBySide = l.wholeCode && wide;
-  const double w = std::min(
-      {room, neededWidth(s.model, l.sideBySide, m), l.sideBySide ? room : m.font * 34.0});
+  const double w =
+      std::min({room, neededWidth(s.model, l.sideBySide, m), l.sideBySide ? room : m.font * 34.0});
   const double inner = w - 2.0 * m.padding, gap = m.font;
   l.columnWidth = l.sideBySide ? 0.5 * (inner - gap) : inner;
   l.lineStep = m.font + m.spacing;
@@ -140,8 +141,8 @@ StepsLayout layoutSteps(const StepsContent& s, const SlideMetrics& m, ScreenRect
   const double step = m.font + m.spacing;
   // about a quarter of the area's height (3 to 9 lines) for the list; fewer where the
   // window would reach over `top`
-  auto most = static_cast<std::size_t>(
-      std::clamp(std::floor(area.size().y * 0.25 / step), 3.0, 9.0));
+  auto most =
+      static_cast<std::size_t>(std::clamp(std::floor(area.size().y * 0.25 / step), 3.0, 9.0));
   StepsLayout l = stepsWith(s, m, room, x, bottom, most);
   while (l.box.lo.y < top && most > 1) l = stepsWith(s, m, room, x, bottom, --most);
   return l;

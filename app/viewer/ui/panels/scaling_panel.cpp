@@ -129,7 +129,8 @@ void scalingWindow(Model& model, UiState& ui) {
               bottom = static_cast<float>(area.hi.y) - ui.captionHeight;
   const float width = static_cast<float>(area.size().x) * (model.settings.showUi ? 0.8f : 0.96f);
   ImGui::SetNextWindowSize(
-      ImVec2(width, std::min(static_cast<float>(area.size().y) * 0.88f, bottom - top - 8.0f)), cond);
+      ImVec2(width, std::min(static_cast<float>(area.size().y) * 0.88f, bottom - top - 8.0f)),
+      cond);
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.middle().x), 0.5f * (top + bottom)), cond,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);

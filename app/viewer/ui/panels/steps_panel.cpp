@@ -16,8 +16,7 @@ namespace {
 
 // Previous, Next, Play / Pause, All on the first row; the speed, "step k of n" and the
 // pseudo-code's fold on the second
-void stepControls(Model& model, UiState& ui, const StepModel& m, int step, double now,
-                  bool whole) {
+void stepControls(Model& model, UiState& ui, const StepModel& m, int step, double now, bool whole) {
   const std::size_t n = m.steps.size();
   if (ImGui::Button("< Prev")) model.stepBy(false);
   ImGui::SameLine();
@@ -69,8 +68,7 @@ void separatorAbove(const StepsLayout& l, double y, const Palette& pal) {
 }
 
 // the steps shown, the current one on a highlighted row and those after it dimmed
-void stepList(const StepsLayout& l, const StepModel& m, int step, const Palette& pal,
-              Rgba result) {
+void stepList(const StepsLayout& l, const StepModel& m, int step, const Palette& pal, Rgba result) {
   double y = l.listTop;
   const double spacing = ImGui::GetStyle().ItemSpacing.y;
   for (const StepLines& s : l.shown) {
@@ -143,8 +141,10 @@ void stepsWindow(Model& model, UiState& ui, double now) {
   ImGui::End();
   ui.stepsSize[0] = static_cast<float>(size.x);
   ui.stepsSize[1] = static_cast<float>(size.y);
-  ui.stepsRect[0] = static_cast<float>(l.box.lo.x), ui.stepsRect[1] = static_cast<float>(l.box.lo.y);
-  ui.stepsRect[2] = static_cast<float>(l.box.hi.x), ui.stepsRect[3] = static_cast<float>(l.box.hi.y);
+  ui.stepsRect[0] = static_cast<float>(l.box.lo.x),
+  ui.stepsRect[1] = static_cast<float>(l.box.lo.y);
+  ui.stepsRect[2] = static_cast<float>(l.box.hi.x),
+  ui.stepsRect[3] = static_cast<float>(l.box.hi.y);
 }
 
 }  // namespace convexloc::viewer
