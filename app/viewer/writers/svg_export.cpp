@@ -132,10 +132,16 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   s.keepOff = labelKeepOffs(ui);
   s.textMuted = pal.textMuted;
   slideBoxes(model, ui, s);
-  // the legend where the window put it: the layout's corner, or where it was dragged
-  if (model.settings.showLegend && ui.legendRect[2] > ui.legendRect[0]) {
+  // the legend where the window put it (the layout's corner, or where it was dragged); with
+  // the panels shown (the legend in the right one), in the scene's lower right corner
+  if (model.settings.showLegend) {
     s.legend = legendOf(model);
-    s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
+    if (ui.legendRect[2] > ui.legendRect[0]) {
+      s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
+      s.legendSize = {ui.legendRect[2] - ui.legendRect[0], ui.legendRect[3] - ui.legendRect[1]};
+    } else {
+      s.legendCorner = area.hi - glm::dvec2(10.0);
+    }
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, ui, s);

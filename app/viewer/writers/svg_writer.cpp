@@ -309,8 +309,8 @@ std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
 
 // `text` with its baseline at (x, y), anchored at its start or end
 std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
-  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + paint("fill", c) +
-         (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" xml:space=\"preserve\"" +
+         paint("fill", c) + (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
 }
 
 // the legend as the window shows it: title, class rows in columns, a row per mark
@@ -326,11 +326,18 @@ void writeLegend(const SvgScene& s, std::string& out) {
     count = std::max(count, width(r.count));
     share = std::max(share, width(r.share));
   }
-  for (const LegendRow& r : g.rows) rows = std::max(rows, sw + width(r.text));
+  // a mark's text may run over lines (the y-gap's cost)
+  std::size_t rowLines = 0;
+  for (const LegendRow& r : g.rows)
+    for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
+      rows = std::max(rows, sw + width(t));
+      ++rowLines;
+    }
   const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
   const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
-  const double w = std::max({heading, classes, rows}) + 2.0 * pad;
-  const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
+  double w = std::max({heading, classes, rows}) + 2.0 * pad;
+  double h = line * static_cast<double>(1 + g.classes.size() + rowLines) + 2.0 * pad;
+  if (s.legendSize.x > 0.0) w = s.legendSize.x, h = s.legendSize.y;  // the window's own box
   const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
          "\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) + "\" width=\"" + num(w) +
@@ -353,9 +360,18 @@ void writeLegend(const SvgScene& s, std::string& out) {
              legendText(x + sw + name + 1.4 * f + count, y + shift, r.share, s.textMuted);
     out += "\n";
   }
+  // the marks under the classes, a spacing apart; a mark's lines as one text's, unspaced
+  if (!g.rows.empty() && !g.classes.empty()) y += s.layoutSpacing;
   for (const LegendRow& r : g.rows) {
     y += line;
-    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y + shift, r.text, s.text) + "\n";
+    out += "  " + swatchSvg(r, x, y, f);
+    bool first = true;
+    for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
+      if (!first) y += 1.164 * f;
+      first = false;
+      out += legendText(x + sw, y + shift, t, s.text);
+    }
+    out += "\n";
   }
   out += "</g>\n";
 }

@@ -85,6 +85,7 @@ struct SvgScene {
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
+  glm::dvec2 legendSize{0.0};  // the window's legend box (zero: sized from its rows)
   PixelBox labelArea;             // the scene area: labels stay in it
   std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
   Rgba textMuted;                 // the legend's counts and subtitle
