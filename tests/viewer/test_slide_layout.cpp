@@ -160,12 +160,33 @@ TEST(SlideLayout, TheStepsLinesFitTheWindow) {
   for (const std::string& c : l.steps->code) EXPECT_LE(m.measure(c).x, l.steps->columnWidth) << c;
 }
 
-// a step slide and the next one of the same query give the scene the same room: the shape
-// does not jump between them (slides 7 -> 8 and 13 -> 14)
+// a step slide and the next one of the same query give the scene the same room, though
+// their captions take one line and two: the shape does not jump between them (slides 7 -> 8
+// and 13 -> 14)
 TEST(SlideLayout, StepsOfOneQueryLeaveTheSceneTheSameRoom) {
-  const cv::SlideLayout a = slideIn({1920.0, 1080.0}, 4, 0), b = slideIn({1920.0, 1080.0}, 4, 3);
+  const cv::PageFit fit = cv::fitPage({1920.0, 1080.0});
+  cv::SlideContent c;
+  c.area = fit.page;
+  c.title = "7 / 27: Uniform slabs: O(1)";
+  c.legend = {330.0, 260.0};
+  c.shapeAspect = 0.7;
+  c.captionRoom = 2;
+  c.caption = "Equal slabs: eq. (4) needs no search.";
+  c.steps = stepsOf(5, 4);
+  const cv::SlideLayout a = cv::layoutSlide(c, metricsAt(1.0));
+  c.title = "8 / 27: Uniform slabs: eq. (4), no search";
+  c.caption =
+      "i = floor((y - ymin) / dy) = floor(7.34) = 7: one division finds the slab, its two "
+      "edges decide.";
+  c.steps = stepsOf(5, 0);
+  const cv::SlideLayout b = cv::layoutSlide(c, metricsAt(1.0));
+  ASSERT_NE(a.caption.lines.size(), b.caption.lines.size());
   EXPECT_EQ(a.scene.lo, b.scene.lo);
   EXPECT_EQ(a.scene.hi, b.scene.hi);
+  for (const cv::SlideLayout* l : {&a, &b}) {
+    EXPECT_FALSE(overlap(l->scene, l->caption.box));
+    EXPECT_FALSE(overlap(l->scene, l->legend));
+  }
 }
 
 // a legend taller than the room between the card and the caption still gets its strip on

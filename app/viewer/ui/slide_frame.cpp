@@ -78,6 +78,7 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   const bool floating = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
   if (floating && !ui.legendMoved) c.legend = {ui.legendSize[0], ui.legendSize[1]};
   c.shapeAspect = shapeAspect(model);
+  if (onSlide(model, ui)) c.captionRoom = 2;
   return layoutSlide(c, windowMetrics());
 }
 

@@ -100,6 +100,9 @@ ScreenRect sceneRoom(const SlideContent& c, const SlideLayout& l, const SlideMet
   ScreenRect full = c.area;
   if (!l.title.lines.empty()) full.lo.y = l.title.box.hi.y;
   full.hi.y = c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y;
+  if (c.captionRoom > 0)
+    full.hi.y = std::min(full.hi.y, c.area.hi.y - m.margin - 2.0 * m.padding -
+                                        linesHeight(c.captionRoom, kCaptionScale, m));
   ScreenRect a = full;
   const glm::dvec2 strip = c.legend + glm::dvec2(2.0 * m.margin);
   const glm::dvec2 s = a.size();

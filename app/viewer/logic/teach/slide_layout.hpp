@@ -94,6 +94,9 @@ struct SlideContent {
   std::optional<StepsContent> steps;
   glm::dvec2 legend{0.0};    // the legend's size; zero: none floats over the scene
   double shapeAspect = 1.0;  // the drawn shape's width over its height, about
+  // the caption lines the scene leaves room for whatever the caption holds (a slide: 2, so
+  // that slides with a one- and a two-line caption fit one figure alike); 0: the caption's own
+  std::size_t captionRoom = 0;
 };
 
 // the boxes of one slide, in window pixels
