@@ -54,7 +54,6 @@ struct UiState {
   } whyPlots;
   ScreenRect whyWindow;
   // the Steps window
-  float stepsSize[2] = {0.0f, 0.0f};  // its size in the last frame; zero while hidden
   int stepsCode = -1;  // its pseudo-code: 1 whole, 0 the current line, -1 whole where wide
   // the floating legend's and the Steps window's rectangles this frame (x0, y0, x1, y1; all
   // zero where not shown), which the scene's labels keep off

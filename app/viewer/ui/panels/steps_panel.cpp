@@ -106,7 +106,6 @@ void tickStepPlayer(Model& model, double now) {
 }
 
 void stepsWindow(Model& model, UiState& ui, double now) {
-  ui.stepsSize[0] = ui.stepsSize[1] = 0.0f;
   std::fill(std::begin(ui.stepsRect), std::end(ui.stepsRect), 0.0f);
   const std::optional<StepModel> m = model.steps();
   if (!ui.layout.steps || !m) return;
@@ -139,8 +138,6 @@ void stepsWindow(Model& model, UiState& ui, double now) {
   if (!l.sideBySide && !l.code.empty()) separatorAbove(l, l.codeTop, pal);
   codeList(l, pal);
   ImGui::End();
-  ui.stepsSize[0] = static_cast<float>(size.x);
-  ui.stepsSize[1] = static_cast<float>(size.y);
   ui.stepsRect[0] = static_cast<float>(l.box.lo.x),
   ui.stepsRect[1] = static_cast<float>(l.box.lo.y);
   ui.stepsRect[2] = static_cast<float>(l.box.hi.x),
