@@ -72,6 +72,7 @@ void scene3d(const Model& model, const SceneView& view, SvgScene& s) {
   s.base = {&view.mesh(), &view.structure(), &view.section()};
   s.overlay = {&view.overlay()};
   sprayOf(model.scene3d(), model, view, s);
+  if (model.planes3d.enabled()) s.points.visibleMask = 0;  // the Planes mode hides the spray
 }
 
 // the slide's layout and the Steps window's colours, as the window draws them
