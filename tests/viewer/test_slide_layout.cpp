@@ -4,8 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "logic/app/lecture.hpp"
+#include "logic/app/model.hpp"
+#include "logic/app/options.hpp"
 #include "logic/teach/slide_layout.hpp"
 
 namespace cv = convexloc::viewer;
@@ -202,4 +207,28 @@ TEST(SlideLayout, ALegendTallerThanTheRoomTakesTheRightStrip) {
   ASSERT_LT(l.caption.box.lo.y - l.title.box.hi.y, c.legend.y + 20.0);
   EXPECT_FALSE(overlap(l.scene, l.legend));
   EXPECT_GT(l.scene.size().x, 0.0);
+}
+
+// a lecture's own page (`page 1600x1200`, or --page): its aspect is kept, pillarboxed in a
+// 16:9 window; a malformed size is refused
+TEST(SlideLayout, ALecturesOwnPageKeepsItsAspect) {
+  const cv::ParsedLecture parsed =
+      cv::parseLecture("slide Four by three\npage 1600x1200\nspray 0\n", "test.lecture");
+  ASSERT_EQ(parsed.error, "");
+  ASSERT_TRUE(parsed.lecture.slides[0].options.page);
+  EXPECT_EQ(*parsed.lecture.slides[0].options.page, std::pair(1600, 1200));
+  for (const char* bad : {"1600", "1600x", "x1200", "100x1200", "1600x1200x3"}) {
+    const std::vector<std::string_view> args = {"--page", bad};
+    EXPECT_NE(cv::parseOptions(args).error, "") << bad;
+  }
+  const cv::PageFit fit = cv::fitPage({1920.0, 1080.0}, {1600.0, 1200.0});
+  EXPECT_DOUBLE_EQ(fit.scale, 0.9);
+  EXPECT_DOUBLE_EQ(fit.page.lo.x, 240.0);
+  EXPECT_DOUBLE_EQ(fit.page.hi.x, 1680.0);
+  EXPECT_DOUBLE_EQ(fit.page.lo.y, 0.0);
+  cv::Model model;
+  ASSERT_EQ(model.apply(parsed.lecture.slides[0].options), "");
+  EXPECT_EQ(model.settings.page, glm::dvec2(1600.0, 1200.0));
+  model.reset();  // the next slide keeps the lecture's page
+  EXPECT_EQ(model.settings.page, glm::dvec2(1600.0, 1200.0));
 }

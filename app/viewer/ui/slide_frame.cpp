@@ -51,7 +51,7 @@ bool onSlide(const Model& model, const UiState& ui) {
 }
 
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window) {
-  if (onSlide(model, ui)) return fitPage(window);
+  if (onSlide(model, ui)) return fitPage(window, model.settings.page);
   return {{{0.0, 0.0}, window}, 1.0};
 }
 

@@ -14,8 +14,8 @@ namespace convexloc::viewer {
 // a slide is shown: a lecture's, a paper figure's, or the presentation mode's
 bool onSlide(const Model& model, const UiState& ui);
 
-// the page in the window: the slide's fixed page letterboxed on a slide, else the whole
-// window at scale 1
+// the page in the window: the slide's fixed page (Settings::page, 1920x1080 unless --page
+// gives another) letterboxed on a slide, else the whole window at scale 1
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window);
 
 // the text's metrics in the window's current font (call outside a window that scales it)

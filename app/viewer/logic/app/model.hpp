@@ -51,6 +51,8 @@ struct Settings {
   // slide is shown (the viewer then lays out in window pixels)
   float textZoom = 1.0f;
   float pageScale = 1.0f;
+  // the page's size in units (--page; a lecture's first slide sets it for the lecture)
+  glm::dvec2 page{1920.0, 1080.0};
   // the text's scale on screen: the slide's size, the zoom and the page's scale together
   float uiScale() const { return fontScale * textZoom * pageScale; }
   // how much line widths, marker sizes and label offsets grow: with the text
