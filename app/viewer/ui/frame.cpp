@@ -82,8 +82,7 @@ void hints(const Model& model) {
 // size) fits again
 void refitOnNewRoom(Model& model, const UiState& ui, glm::dvec2 window, double now) {
   if (now >= ui.refitUntil) return;
-  const bool split = model.dim == Dim::Two && model.split.enabled();
-  const ScreenRect room = split ? frameLayout(model, ui, window, false).scene : ui.layout.scene;
+  const ScreenRect room = fitRoom(model, ui, window);
   const glm::dvec2 d =
       glm::abs(room.lo - ui.fittedScene.lo) + glm::abs(room.hi - ui.fittedScene.hi);
   if (d.x + d.y > 2.0) model.requestFit();

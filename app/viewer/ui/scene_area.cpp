@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <imgui.h>
+
 #include "ui/slide_frame.hpp"
 
 namespace convexloc::viewer {
@@ -21,12 +23,21 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
+ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window) {
+  const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
+  if (!split) return frameLayout(model, ui, window).scene;
+  // the split view's halves share the whole area (its Steps window stays over it), below
+  // the halves' headings (logic/teach/slide_layout's splitHeading: 2.2 body heights high)
+  ScreenRect room = frameLayout(model, ui, window, false).scene;
+  const double font = ImGui::GetFontSize();
+  room.lo.y = std::max(room.lo.y, sceneArea(model, ui, window).lo.y + 2.2 * font + 0.625 * font);
+  return room;
+}
+
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
-  // the split view's halves share the whole area: its Steps window stays over it
-  const bool split = model.dim == Dim::Two && model.split.enabled();
-  const SlideLayout layout = frameLayout(model, ui, window, !split);
-  model.fit(layout.scene);
-  ui.fittedScene = layout.scene;
+  const ScreenRect room = fitRoom(model, ui, window);
+  model.fit(room);
+  ui.fittedScene = room;
   ui.refitUntil = now + 1.5;
 }
 
