@@ -313,6 +313,14 @@ std::string legendText(double x, double y, std::string_view text, Rgba c, bool e
          paint("fill", c) + (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
 }
 
+// the legend box's paint: the window's own (its panel colour at the legend's 0.82, no
+// border) where the window drew it, else a framed box of the background
+std::string legendBoxPaint(const SvgScene& s) {
+  if (s.legendSize.x > 0.0) return paint("fill", withAlpha(s.panel, 0.82f));
+  return paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
+         " stroke-width=\"1\"";
+}
+
 // the legend as the window shows it: title, class rows in columns, a row per mark
 void writeLegend(const SvgScene& s, std::string& out) {
   const Legend& g = *s.legend;
@@ -341,9 +349,7 @@ void writeLegend(const SvgScene& s, std::string& out) {
   const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
          "\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) + "\" width=\"" + num(w) +
-         "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
-         paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
-         " stroke-width=\"1\"/>\n";
+         "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" + legendBoxPaint(s) + "/>\n";
   double y = lo.y + pad + 0.5 * line;
   // from a row's middle to its text's baseline (DejaVu Sans: ascent 0.928 em of 1.164)
   const double shift = 0.346 * f;
