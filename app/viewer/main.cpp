@@ -32,6 +32,7 @@
 #include "ui/panels/lecture_panel.hpp"
 #include "ui/panels/scaling_panel.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/style.hpp"
 #include "writers/screenshot.hpp"
 #include "writers/slide_export.hpp"
@@ -203,6 +204,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   cv::UiState ui = startUi(model, options, gl, samples);
+  ui.exporting = headless;  // no tooltips in written files
+  if (!options.lecture.empty()) {
+    // a lecture's slides give their own text size: --font-scale zooms it
+    model.settings.textZoom = options.fontScale;
+    model.settings.fontScale = 1.0f;
+  }
   if (!cv::startLecture(model, ui, options, headless)) return 1;
   cv::SlideExporter exporter(options.exportDir);
   cv::StyleKeeper style(model.settings, window.contentScale());
@@ -223,7 +230,10 @@ int main(int argc, char** argv) {
   while (!window.shouldClose()) {
     stats.begin();
     window.takeEvents(!headless && idle.idle());
-    // outside the ImGui frame; a new text size refits the scene (the panels changed width)
+    // a slide's page scales with the window; outside the ImGui frame, a new text size on
+    // screen (a new page scale, zoom or text size) makes the font again and refits the scene
+    model.settings.pageScale =
+        static_cast<float>(cv::pageOf(model, ui, window.frameSize().window).scale);
     if (style.update(model.settings, ui.pendingFontScale)) model.requestFit();
     window.newFrame();
 

@@ -117,7 +117,8 @@ std::string svgOf(const cv::Scene2D& scene, cv::DrawList& structure, cv::DrawLis
   const convexloc::ConvexPolygon& poly = scene.polygon();
   for (std::size_t e = 0; e < poly.size(); ++e)
     s.edges.push_back({cv::at2(cv::toGlm(poly.edgeStart(e))), cv::at2(cv::toGlm(poly.edgeEnd(e)))});
-  s.caption = "Fig. 3 <polar slabs> & \"x_T\"";
+  s.layout.caption.lines = {"Fig. 3 <polar slabs> & \"x_T\""};  // escaped where written
+  s.layout.caption.box = {{100.0, 500.0}, {700.0, 580.0}};
   return cv::sceneSvg(s);
 }
 
@@ -255,30 +256,48 @@ TEST(Legend, ListsOnlyWhatIsDrawn) {
   EXPECT_FALSE(lists(cv::legendOf(model), "section"));
 }
 
-// the SVG's caption is broken into the lines the window's caption box shows (one text
-// layout), each within the box, none losing a word
-TEST(Svg, ALongCaptionWrapsAsTheWindowsCaptionBox) {
+// the SVG writes the slide layout's caption lines (the window's caption box draws the same
+// layout), each within the box, none losing a word; the title card and Steps window too
+TEST(Svg, TheSlideLayoutsBoxesAreWrittenWithEveryLine) {
   cv::SvgScene s;
   s.size = {400.0, 300.0};
   s.fontPixels = 10.0;
   s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
   s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
-  s.caption = "a slide caption long enough to need several lines at this width, -0.2791048542";
+  cv::SlideContent c;
+  c.area = {{0.0, 0.0}, s.size};
+  c.title = "3 / 9: a <title> & more";
+  c.caption = "a slide caption long enough to need several lines at this width, -0.2791048542";
+  cv::StepsContent steps;
+  steps.model.title = "polar: point (0.1,0.2)";
+  steps.model.code = {"octant from signs", "slab from the ratio"};
+  steps.model.steps = {{"octant 3", 0}, {"slab 2", 1}};
+  steps.step = 1;
+  steps.controls = false;
+  c.steps = steps;
+  cv::SlideMetrics m;
+  m.font = 14.0;
+  m.measure = s.measure;
+  s.layout = cv::layoutSlide(c, m);
   const std::string svg = cv::sceneSvg(s);
   std::map<std::string, int> counts;
   ASSERT_EQ(checkXml(svg, counts), "");
-  const auto atCaptionSize = [&](std::string_view t) { return s.measure(t) * 1.6; };
-  const std::vector<std::string> lines = cv::captionLines(s.caption, 400.0, 8.0, atCaptionSize);
+  const std::vector<std::string>& lines = s.layout.caption.lines;
   ASSERT_GT(lines.size(), 2u);
   std::string joined;
   std::size_t at = 0;
   for (const std::string& line : lines) {
-    EXPECT_LE(atCaptionSize(line).x, 0.9 * 400.0 - 16.0) << line;
+    EXPECT_LE(1.5 * s.measure(line).x, 0.9 * 400.0) << line;
     at = svg.find(">" + line + "</text>", at);
     ASSERT_NE(at, std::string::npos) << line;
     joined += (joined.empty() ? "" : " ") + line;
   }
-  EXPECT_EQ(joined, s.caption);
+  EXPECT_EQ(joined, c.caption);
+  EXPECT_NE(svg.find("&lt;title&gt; &amp; more</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">2. slab 2</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">&gt; slab from the ratio</text>"), std::string::npos);
+  for (const char* box : {"title", "caption", "steps"})
+    EXPECT_NE(svg.find("<g id=\"" + std::string(box) + "\""), std::string::npos) << box;
 }
 
 TEST(Svg, TheLegendIsWrittenWithItsRows) {

@@ -276,21 +276,24 @@ FrameParams SceneView::frameParams(Model& model, glm::vec2 fbSize, float pixelRa
   // so does the Planes mode: the plane and the dual are the subject
   if (model.dim == Dim::Three && model.planes3d.enabled()) f.visibleMask = 0u;
   classColours(pal, f);
+  // on a slide the points are sized for its page, then scaled with it (k = 1 off a slide)
+  const double k = model.settings.pageScale;
+  const auto sized = [k](float given, std::size_t count, glm::dvec2 vp) {
+    return static_cast<float>(k) *
+           (given > 0.0f ? given : autoPointSize(count, 0.6 * vp.x * vp.y / (k * k)));
+  };
   if (model.dim == Dim::Two) {
     const Camera2D& cam = model.camera2d;
     f.clipFromLocal = cam.clipFromLocal(glm::dvec2(origin_));
     const glm::dvec2 vp = cam.viewport();
-    pointSize_ = model.settings.pointSize > 0.0f
-                     ? model.settings.pointSize
-                     : autoPointSize(model.scene2d.points().size(), 0.6 * vp.x * vp.y);
+    pointSize_ = sized(model.settings.pointSize, model.scene2d.points().size(), vp);
   } else {
     const Camera3D& cam = model.camera3d;
     f.clipFromLocal = cam.clipFromLocal(origin_);
     f.eyeLocal = glm::vec3(cam.eye() - origin_);
     const glm::dvec2 vp = cam.viewport();
-    pointSize_ = model.settings.pointSize > 0.0f
-                     ? model.settings.pointSize
-                     : 0.8f * autoPointSize(model.scene3d().points().size(), 0.6 * vp.x * vp.y);
+    pointSize_ = (model.settings.pointSize > 0.0f ? 1.0f : 0.8f) *
+                 sized(model.settings.pointSize, model.scene3d().points().size(), vp);
   }
   f.pointSize = pointSize_;
   return f;

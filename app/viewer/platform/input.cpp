@@ -33,6 +33,11 @@ constexpr KeyBinding kKeys[] = {
     {GLFW_KEY_P, {ActionKind::TogglePresent, 0}},
     {GLFW_KEY_G, {ActionKind::ToggleLegend, 0}},
     {GLFW_KEY_R, {ActionKind::ToggleRadii, 0}},
+    // the text zoom: + (= unshifted) and -, on the main keys and the keypad
+    {GLFW_KEY_EQUAL, {ActionKind::TextLarger, 0}},
+    {GLFW_KEY_KP_ADD, {ActionKind::TextLarger, 0}},
+    {GLFW_KEY_MINUS, {ActionKind::TextSmaller, 0}},
+    {GLFW_KEY_KP_SUBTRACT, {ActionKind::TextSmaller, 0}},
     // a lecture's keys: what a presentation clicker sends (its blank key sends B or '.')
     {GLFW_KEY_PAGE_DOWN, {ActionKind::NextSlide, 0}},
     {GLFW_KEY_PAGE_UP, {ActionKind::PreviousSlide, 0}},

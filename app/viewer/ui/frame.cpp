@@ -15,6 +15,7 @@
 #include "ui/panels/view_panel.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -77,6 +78,16 @@ void hints(const Model& model) {
   ImGui::PopStyleColor();
 }
 
+// a moment after a fit, a layout that leaves the scene other room (the legend took its
+// size) fits again
+void refitOnNewRoom(Model& model, const UiState& ui, glm::dvec2 window, double now) {
+  if (now >= ui.refitUntil) return;
+  const ScreenRect room = fitRoom(model, ui, window);
+  const glm::dvec2 d =
+      glm::abs(room.lo - ui.fittedScene.lo) + glm::abs(room.hi - ui.fittedScene.hi);
+  if (d.x + d.y > 2.0) model.requestFit();
+}
+
 // the left window: title, dimension, the scene's panels, View, hints
 void leftPanel(Model& model, Renderer& renderer, UiState& ui, glm::dvec2 window) {
   sideWindow("convexloc", 0.0f, leftPanelWidth(model, window), window.y);
@@ -106,7 +117,7 @@ void rightPanel(Model& model, glm::dvec2 window, float width) {
 // legend when that sits in the corner below
 void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dvec2 window) {
   const float iw =
-      std::min(360.0f * model.settings.fontScale, static_cast<float>(area.size().x) * 0.6f);
+      std::min(360.0f * model.settings.uiScale(), static_cast<float>(area.size().x) * 0.6f);
   float ih = static_cast<float>(window.y) * 0.6f;
   if (model.settings.showLegend && !ui.legendMoved)
     ih = std::min(ih,
@@ -127,7 +138,12 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
 void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   const ImGuiIO& io = ImGui::GetIO();
   const glm::dvec2 window{io.DisplaySize.x, io.DisplaySize.y};
-  const ScreenRect area = sceneArea(model, window);
+  // the slide laid out once for this frame: every box below, the labels and the SVG use it
+  tickStepPlayer(model, now);
+  ui.layout = frameLayout(model, ui, window);
+  refitOnNewRoom(model, ui, window, now);
+  drawLetterbox(model, ui, window);
+  const ScreenRect area = sceneArea(model, ui, window);
   if (model.settings.showUi) leftPanel(model, renderer, ui, window);
   const float rw = rightPanelWidth(model, window);
   captionBox(model, ui, area);
@@ -139,7 +155,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
     if (model.settings.showUi && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
-  stepsWindow(model, ui, area, now);  // also with the panels hidden; the fit leaves it room
+  stepsWindow(model, ui, now);  // also with the panels hidden; the fit leaves it room
   slideCard(model, ui, area);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
@@ -147,6 +163,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
   model.split.setArea(halves ? area : ScreenRect{});
   if (model.split.enabled() && halves) model.split.sync(model.scene2d);
+  splitHeadings(model, ui);
   advanceBuild(model, io.DeltaTime);
   scalingWindow(model, ui);
 }

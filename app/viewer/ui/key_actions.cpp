@@ -1,6 +1,7 @@
 // convexloc-viewer — the keys' actions.
 #include "ui/key_actions.hpp"
 
+#include <algorithm>
 #include <iterator>
 
 #include "ui/panels/lecture_panel.hpp"
@@ -58,6 +59,14 @@ void perform(const Action& action, Model& model, UiState& ui) {
       model.settings.showLegend = !model.settings.showLegend;
       model.requestFit();
       break;
+    case ActionKind::TextLarger:
+    case ActionKind::TextSmaller: {
+      // an eighth per step, between half and three times the slide's own size
+      const float f = action.kind == ActionKind::TextLarger ? 1.125f : 1.0f / 1.125f;
+      model.settings.textZoom = std::clamp(model.settings.textZoom * f, 0.5f, 3.0f);
+      model.requestFit();
+      break;
+    }
     case ActionKind::ChooseMethod:
       if (model.dim == Dim::Two)
         model.scene2d.setMethod(kAllMethods2D[action.method]);

@@ -18,10 +18,8 @@ namespace {
 // the labels of `lists` over the scene, placed as the SVG places them: no two overlap, none
 // sits on a marker
 void writeLabels(const Model& model, ImDrawList* dl, const ScreenProjection& project,
-                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows) {
-  const glm::dvec2 vp =
-      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
-  const ScreenRect area = sceneArea(model, vp);
+                 std::span<const DrawList* const> lists, std::span<const PixelBox> windows,
+                 ScreenRect area) {
   const Palette& pal = paletteFor(model.settings.theme);
   const ImU32 shadow = packAbgr(withAlpha(pal.background, 0.85f));
   const float halo = std::max(1.0f, std::round(model.settings.drawScale()));
@@ -52,21 +50,31 @@ void pushClip(ImDrawList* dl, const ScreenRect& r) {
 
 }  // namespace
 
+std::vector<PixelBox> labelKeepOffs(const UiState& ui) {
+  std::vector<PixelBox> boxes;
+  for (const float* w : {ui.legendRect, ui.stepsRect})
+    if (w[2] > w[0]) boxes.push_back({{w[0], w[1]}, {w[2], w[3]}});
+  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.splitHeadings[0].box,
+                              ui.splitHeadings[1].box})
+    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) boxes.push_back({r.lo, r.hi});
+  return boxes;
+}
+
 void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  // the windows floating over the scene, which labels keep off where they can
-  std::vector<PixelBox> windows;
-  for (const float* w : {ui.legendRect, ui.stepsRect})
-    if (w[2] > w[0]) windows.push_back({{w[0], w[1]}, {w[2], w[3]}});
+  const std::vector<PixelBox> windows = labelKeepOffs(ui);
+  const glm::dvec2 vp =
+      model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
+  const ScreenRect area = sceneArea(model, ui, vp);
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   if (!split) {
-    writeLabels(model, dl, sceneProjection(model), lists, windows);
+    writeLabels(model, dl, sceneProjection(model), lists, windows, area);
     return;
   }
   // each half's labels, clipped to it, the right half's through its own camera
   pushClip(dl, model.split.left());
-  writeLabels(model, dl, sceneProjection(model), lists, windows);
+  writeLabels(model, dl, sceneProjection(model), lists, windows, area);
   dl->PopClipRect();
   pushClip(dl, model.split.right());
   const Camera2D right = model.split.rightCamera(model.camera2d);
@@ -76,9 +84,9 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
       [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
         return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
       },
-      rightLists, windows);
+      rightLists, windows, area);
   dl->PopClipRect();
-  splitDecorations(model);
+  splitDecorations(model, ui);
 }
 
 }  // namespace convexloc::viewer

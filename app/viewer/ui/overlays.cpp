@@ -19,8 +19,13 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
     const float y = std::clamp(ui.legendPos[1], 0.0f, static_cast<float>(window.y) - 30.0f);
     ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
   } else {
-    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - 10.0f,
-                                   static_cast<float>(area.hi.y) - ui.captionHeight - 10.0f),
+    // the layout's lower right corner (logic/teach/slide_layout), with the padding
+    const SlideLayout& l = ui.layout;
+    const glm::dvec2 corner = l.legend.hi.x > 0.0
+                                  ? l.legend.hi
+                                  : glm::dvec2(area.hi.x, area.hi.y - ui.captionHeight) -
+                                        glm::dvec2(10.0 * model.settings.uiScale());
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(corner.x), static_cast<float>(corner.y)),
                             ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   }
   ImGui::SetNextWindowBgAlpha(0.82f);
@@ -43,7 +48,7 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   } else if (ImGui::IsWindowHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     ui.legendMoved = false;  // back to the corner, and the scene fitted beside it
     model.requestFit();
-  } else if (ImGui::IsWindowHovered()) {
+  } else if (ImGui::IsWindowHovered() && !ui.exporting) {
     ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
   }
   if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
@@ -57,34 +62,41 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   ImGui::End();
 }
 
-void captionBox(Model& model, UiState& ui, ScreenRect area) {
-  // a caption of another height (a new slide's) leaves the scene other room: refit
-  struct Refit {
-    Model& model;
-    const float before;
-    const float& now;
-    ~Refit() {
-      if (std::abs(now - before) > 1.0f) model.requestFit();
-    }
-  } refit{model, ui.captionHeight, ui.captionHeight};
-  ui.captionHeight = 0.0f;
-  if (model.settings.caption.empty()) return;
-  ImGui::SetNextWindowPos(
-      ImVec2(static_cast<float>(area.middle().x), static_cast<float>(area.hi.y) - 8.0f),
-      ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
+  if (t.lines.empty()) return;
+  const glm::dvec2 size = t.box.size();
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(t.box.lo.x), static_cast<float>(t.box.lo.y)));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(size.x), static_cast<float>(size.y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
-  ImGui::Begin("##caption", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
-                   ImGuiWindowFlags_NoInputs);
-  ImGui::SetWindowFontScale(1.5f);
-  const auto measure = [](std::string_view t) { return measureText(t); };
-  for (const std::string& line : captionLines(model.settings.caption, area.size().x,
-                                              ImGui::GetStyle().WindowPadding.x, measure))
-    ImGui::TextUnformatted(line.c_str());
-  ui.captionHeight = ImGui::GetWindowHeight() + 8.0f;
+  ImGui::Begin(id, nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();  // the body size, before any scaling
+  // each line where the layout puts it: the padding, then line after line
+  float y = static_cast<float>(t.box.lo.y) + style.WindowPadding.x;
+  for (std::size_t k = 0; k < t.lines.size(); ++k) {
+    const float scale = k < large ? static_cast<float>(t.scale) : 1.0f;
+    ImGui::SetWindowFontScale(scale);
+    ImGui::SetCursorScreenPos(ImVec2(static_cast<float>(t.box.lo.x) + style.WindowPadding.x, y));
+    if (k < large)
+      ImGui::TextUnformatted(t.lines[k].c_str());
+    else
+      ImGui::TextColored(im(rest), "%s", t.lines[k].c_str());
+    y += scale * font + style.ItemSpacing.y;
+  }
+  ImGui::SetWindowFontScale(1.0f);
   ImGui::End();
+}
+
+void captionBox(Model& model, UiState& ui, ScreenRect area) {
+  const TextBox& t = ui.layout.caption;
+  const float before = ui.captionHeight;
+  ui.captionHeight = t.lines.empty() ? 0.0f : static_cast<float>(area.hi.y - t.box.lo.y);
+  // a caption of another height (a new slide's) leaves the scene other room: refit
+  if (std::abs(ui.captionHeight - before) > 1.0f) model.requestFit();
+  layoutBox("##caption", t, t.lines.size(), paletteFor(model.settings.theme).text);
 }
 
 void toast(Model& model, UiState& ui, ScreenRect area, double now) {

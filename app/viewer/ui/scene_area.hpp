@@ -13,11 +13,19 @@ namespace convexloc::viewer {
 // the panel widths in window pixels, at the current font scale
 float leftPanelWidth(const Model& model, glm::dvec2 window);
 float rightPanelWidth(const Model& model, glm::dvec2 window);
-// the part of the window the scene has to itself (right of the panel when it shows)
-ScreenRect sceneArea(const Model& model, glm::dvec2 window);
+// the page (ui/slide_frame: a slide's letterboxed page, else the window) less the panels
+ScreenRect pageArea(const Model& model, const UiState& ui, glm::dvec2 window);
+// the part of the page the scene has to itself: right of the panel when it shows, below a
+// lecture's slide card
+ScreenRect sceneArea(const Model& model, const UiState& ui, glm::dvec2 window);
 
-// fits the camera to the shape in the scene area, leaving room for the caption and the
-// floating legend; for `now` + 1.5 s a change of the legend's size fits again
+// the room the camera fits the shape into: the slide layout's (ui/slide_frame), or in the
+// split view the whole area below the halves' headings
+ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window);
+
+// fits the camera to the shape in the slide layout's room for the scene (beside the card,
+// the caption, the legend and the Steps window); for `now` + 1.5 s a change of the
+// layout's room (the legend took its size) fits again
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now);
 
 }  // namespace convexloc::viewer

@@ -91,7 +91,19 @@ void applyStyle(Theme theme, float scale) {
   c[ImGuiCol_SliderGrabActive] = im(accent);
   c[ImGuiCol_PlotHistogram] = im(p.extraEdges);
   c[ImGuiCol_PlotHistogramHovered] = im(p.crowded);
+  // ImGui floors the sizes it scales; the spacings a slide's layout is made of are kept
+  // exact, so that a slide keeps its proportions at any page scale
+  const ImVec2 window = style.WindowPadding, frame = style.FramePadding, item = style.ItemSpacing,
+               inner = style.ItemInnerSpacing, cell = style.CellPadding;
+  const float indent = style.IndentSpacing;
   style.ScaleAllSizes(scale);
+  const auto times = [scale](ImVec2 v) { return ImVec2(v.x * scale, v.y * scale); };
+  style.WindowPadding = times(window);
+  style.FramePadding = times(frame);
+  style.ItemSpacing = times(item);
+  style.ItemInnerSpacing = times(inner);
+  style.CellPadding = times(cell);
+  style.IndentSpacing = indent * scale;
   ImGui::GetStyle() = style;
 }
 
@@ -108,7 +120,8 @@ void loadFont(float pixels, bool recreateTexture) {
     // Latin-1, punctuation, super- and subscripts, arrows, mathematical operators
     static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2000, 0x209F, 0x2190, 0x21FF,
                                      0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
-    if (io.Fonts->AddFontFromFileTTF(path, std::round(pixels), &cfg, ranges)) {
+    // at the exact size (not rounded): a slide's text keeps its width at any page scale
+    if (io.Fonts->AddFontFromFileTTF(path, pixels, &cfg, ranges)) {
       loaded = true;
       break;
     }
@@ -127,22 +140,27 @@ void loadFont(float pixels, bool recreateTexture) {
 }
 
 StyleKeeper::StyleKeeper(const Settings& settings, float dpi)
-    : dpi_(dpi), theme_(settings.theme), scale_(settings.fontScale) {
-  loadFont(kBaseFontPixels * settings.fontScale * dpi_, false);
+    : dpi_(dpi), theme_(settings.theme), scale_(settings.uiScale()) {
+  loadFont(kBaseFontPixels * scale_ * dpi_, false);
   ImGui::GetIO().FontGlobalScale = 1.0f / dpi_;
   applyStyle(theme_, scale_);
 }
 
 bool StyleKeeper::update(Settings& settings, float& pendingFontScale) {
-  const bool resized = pendingFontScale > 0.0f && pendingFontScale != settings.fontScale;
   if (pendingFontScale > 0.0f) {
     settings.fontScale = pendingFontScale;
     pendingFontScale = 0.0f;
-    loadFont(kBaseFontPixels * settings.fontScale * dpi_, true);
   }
-  if (theme_ == settings.theme && scale_ == settings.fontScale) return resized;
+  const float scale = settings.uiScale();
+  // the atlas is made again at the text's new pixel size (crisp, not a scaled bitmap); a
+  // change under half a percent (a window dragged by a pixel) keeps the one there is
+  const bool resized = std::abs(scale - scale_) > 0.005f * scale_;
+  if (!resized && theme_ == settings.theme) return false;
+  if (resized) {
+    scale_ = scale;
+    loadFont(kBaseFontPixels * scale_ * dpi_, true);
+  }
   theme_ = settings.theme;
-  scale_ = settings.fontScale;
   applyStyle(theme_, scale_);
   return resized;
 }

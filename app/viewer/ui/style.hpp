@@ -14,14 +14,15 @@ void applyStyle(Theme theme, float scale);
 // the GL backend's font texture is made again.
 void loadFont(float pixels, bool recreateTexture);
 
-// Keeps ImGui's font and style in step with the settings' theme and text size, on a
-// screen of `dpi` window pixels per point. Changes are applied outside a frame.
+// Keeps ImGui's font and style in step with the settings' theme and text scale on screen
+// (Settings::uiScale: the text size, the zoom and a slide's page scale), on a screen of
+// `dpi` framebuffer pixels per window pixel. Changes are applied outside a frame.
 class StyleKeeper {
  public:
   // loads the font and applies the style of `settings`
   StyleKeeper(const Settings& settings, float dpi);
   // Takes a font scale the View panel asked for (> 0), and restyles after any change.
-  // Returns true when the text size changed.
+  // Returns true when the text's size on screen changed.
   bool update(Settings& settings, float& pendingFontScale);
 
  private:

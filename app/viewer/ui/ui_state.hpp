@@ -11,6 +11,7 @@
 #include "logic/app/lecture.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
+#include "logic/teach/slide_layout.hpp"
 
 namespace convexloc::viewer {
 
@@ -35,13 +36,24 @@ struct UiState {
   char exportDirEdit[1024] = "";  // the View panel's box for it
   bool legendMoved = false;       // the user dragged the legend: it stays where put
   bool legendDragging = false;    // a drag that began on the legend goes on
+  bool exporting = false;         // files are being written: no tooltips, no hover
   float legendPos[2] = {0.0f, 0.0f};
   float legendSize[2] = {0.0f, 0.0f};  // the floating legend's size in the last frame
   float captionHeight = 0.0f;          // the caption box's height in the last frame
   std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
-  double refitUntil = 0.0;             // until then a change of the legend's size refits the scene
+  double refitUntil = 0.0;  // until then a change of the layout's scene room refits the scene
+  ScreenRect fittedScene;   // the room the camera was last fitted into
+  // the slide's layout this frame (ui/slide_frame): what the window's boxes and the SVG draw
+  SlideLayout layout;
+  TextBox splitHeadings[2];  // the split view's headings this frame (none: no lines)
+  // the Why O(1) window this frame and the page of plots in it (empty: not shown), for the SVG
+  struct WhyPlots {
+    ScreenRect rect;
+    double fontPx = 0.0;
+    bool solid = false;
+  } whyPlots;
+  ScreenRect whyWindow;
   // the Steps window
-  float stepsSize[2] = {0.0f, 0.0f};  // its size in the last frame; zero while hidden
   int stepsCode = -1;  // its pseudo-code: 1 whole, 0 the current line, -1 whole where wide
   // the floating legend's and the Steps window's rectangles this frame (x0, y0, x1, y1; all
   // zero where not shown), which the scene's labels keep off

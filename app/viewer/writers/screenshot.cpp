@@ -81,7 +81,7 @@ bool svgIfAsked(Model& model, const SceneView& view, UiState& ui, const std::str
   ui.svgRequested = false;
   const std::string path = targetOf(ui, finalPath, "svg");
   std::string problem;
-  writeSceneSvg(model, view, path, problem);
+  writeSceneSvg(model, view, ui, path, problem);
   return report(model, ui, "SVG", path, problem, !finalPath.empty(), now);
 }
 

@@ -23,7 +23,7 @@ bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui,
   std::snprintf(name, sizeof name, "slide-%02zu", ui.show.current + 1);
   const std::string path = (std::filesystem::path(dir_) / name).string();
   std::string problem = saveScreenshot(path + ".png", width, height);
-  if (problem.empty()) writeSceneSvg(model, view, path + ".svg", problem);
+  if (problem.empty()) writeSceneSvg(model, view, ui, path + ".svg", problem);
   if (!problem.empty()) {
     std::cerr << "convexloc-viewer: " << problem << "\n";
     return false;

@@ -4,7 +4,9 @@
 #include <imgui.h>
 
 #include "logic/app/legend.hpp"
+#include "ui/label_overlay.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 #include "writers/svg_writer.hpp"
 
@@ -32,10 +34,23 @@ void sprayOf(const Scene& scene, const Model& model, const SceneView& view, SvgS
 }
 
 // 2D: the structure under the overlay, core's cells and the polygon's edges
-void scene2d(const Model& model, const SceneView& view, SvgScene& s) {
+void scene2d(const Model& model, const SceneView& view, const UiState& ui, SvgScene& s) {
   s.base = {&view.structure()};
   s.overlay = {&view.overlay()};
   const Scene2D& scene = model.scene2d;
+  if (model.split.enabled() && !model.lines2d.enabled()) {
+    SvgSplit split;
+    split.left = model.split.left();
+    split.right = model.split.right();
+    const Camera2D right = model.split.rightCamera(model.camera2d);
+    split.project = [right](glm::dvec3 p) -> std::optional<glm::dvec3> {
+      return glm::dvec3(right.toScreen({p.x, p.y}), 0.0);
+    };
+    split.base = {&view.splitStructure()};
+    split.overlay = {&view.splitOverlay()};
+    split.headings = {ui.splitHeadings[0], ui.splitHeadings[1]};
+    s.split = std::move(split);
+  }
   if (model.lines2d.enabled()) {
     s.points.visibleMask = 0;  // the Lines mode hides the spray
     return;
@@ -57,12 +72,51 @@ void scene3d(const Model& model, const SceneView& view, SvgScene& s) {
   s.base = {&view.mesh(), &view.structure(), &view.section()};
   s.overlay = {&view.overlay()};
   sprayOf(model.scene3d(), model, view, s);
+  if (model.planes3d.enabled()) s.points.visibleMask = 0;  // the Planes mode hides the spray
+}
+
+// the slide's layout and the Steps window's colours, as the window draws them
+void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
+  const Palette& pal = paletteFor(model.settings.theme);
+  const glm::dvec2 window = s.size;
+  s.layout = ui.layout;
+  s.page = pageOf(model, ui, window).page;
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  s.panel = {bg.x, bg.y, bg.z, 0.9f};
+  s.rounding = ImGui::GetStyle().WindowRounding;
+  const SlideMetrics m = windowMetrics();
+  s.layoutPadding = m.padding;
+  s.layoutSpacing = m.spacing;
+  s.highlight = pal.hoverEdge;
+  // the Why O(1) window, its plots as the window draws them
+  const UiState::WhyPlots& why = ui.whyPlots;
+  if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
+    s.window = ui.whyWindow;
+    s.windowTitle = "Why O(1): cost against N";
+    const ImVec4 bar = ImGui::GetStyleColorVec4(ImGuiCol_TitleBgActive);
+    s.windowBar = {bar.x, bar.y, bar.z, 1.0f};
+    s.windowBarHeight = ImGui::GetFrameHeight();
+    if (why.fontPx > 0.0) {
+      const ScalingProgress p = model.scaling->snapshot();
+      const PlotStyle style = plotStyle(model.settings.theme, why.fontPx);
+      s.windowSvg = svgPlots(
+          scalingDrawings(p.result, model.scaling->config(), style, why.rect.size(), why.solid),
+          why.rect.lo, why.fontPx);
+    }
+  }
+  s.step = model.step();
+  if (const std::optional<StepModel> steps = model.steps(); steps && ui.layout.steps) {
+    const Location result = model.dim == Dim::Two ? model.scene2d.probe()->trace.result
+                                                  : model.scene3d().probe()->trace.result;
+    for (const Step& st : steps->steps)
+      s.stepColours.push_back(stepColour(st, pal, textColourOf(pal, result)));
+  }
 }
 
 }  // namespace
 
-bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
-                   std::string& error) {
+bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
+                   const std::string& path, std::string& error) {
   const Palette& pal = paletteFor(model.settings.theme);
   SvgScene s;
   s.size = model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
@@ -74,17 +128,24 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const std::string&
   s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
   s.project = sceneProjection(model);
-  const ScreenRect area = sceneArea(model, s.size);
+  const ScreenRect area = sceneArea(model, ui, s.size);
   s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
-  s.caption = model.settings.caption;
-  // the legend in the scene's lower right corner, above the caption
+  s.keepOff = labelKeepOffs(ui);
   s.textMuted = pal.textMuted;
+  slideBoxes(model, ui, s);
+  // the legend where the window put it (the layout's corner, or where it was dragged); with
+  // the panels shown (the legend in the right one), in the scene's lower right corner
   if (model.settings.showLegend) {
     s.legend = legendOf(model);
-    s.legendCorner = area.hi - glm::dvec2(10.0, 10.0);  // the caption's lines push it up
+    if (ui.legendRect[2] > ui.legendRect[0]) {
+      s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
+      s.legendSize = {ui.legendRect[2] - ui.legendRect[0], ui.legendRect[3] - ui.legendRect[1]};
+    } else {
+      s.legendCorner = area.hi - glm::dvec2(10.0);
+    }
   }
   if (model.dim == Dim::Two)
-    scene2d(model, view, s);
+    scene2d(model, view, ui, s);
   else
     scene3d(model, view, s);
   return writeTextFile(path, sceneSvg(s), error);

@@ -7,15 +7,17 @@
 
 #include "gl/scene_view.hpp"
 #include "logic/app/model.hpp"
+#include "ui/ui_state.hpp"
 
 #include "writers/svg_writer.hpp"
 
 namespace convexloc::viewer {
 
 // Writes the scene as the window shows it (the view synced for this frame, after a frame
-// has been drawn: the window's font measures the labels) to `path` as SVG. Returns false
+// has been drawn: the window's font measures the labels), with the slide's boxes of
+// `ui.layout`, the legend where the window put it, to `path` as SVG. Returns false
 // and sets `error` (the path and why) when it cannot be written.
-bool writeSceneSvg(const Model& model, const SceneView& view, const std::string& path,
-                   std::string& error);
+bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
+                   const std::string& path, std::string& error);
 
 }  // namespace convexloc::viewer

@@ -9,33 +9,13 @@
 #include <fstream>
 
 #include "logic/base/format.hpp"
+#include "writers/svg_slide.hpp"
 
 namespace convexloc::viewer {
 namespace {
 
-// a number for an attribute: two decimals are a hundredth of a pixel
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", std::abs(v) < 5e-3 ? 0.0 : v);
-  return buf;
-}
-
-// "#rrggbb"
-std::string rgb(Rgba c) {
-  auto byte = [](float x) {
-    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255));
-  };
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
-  return buf;
-}
-
-// ` NAME="#rrggbb"`, and its opacity when not opaque
-std::string paint(const char* name, Rgba c) {
-  std::string s = std::string(" ") + name + "=\"" + rgb(c) + "\"";
-  if (c.a < 0.999f) s += std::string(" ") + name + "-opacity=\"" + num(c.a) + "\"";
-  return s;
-}
+using svg::num;
+using svg::paint;
 
 // one element of the picture and the depth it is sorted by (3D)
 struct Item {
@@ -275,9 +255,10 @@ std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char
 void writeLabels(const SvgScene& s, std::string& out) {
   std::vector<const DrawList*> lists = s.base;
   lists.insert(lists.end(), s.overlay.begin(), s.overlay.end());
-  const auto placed = layoutSceneLabels(
-      lists, s.base.size(), s.project,
-      s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure, s.scale);
+  const auto placed =
+      layoutSceneLabels(lists, s.base.size(), s.project,
+                        s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure,
+                        s.scale, 400, s.keepOff);
   out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
          num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
          paint("stroke", withAlpha(s.background, 0.85f)) +
@@ -295,48 +276,14 @@ void writeLabels(const SvgScene& s, std::string& out) {
   out += "</g>\n";
 }
 
-// the caption's font size in pixels: ImGui's caption box draws at 1.5 times the window's font,
-// which in SVG ems (see SvgScene::fontPixels) is about 1.6 times fontPixels
-double captionPixels(const SvgScene& s) {
-  return 1.6 * s.fontPixels;
-}
-
-// the caption's lines as the window breaks them (text_layout's captionLines), measured at
-// the caption's size
-std::vector<std::string> captionOf(const SvgScene& s) {
-  if (s.caption.empty()) return {};
-  const double px = captionPixels(s);
-  const double width = s.labelArea.empty() ? s.size.x : s.labelArea.hi.x - s.labelArea.lo.x;
-  return captionLines(s.caption, width, 0.5 * px,
-                      [&](std::string_view t) { return s.measure(t) * 1.6; });
-}
-
-// the height the caption's lines take at the bottom (0 without a caption)
-double captionHeight(const SvgScene& s, std::size_t lines) {
-  return lines == 0 ? 0.0 : (1.25 * static_cast<double>(lines) + 0.875) * captionPixels(s);
-}
-
-// the thinning note and the caption, along the bottom
-void writeNotes(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride,
-                const std::vector<std::string>& caption) {
-  if (stride > 1) {
-    const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
-                             " of " + grouped(visible) + " drawn";
-    out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
-           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
-           "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
-  }
-  // under the middle of the scene area, as the window's caption box, the last line lowest
-  const double px = captionPixels(s);
-  const double x =
-      s.labelArea.empty() ? 0.5 * s.size.x : 0.5 * (s.labelArea.lo.x + s.labelArea.hi.x);
-  for (std::size_t k = 0; k < caption.size(); ++k) {
-    const double y = s.size.y - 1.2 * px - 1.25 * px * static_cast<double>(caption.size() - 1 - k);
-    out += "<text class=\"caption\" x=\"" + num(x) + "\" y=\"" + num(y) +
-           "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(px) +
-           "\" text-anchor=\"middle\"" + paint("fill", s.text) + ">" + xmlEscape(caption[k]) +
-           "</text>\n";
-  }
+// the thinning note along the bottom
+void writeNote(const SvgScene& s, std::string& out, std::size_t visible, std::size_t stride) {
+  if (stride <= 1) return;
+  const std::string note = "spray thinned for the SVG: 1 point in " + std::to_string(stride) +
+                           " of " + grouped(visible) + " drawn";
+  out += "<!-- " + note + " -->\n<text class=\"note\" x=\"10\" y=\"" + num(s.size.y - 10.0) +
+         "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"" + num(0.8 * s.fontPixels) +
+         "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
 }
 
 // a legend row's swatch, `h` high, its left edge at x and its middle at y
@@ -360,16 +307,26 @@ std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
   return e + "/>";
 }
 
-// `text` at (x, y), its baseline centred on y, anchored at its start or end
+// `text` with its baseline at (x, y), anchored at its start or end
 std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
-  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + paint("fill", c) +
-         (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" xml:space=\"preserve\"" +
+         paint("fill", c) + (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+}
+
+// the legend box's paint: the window's own (its panel colour at the legend's 0.82, no
+// border) where the window drew it, else a framed box of the background
+std::string legendBoxPaint(const SvgScene& s) {
+  if (s.legendSize.x > 0.0) return paint("fill", withAlpha(s.panel, 0.82f));
+  return paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
+         " stroke-width=\"1\"";
 }
 
 // the legend as the window shows it: title, class rows in columns, a row per mark
-void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
+void writeLegend(const SvgScene& s, std::string& out) {
   const Legend& g = *s.legend;
-  const double f = s.fontPixels, line = 1.5 * f, pad = 0.8 * f, sw = 0.7 * f + 0.5 * f;
+  // the window's rows: a body line and a spacing each, inside its padding
+  const double f = s.fontPixels, line = 1.164 * f + s.layoutSpacing, pad = s.layoutPadding;
+  const double sw = 0.7 * f + 0.5 * f;
   auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
   double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
   for (const LegendRow& r : g.classes) {
@@ -377,35 +334,93 @@ void writeLegend(const SvgScene& s, std::string& out, double captionHigh) {
     count = std::max(count, width(r.count));
     share = std::max(share, width(r.share));
   }
-  for (const LegendRow& r : g.rows) rows = std::max(rows, sw + width(r.text));
+  // a mark's text may run over lines (the y-gap's cost)
+  std::size_t rowLines = 0;
+  for (const LegendRow& r : g.rows)
+    for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
+      rows = std::max(rows, sw + width(t));
+      ++rowLines;
+    }
   const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
   const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
-  const double w = std::max({heading, classes, rows}) + 2.0 * pad;
-  const double h = line * static_cast<double>(1 + g.classes.size() + g.rows.size()) + 2.0 * pad;
-  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h + captionHigh);
+  double w = std::max({heading, classes, rows}) + 2.0 * pad;
+  double h = line * static_cast<double>(1 + g.classes.size() + rowLines) + 2.0 * pad;
+  if (s.legendSize.x > 0.0) w = s.legendSize.x, h = s.legendSize.y;  // the window's own box
+  const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
-         "\" dominant-baseline=\"central\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) +
-         "\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" +
-         paint("fill", withAlpha(s.background, 0.9f)) + paint("stroke", withAlpha(s.text, 0.2f)) +
-         " stroke-width=\"1\"/>\n";
+         "\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) + "\" width=\"" + num(w) +
+         "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" + legendBoxPaint(s) + "/>\n";
   double y = lo.y + pad + 0.5 * line;
+  // from a row's middle to its text's baseline (DejaVu Sans: ascent 0.928 em of 1.164)
+  const double shift = 0.346 * f;
   const double x = lo.x + pad;
-  out += "  " + legendText(x, y, g.title, s.text) + "\n";
+  out += "  " + legendText(x, y + shift, g.title, s.text) + "\n";
   if (!g.subtitle.empty())
-    out += "  " + legendText(x + width(g.title) + 0.4 * f, y, g.subtitle, s.textMuted) + "\n";
+    out +=
+        "  " + legendText(x + width(g.title) + 0.4 * f, y + shift, g.subtitle, s.textMuted) + "\n";
   for (const LegendRow& r : g.classes) {
     y += line;
-    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text);
+    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y + shift, r.text, s.text);
     if (!r.count.empty())
-      out += legendText(x + sw + name + 0.8 * f + count, y, r.count, s.text, true) +
-             legendText(x + sw + name + 1.4 * f + count, y, r.share, s.textMuted);
+      out += legendText(x + sw + name + 0.8 * f + count, y + shift, r.count, s.text, true) +
+             legendText(x + sw + name + 1.4 * f + count, y + shift, r.share, s.textMuted);
     out += "\n";
   }
+  // the marks under the classes, a spacing apart; a mark's lines as one text's, unspaced
+  if (!g.rows.empty() && !g.classes.empty()) y += s.layoutSpacing;
   for (const LegendRow& r : g.rows) {
     y += line;
-    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y, r.text, s.text) + "\n";
+    out += "  " + swatchSvg(r, x, y, f);
+    bool first = true;
+    for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
+      if (!first) y += 1.164 * f;
+      first = false;
+      out += legendText(x + sw, y + shift, t, s.text);
+    }
+    out += "\n";
   }
   out += "</g>\n";
+}
+
+// a rectangle as a clip path `id`
+std::string clipSvg(const char* id, const ScreenRect& r) {
+  return "<clipPath id=\"" + std::string(id) + "\"><rect x=\"" + num(r.lo.x) + "\" y=\"" +
+         num(r.lo.y) + "\" width=\"" + num(r.size().x) + "\" height=\"" + num(r.size().y) +
+         "\"/></clipPath>\n";
+}
+
+// the split view: each half clipped to its rectangle (the right one through its own
+// projection and lists), the divider, the headings over the labels
+void writeSplit(const SvgScene& s, std::string& out, std::size_t& visible, std::size_t& stride) {
+  const SvgSplit& split = *s.split;
+  out += "<defs>\n" + clipSvg("left-half", split.left) + clipSvg("right-half", split.right) +
+         "</defs>\n<g id=\"left-half\" clip-path=\"url(#left-half)\">\n";
+  SvgScene left = s;
+  left.labelArea = {split.left.lo, split.left.hi};
+  writeScene(left, out, visible, stride);
+  writeLabels(left, out);
+  out += "</g>\n<g id=\"right-half\" clip-path=\"url(#right-half)\">\n";
+  SvgScene right = s;
+  right.project = split.project;
+  right.base = split.base;
+  right.overlay = split.overlay;
+  right.labelArea = {split.right.lo, split.right.hi};
+  writeScene(right, out, visible, stride);
+  writeLabels(right, out);
+  out += "</g>\n<line id=\"divider\" x1=\"" + num(split.right.lo.x) + "\" y1=\"" +
+         num(split.right.lo.y) + "\" x2=\"" + num(split.right.lo.x) + "\" y2=\"" +
+         num(split.right.hi.y) + "\"" + paint("stroke", s.textMuted) + " stroke-width=\"2\"/>\n";
+  const double em = s.fontPixels;
+  for (const TextBox& t : split.headings) {
+    if (t.lines.empty()) continue;
+    const double pad = 0.6 * 1.164 * em;
+    out += "<g class=\"heading\"><rect x=\"" + num(t.box.lo.x) + "\" y=\"" + num(t.box.lo.y) +
+           "\" width=\"" + num(t.box.size().x) + "\" height=\"" + num(t.box.size().y) +
+           "\" rx=\"4\"" + paint("fill", withAlpha(s.background, 0.9f)) + "/><text x=\"" +
+           num(t.box.lo.x + pad) + "\" y=\"" + num(t.box.lo.y + 0.5 * pad + 0.928 * em) +
+           "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(em) + "\"" +
+           paint("fill", s.text) + ">" + xmlEscape(t.lines[0]) + "</text></g>\n";
+  }
 }
 
 }  // namespace
@@ -419,11 +434,16 @@ std::string sceneSvg(const SvgScene& s) {
          "/>\n";
   writeOutlines(s, out);
   std::size_t visible = 0, stride = 1;
-  writeScene(s, out, visible, stride);
-  writeLabels(s, out);
-  const std::vector<std::string> caption = captionOf(s);
-  writeNotes(s, out, visible, stride, caption);
-  if (s.legend) writeLegend(s, out, captionHeight(s, caption.size()));
+  if (s.split) {
+    writeSplit(s, out, visible, stride);
+  } else {
+    writeScene(s, out, visible, stride);
+    writeLabels(s, out);
+  }
+  writeNote(s, out, visible, stride);
+  writeLetterbox(s, out);
+  writeSlideBoxes(s, out);
+  if (s.legend) writeLegend(s, out);
   out += "</svg>\n";
   return out;
 }

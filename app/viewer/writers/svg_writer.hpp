@@ -20,6 +20,7 @@
 #include "logic/base/colour.hpp"
 #include "logic/base/draw_list.hpp"
 #include "logic/base/xml.hpp"
+#include "logic/teach/slide_layout.hpp"
 #include "logic/view/scene_labels.hpp"
 
 namespace convexloc::viewer {
@@ -32,6 +33,15 @@ struct SvgPoints {
   float size = 4.0f;          // diameter in window pixels; boundary points 1.7 times it
   Rgba colours[3];            // inside, boundary, outside
   Rgba rim;                   // the boundary points' rim
+};
+
+// the split view: the right half's projection and draw lists over the same points, each
+// half clipped to its rectangle, the divider between them and each half's heading
+struct SvgSplit {
+  ScreenRect left, right;
+  ScreenProjection project;  // the right half's
+  std::vector<const DrawList*> base, overlay;
+  std::vector<TextBox> headings;
 };
 
 // everything one picture is written from
@@ -49,17 +59,36 @@ struct SvgScene {
   std::vector<const DrawList*> overlay;  // drawn over everything
   SvgPoints points;
   std::size_t maxPoints = 4000;
+  std::optional<SvgSplit> split;  // 2D: the split view's second half
   // core's cells and the shape's edges, as selectable outlines (drawn neither filled nor
   // stroked: the picture itself comes from the draw lists)
   std::vector<std::vector<glm::dvec3>> cells;
   std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
-  std::string caption;  // written large at the bottom when not empty, in the window's lines
-  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels), or
-  // above the caption where there is one
+  // the slide's boxes (logic/teach/slide_layout), in window pixels: the title card, the
+  // caption, the Steps window written where the window draws them (writers/svg_slide)
+  SlideLayout layout;
+  ScreenRect page;  // a slide's letterboxed page: bars beside it (empty: none)
+  Rgba panel;       // the boxes' fill (the window's)
+  double rounding = 6.0;
+  double layoutPadding = 12.0, layoutSpacing = 6.0;  // the layout's metrics (SlideMetrics)
+  // the Steps window's colours: each step's line, the current step's highlight and line
+  std::vector<Rgba> stepColours;
+  Rgba highlight;
+  int step = -1;  // the step shown (-1: all)
+  // a window over the scene written as it is drawn: its box, opaque, and its SVG inside
+  // (the Why O(1) plots); empty: none
+  ScreenRect window;
+  std::string windowTitle;  // on its title bar, `windowBarHeight` high
+  Rgba windowBar;
+  double windowBarHeight = 0.0;
+  std::string windowSvg;
+  // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  PixelBox labelArea;  // the scene area: labels stay in it, the caption under its middle
-  Rgba textMuted;      // the legend's counts and subtitle
+  glm::dvec2 legendSize{0.0};  // the window's legend box (zero: sized from its rows)
+  PixelBox labelArea;             // the scene area: labels stay in it
+  std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
+  Rgba textMuted;                 // the legend's counts and subtitle
 };
 
 // the whole SVG document

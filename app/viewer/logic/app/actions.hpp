@@ -23,6 +23,8 @@ enum class ActionKind : std::uint8_t {
   SaveSvg,        // the scene as an SVG file in the export directory
   TogglePresent,  // presentation mode on or off
   ToggleLegend,   // the legend shown or hidden
+  TextLarger,     // the text zoom up a step (+)
+  TextSmaller,    // the text zoom down a step (-)
   // a lecture's slides
   NextSlide,
   PreviousSlide,

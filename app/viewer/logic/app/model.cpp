@@ -135,6 +135,8 @@ std::string Model::apply(const Options& o) {
   firstProblem_.clear();
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
+  // the page stays until another is given (reset() keeps it): a lecture's is its first slide's
+  if (o.page) settings.page = {o.page->first, o.page->second};
   settings.showUi = !o.hideUi;
   // presentation
   settings.present = o.present;

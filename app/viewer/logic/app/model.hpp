@@ -46,8 +46,17 @@ struct Settings {
   bool present = false;
   bool showLegend = true;
   std::string caption;
+  // a slide's page (logic/teach/slide_layout.hpp): the user's text zoom over the slide's own
+  // size (--font-scale with --lecture, + and -), and window pixels per page unit, 1 when no
+  // slide is shown (the viewer then lays out in window pixels)
+  float textZoom = 1.0f;
+  float pageScale = 1.0f;
+  // the page's size in units (--page; a lecture's first slide sets it for the lecture)
+  glm::dvec2 page{1920.0, 1080.0};
+  // the text's scale on screen: the slide's size, the zoom and the page's scale together
+  float uiScale() const { return fontScale * textZoom * pageScale; }
   // how much line widths, marker sizes and label offsets grow: with the text
-  float drawScale() const { return fontScale; }
+  float drawScale() const { return uiScale(); }
   // a lecture's slide card over the scene's top, in window pixels: the scene fits below it
   float slideCardHeight = 0.0f;
 };

@@ -133,6 +133,18 @@ bool applySize(const Values& v, Options& o, std::string&) {
          parseInt<int>(s.substr(x + 1), 64, 16384, o.height);
 }
 
+// --page WxH: a slide's page in units, 160 to 16384 each way
+bool applyPage(const Values& v, Options& o, std::string&) {
+  const std::string_view s = v[0];
+  const std::size_t x = s.find('x');
+  int w = 0, h = 0;
+  if (x == std::string_view::npos || !parseInt<int>(s.substr(0, x), 160, 16384, w) ||
+      !parseInt<int>(s.substr(x + 1), 160, 16384, h))
+    return false;
+  o.page = std::pair{w, h};
+  return true;
+}
+
 // --figure N: its options, which later ones override, and its caption unless one was given
 bool applyFigure(const Values& v, Options& o, std::string& why) {
   int n = 0;
@@ -303,14 +315,19 @@ const OptionSpec kOptions[] = {
        o.theme = v[0] == "dark" ? Theme::Dark : Theme::Light;
        return true;
      }},
-    {"--font-scale", "F", 1, kView, "text size, 0.5 .. 4 (default 1)", "a number from 0.5 to 4",
-     false,
+    {"--font-scale", "F", 1, kView,
+     "text size, 0.5 .. 4 (default 1); with --lecture, a zoom over the slides' own",
+     "a number from 0.5 to 4", false,
      [](const Values& v, Options& o, std::string&) {
        double x = 0.0;
        if (!parseDouble(v[0], x) || x < 0.5 || x > 4.0) return false;
        o.fontScale = static_cast<float>(x);
        return true;
      }},
+    {"--page", "WxH", 1, kView,
+     "a slide's page in units (default 1920x1080): slides keep its aspect, letterboxed, "
+     "at any window size",
+     "WIDTHxHEIGHT, e.g. 1600x1200", false, applyPage},
     {"--hide-ui", "", 0, kView, "only the scene and its legend", "", false,
      setFlag<&Options::hideUi>},
     {"--show-ui", "", 0, kView,

@@ -41,6 +41,8 @@ struct Options {
   std::optional<std::array<Vec3, 3>> plane;
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
+  // a slide's page in units (--page WxH): its aspect is the slides' (default 1920x1080)
+  std::optional<std::pair<int, int>> page;
   bool hideUi = false;
   std::string screenshot;          // render, write this PNG and exit
   int frames = 3;                  // frames rendered before the screenshot or exit

@@ -33,11 +33,4 @@ std::vector<std::string> breakAtSpaces(std::string_view text, double width,
   return lines;
 }
 
-std::vector<std::string> captionLines(std::string_view text, double areaWidth, double padding,
-                                      const MeasureText& measure) {
-  // in float, as the window's caption box has always measured it
-  const float box = static_cast<float>(areaWidth) * 0.9f;
-  return breakAtSpaces(text, box - 2.0f * static_cast<float>(padding), measure);
-}
-
 }  // namespace convexloc::viewer

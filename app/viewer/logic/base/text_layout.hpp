@@ -1,6 +1,6 @@
 // convexloc-viewer — text laid out in lines, GL-free: the window's text measure comes in as
-// a callback, so that the window and the SVG break a text at the same spaces. The caption
-// of a scene or slide is laid out here, once, for the screen and for the SVG.
+// a callback, so that the window and the SVG break a text at the same spaces (a slide's
+// boxes are laid out with it in logic/teach/slide_layout).
 #pragma once
 
 #include <functional>
@@ -21,12 +21,5 @@ using MeasureText = std::function<glm::dvec2(std::string_view)>;
 // numbers in it (trace, inspector, steps, toasts, notes) is broken by this rule.
 std::vector<std::string> breakAtSpaces(std::string_view text, double width,
                                        const MeasureText& measure, std::string_view indent = {});
-
-// The caption's lines: `text` broken at spaces (breakAtSpaces) to the caption box's inner
-// width, 90% of the scene area's `areaWidth` less `padding` on either side, as `measure`
-// measures at the caption's own size. The window's caption box and the SVG's caption are
-// both laid out by it.
-std::vector<std::string> captionLines(std::string_view text, double areaWidth, double padding,
-                                      const MeasureText& measure);
 
 }  // namespace convexloc::viewer

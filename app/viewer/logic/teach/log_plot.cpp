@@ -195,14 +195,11 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   return d;
 }
 
-std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,
-                        double fontPx) {
+std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx) {
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(size.x) << "\" height=\""
-      << num(size.y) << "\" viewBox=\"0 0 " << num(size.x) << " " << num(size.y)
-      << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << num(fontPx)
-      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"" << svgColour(background) << "\"/>\n";
+  out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
+      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << num(fontPx)
+      << "\">\n";
   for (const PlotDrawing& d : drawings) {
     out << "<g>\n";
     for (const PlotPath& p : d.paths) svgPath(out, p);
@@ -212,7 +209,18 @@ std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, 
     for (const PlotText& t : d.texts) svgText(out, t);
     out << "</g>\n";
   }
-  out << "</svg>\n";
+  out << "</g>\n";
+  return out.str();
+}
+
+std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,
+                        double fontPx) {
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(size.x) << "\" height=\""
+      << num(size.y) << "\" viewBox=\"0 0 " << num(size.x) << " " << num(size.y)
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"" << svgColour(background) << "\"/>\n"
+      << svgPlots(drawings, {0.0, 0.0}, fontPx) << "</svg>\n";
   return out.str();
 }
 

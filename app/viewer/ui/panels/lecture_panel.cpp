@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "logic/teach/figures.hpp"
+#include "ui/overlays.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -241,35 +242,15 @@ void slideCard(Model& model, UiState& ui, ScreenRect area) {
   problemsBox(ui.show, area);
   // the notes inside the main window where they cannot have one of their own
   if (!ui.notesOwnWindow) notesWindow(ui.show, ui.showNotes);
-  if (!ui.show.active()) {
+  const SlideLayout& l = ui.layout;
+  if (!ui.show.active() || l.title.lines.empty()) {
     keepBand(model, 0.0f);
     return;
   }
-  const Slide& s = ui.show.slide();
-  const std::size_t count = ui.show.lecture.slides.size();
-  const float w = std::min(static_cast<float>(area.size().x) * 0.7f, ImGui::GetFontSize() * 44.0f);
-  // at the window's top, not the area's: the area starts below the card
-  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.lo.x) + 12.0f, 12.0f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(w, 1e6f));
-  ImGui::SetNextWindowBgAlpha(0.88f);
-  ImGui::Begin("##slide", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  ImGui::PushTextWrapPos(w - ImGui::GetStyle().WindowPadding.x);
-  ImGui::SetWindowFontScale(1.3f);
-  if (count > 1)
-    ImGui::Text("%zu / %zu: %s", ui.show.current + 1, count, s.title.c_str());
-  else
-    ImGui::TextUnformatted(s.title.c_str());
-  ImGui::SetWindowFontScale(1.0f);
-  // a caption the scene shows in its own box (--caption) is not written twice
-  if (!s.caption.empty() && model.settings.caption.empty())
-    textAtSpaces(s.caption, {}, w - 2.0f * ImGui::GetStyle().WindowPadding.x);
-  ImGui::PopTextWrapPos();
-  const float band = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + 8.0f;
-  ImGui::End();
-  keepBand(model, band);
+  layoutBox("##slide", l.title, l.titleLines, paletteFor(model.settings.theme).text);
+  // the band the scene keeps free under the card, from the page's top
+  keepBand(model, static_cast<float>(l.title.box.hi.y + 0.625 * ImGui::GetFontSize() -
+                                     (area.lo.y - model.settings.slideCardHeight)));
 }
 
 void lecturePanel(Model& model, UiState& ui) {

@@ -29,7 +29,8 @@ void goToSlide(Model& model, UiState& ui, std::ptrdiff_t k);
 // the next, previous, first or last slide, for the key actions
 void moveSlide(ActionKind kind, Model& model, UiState& ui);
 
-// The slide card: "3 / 14: title" and the caption, over the scene's upper left corner; the
+// The slide card: "3 / 14: title" and a figure's caption, in its box of the slide's layout
+// (ui.layout) over the scene's upper left corner, the scene keeping the band under it; the
 // slide's problems over the scene until dismissed; the speaker notes' window where open.
 void slideCard(Model& model, UiState& ui, ScreenRect area);
 

@@ -10,6 +10,7 @@
 
 #include "logic/base/format.hpp"
 #include "logic/teach/scaling_record.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -95,7 +96,7 @@ void controls(Model& model, UiState& ui, const ScalingProgress& p) {
 // One page of plots filling the rest of the window, as a slide: its text shrinks with the
 // window (a page reads at about 60 x 44 em) down to 45% of the panels' text; the window
 // scrolls only where the page would be smaller than 40 x 30 em of that text.
-void plots(const Model& model, const ScalingProgress& p, bool solid) {
+void plots(const Model& model, UiState& ui, const ScalingProgress& p, bool solid) {
   const float font = ImGui::GetFontSize();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float fit = std::min(avail.x / (60.0f * font), avail.y / (44.0f * font));
@@ -106,6 +107,7 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
   ImGui::Dummy(size);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const PlotStyle style = plotStyle(model.settings.theme, plotFont);
+  ui.whyPlots = {{{o.x, o.y}, {o.x + size.x, o.y + size.y}}, plotFont, solid};  // for the SVG
   ImGui::SetWindowFontScale(scale);
   for (const PlotDrawing& d :
        scalingDrawings(p.result, model.scaling->config(), style, {size.x, size.y}, solid))
@@ -116,16 +118,21 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
 }  // namespace
 
 void scalingWindow(Model& model, UiState& ui) {
+  ui.whyPlots = {};
+  ui.whyWindow = {};
   if (!model.whyOpen) return;
   const ImGuiIO& io = ImGui::GetIO();
   // between a slide's card and its caption, where a lecture shows them (kept there while
-  // the panels are hidden)
+  // the panels are hidden), in the page
   const ImGuiCond cond = model.settings.showUi ? ImGuiCond_Appearing : ImGuiCond_Always;
-  const float top = model.settings.slideCardHeight, bottom = io.DisplaySize.y - ui.captionHeight;
-  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x * (model.settings.showUi ? 0.8f : 0.96f),
-                                  std::min(io.DisplaySize.y * 0.88f, bottom - top - 8.0f)),
-                           cond);
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, 0.5f * (top + bottom)), cond,
+  const ScreenRect area = sceneArea(model, ui, {io.DisplaySize.x, io.DisplaySize.y});
+  const float top = static_cast<float>(area.lo.y),
+              bottom = static_cast<float>(area.hi.y) - ui.captionHeight;
+  const float width = static_cast<float>(area.size().x) * (model.settings.showUi ? 0.8f : 0.96f);
+  ImGui::SetNextWindowSize(
+      ImVec2(width, std::min(static_cast<float>(area.size().y) * 0.88f, bottom - top - 8.0f)),
+      cond);
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.middle().x), 0.5f * (top + bottom)), cond,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);
   if (!ImGui::Begin("Why O(1): cost against N", &model.whyOpen,
@@ -154,11 +161,14 @@ void scalingWindow(Model& model, UiState& ui) {
                               appearing && solid == (model.dim == Dim::Three)
                                   ? ImGuiTabItemFlags_SetSelected
                                   : 0)) {
-        plots(model, p, solid);
+        plots(model, ui, p, solid);
         ImGui::EndTabItem();
       }
     ImGui::EndTabBar();
   }
+  ui.whyWindow = {{ImGui::GetWindowPos().x, ImGui::GetWindowPos().y},
+                  {ImGui::GetWindowPos().x + ImGui::GetWindowSize().x,
+                   ImGui::GetWindowPos().y + ImGui::GetWindowSize().y}};
   ImGui::End();
   if (!model.whyOpen) model.scaling->cancel();
 }

@@ -8,11 +8,13 @@
 
 namespace convexloc::viewer {
 
-// The Steps window over the lower left corner of `area` (the scene's part of the window),
-// above the caption, while Settings::stepBoxVisible and a point is placed, with the panels
-// shown or hidden; plays the steps at `now` (seconds). Compact: at most half the scene's
-// width, the list scrolling past a quarter of its height, the pseudo-code foldable to the
-// current line. Its size goes to `ui.stepsSize`, for the fit to leave it room.
-void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now);
+// Advances the steps' player (Play) to `now` (seconds), before the frame's layout.
+void tickStepPlayer(Model& model, double now);
+
+// The Steps window in its box of the slide's layout (ui.layout.steps: over the lower left
+// corner of the scene's area, above the caption), its heading, controls (not on a slide:
+// its keys step), steps and pseudo-code where the layout puts their lines. Its rectangle
+// goes to `ui.stepsRect`, for the labels to keep off.
+void stepsWindow(Model& model, UiState& ui, double now);
 
 }  // namespace convexloc::viewer

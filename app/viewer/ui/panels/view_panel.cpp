@@ -48,6 +48,14 @@ void viewPanel(Model& model, Renderer& renderer, UiState& ui) {
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::SliderFloat("##font", &ui.fontScaleEdit, 0.75f, 2.5f, "text %.2fx");
   if (ImGui::IsItemDeactivatedAfterEdit()) ui.pendingFontScale = ui.fontScaleEdit;
+  // the slider follows the size a slide sets, except while it is dragged
+  if (!ImGui::IsItemActive() && ui.pendingFontScale <= 0.0f)
+    ui.fontScaleEdit = model.settings.fontScale;
+  // what the text is drawn at: the size, a slide page's scale and the zoom (+ / -)
+  const Settings& st = model.settings;
+  if (st.uiScale() != st.fontScale)
+    ImGui::TextDisabled("drawn at %.2fx: page %.0f%%, zoom %.2fx (+ / -)", st.uiScale(),
+                        100.0 * st.pageScale, st.textZoom);
 
   panelsOf(model).viewOptions(model);
 

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "logic/base/format.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -84,26 +85,30 @@ void whyButton(Model& model) {
   if (ImGui::Button("Why O(1)? Cost against N", ImVec2(-1.0f, 0.0f))) model.whyOpen = true;
 }
 
-void splitDecorations(const Model& model) {
+void splitHeadings(const Model& model, UiState& ui) {
+  ui.splitHeadings[0] = ui.splitHeadings[1] = TextBox{};
+  if (!model.split.enabled() || model.dim != Dim::Two || model.lines2d.enabled()) return;
+  const SlideMetrics m = windowMetrics();
+  ui.splitHeadings[0] =
+      splitHeading(model.split.left(), SecondView::traceCaption(model.scene2d), m);
+  ui.splitHeadings[1] =
+      splitHeading(model.split.right(), SecondView::traceCaption(model.split.scene()), m);
+}
+
+void splitDecorations(const Model& model, const UiState& ui) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Palette& pal = paletteFor(model.settings.theme);
-  const ScreenRect l = model.split.left(), r = model.split.right();
+  const ScreenRect r = model.split.right();
   const float x = static_cast<float>(r.lo.x);
   dl->AddLine(ImVec2(x, static_cast<float>(r.lo.y)), ImVec2(x, static_cast<float>(r.hi.y)),
               packAbgr(pal.textMuted), 2.0f);
   const float pad = ImGui::GetFontSize() * 0.6f;
-  for (const auto& [half, scene] :
-       {std::pair{l, &model.scene2d}, std::pair{r, &model.split.scene()}}) {
-    const std::string text = SecondView::traceCaption(*scene);
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    // centred over the half, but never starting left of it
-    const ImVec2 at(std::max(static_cast<float>(half.middle().x) - 0.5f * size.x,
-                             static_cast<float>(half.lo.x) + 2.0f * pad),
-                    static_cast<float>(half.lo.y) + 1.5f * pad);
-    dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
-                      ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
+  for (const TextBox& t : ui.splitHeadings) {
+    if (t.lines.empty()) continue;
+    const ImVec2 lo(static_cast<float>(t.box.lo.x), static_cast<float>(t.box.lo.y));
+    dl->AddRectFilled(lo, ImVec2(static_cast<float>(t.box.hi.x), static_cast<float>(t.box.hi.y)),
                       packAbgr(withAlpha(pal.background, 0.9f)), 4.0f);
-    dl->AddText(at, packAbgr(pal.text), text.c_str());
+    dl->AddText(ImVec2(lo.x + pad, lo.y + 0.5f * pad), packAbgr(pal.text), t.lines[0].c_str());
   }
 }
 

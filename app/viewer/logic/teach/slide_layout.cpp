@@ -1,0 +1,145 @@
+// convexloc-viewer — a slide's boxes on its page.
+#include "logic/teach/slide_layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "logic/view/fit_room.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// `text` broken at spaces to `width` pixels at `scale` times the body size
+std::vector<std::string> wrapAt(std::string_view text, double width, double scale,
+                                const SlideMetrics& m, std::string_view indent = {}) {
+  return breakAtSpaces(text, width / scale, m.measure, indent);
+}
+
+// the widest of `lines` at `scale` times the body size
+double widest(const std::vector<std::string>& lines, double scale, const SlideMetrics& m) {
+  double w = 0.0;
+  for (const std::string& l : lines) w = std::max(w, m.widthAt(l, scale));
+  return w;
+}
+
+// the height of `n` lines at `scale` times the body size
+double linesHeight(std::size_t n, double scale, const SlideMetrics& m) {
+  return n == 0 ? 0.0 : static_cast<double>(n) * (scale * m.font + m.spacing) - m.spacing;
+}
+
+// the title card at the area's top left: the title, a figure's caption under it
+TextBox titleCard(const SlideContent& c, const SlideMetrics& m, std::size_t& titleLines) {
+  TextBox t;
+  titleLines = 0;
+  if (c.title.empty()) return t;
+  const double w = std::min(c.area.size().x * 0.7, m.font * 44.0) - 2.0 * m.padding;
+  t.lines = wrapAt(c.title, w, kTitleScale, m);
+  titleLines = t.lines.size();
+  const std::vector<std::string> under =
+      c.cardCaption.empty() ? std::vector<std::string>{} : wrapAt(c.cardCaption, w, 1.0, m);
+  const double width = std::max(widest(t.lines, kTitleScale, m), widest(under, 1.0, m));
+  const double height = linesHeight(titleLines, kTitleScale, m) +
+                        (under.empty() ? 0.0 : m.spacing + linesHeight(under.size(), 1.0, m));
+  t.lines.insert(t.lines.end(), under.begin(), under.end());
+  t.scale = kTitleScale;
+  t.box.lo = c.area.lo + glm::dvec2(m.margin);
+  t.box.hi = t.box.lo + glm::dvec2(width, height) + glm::dvec2(2.0 * m.padding);
+  return t;
+}
+
+// the caption centred along the area's bottom, 90% of its width at most
+TextBox captionBox(const SlideContent& c, const SlideMetrics& m) {
+  TextBox t;
+  t.scale = kCaptionScale;
+  if (c.caption.empty()) {
+    t.box.lo = t.box.hi = {c.area.middle().x, c.area.hi.y};
+    return t;
+  }
+  t.lines = wrapAt(c.caption, 0.9 * c.area.size().x - 2.0 * m.padding, kCaptionScale, m);
+  const glm::dvec2 size =
+      glm::dvec2(widest(t.lines, kCaptionScale, m), linesHeight(t.lines.size(), kCaptionScale, m)) +
+      glm::dvec2(2.0 * m.padding);
+  t.box.hi = {c.area.middle().x + 0.5 * size.x, c.area.hi.y - m.margin};
+  t.box.lo = t.box.hi - size;
+  return t;
+}
+
+}  // namespace
+
+PageFit fitPage(glm::dvec2 window, glm::dvec2 page) {
+  PageFit f;
+  if (window.x <= 0.0 || window.y <= 0.0 || page.x <= 0.0 || page.y <= 0.0) return f;
+  f.scale = std::min(window.x / page.x, window.y / page.y);
+  const glm::dvec2 size = page * f.scale;
+  f.page.lo = 0.5 * (window - size);
+  f.page.hi = f.page.lo + size;
+  return f;
+}
+
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m) {
+  TextBox t;
+  if (text.empty()) return t;
+  t.lines = {text};
+  const double pad = 0.6 * m.font;
+  const glm::dvec2 size = m.measure(text);
+  const glm::dvec2 at{std::max(half.middle().x - 0.5 * size.x, half.lo.x + 2.0 * pad),
+                      half.lo.y + 1.5 * pad};
+  t.box = {at - glm::dvec2(pad, 0.5 * pad), at + size + glm::dvec2(pad, 0.5 * pad)};
+  return t;
+}
+
+double SlideMetrics::widthAt(std::string_view text, double scale) const {
+  return measure(text).x * scale;
+}
+
+namespace {
+
+// the scene's room: beside the legend's strip (right or bottom, whichever costs the drawing
+// less) and the Steps window's (logic/view/fit_room), between the card and the caption
+ScreenRect sceneRoom(const SlideContent& c, const SlideLayout& l, const SlideMetrics& m) {
+  ScreenRect full = c.area;
+  if (!l.title.lines.empty()) full.lo.y = l.title.box.hi.y;
+  full.hi.y = c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y;
+  if (c.captionRoom > 0)
+    full.hi.y = std::min(full.hi.y, c.area.hi.y - m.margin - 2.0 * m.padding -
+                                        linesHeight(c.captionRoom, kCaptionScale, m));
+  ScreenRect a = full;
+  const glm::dvec2 strip = c.legend + glm::dvec2(2.0 * m.margin);
+  const glm::dvec2 s = a.size();
+  // the share of the drawing's width or height a strip leaves (none where it does not fit)
+  const double keepsX = s.x > strip.x ? (s.x - strip.x) / s.x : 0.0;
+  const double keepsY = s.y > strip.y ? (s.y - strip.y) / s.y : 0.0;
+  const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0 && (keepsX > 0.0 || keepsY > 0.0);
+  if (legend) {
+    if (keepsX >= keepsY)
+      a.hi.x -= strip.x;
+    else
+      a.hi.y -= strip.y;
+  }
+  if (!l.steps) return a;
+  CornerBoxes boxes;
+  boxes.steps = l.steps->box.size();
+  boxes.margin = m.margin;
+  if (legend) boxes.legend = strip;
+  return roomBesideCorners(a, full, boxes, c.shapeAspect);
+}
+
+}  // namespace
+
+SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
+  SlideLayout l;
+  l.title = titleCard(c, m, l.titleLines);
+  l.caption = captionBox(c, m);
+  const double bottom = (c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y) - m.margin;
+  const double top = (l.title.lines.empty() ? c.area.lo.y : l.title.box.hi.y) + m.margin;
+  if (c.steps && !c.steps->model.steps.empty())
+    l.steps = layoutSteps(*c.steps, m, c.area, bottom, top);
+  if (c.legend.x > 0.0 && c.legend.y > 0.0) {
+    l.legend.hi = {c.area.hi.x - m.margin, bottom};
+    l.legend.lo = l.legend.hi - c.legend;
+  }
+  l.scene = sceneRoom(c, l, m);
+  return l;
+}
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,138 @@
+// convexloc-viewer — a slide laid out once, GL-free: the page it sits on in the window
+// (letterboxed), and the boxes on it (title, caption, Steps window, legend, the scene's
+// room) with their wrapped lines. The window's ImGui boxes, the PNG taken of them and the
+// SVG writer all draw from this one layout, so that a slide reads the same at any size and
+// its SVG shows what its PNG shows.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "logic/base/colour.hpp"
+#include "logic/base/screen_rect.hpp"
+#include "logic/base/text_layout.hpp"
+#include "logic/narration/steps.hpp"
+
+namespace convexloc::viewer {
+
+// the logical page a slide is laid out on: 1920 x 1080 units (16:9)
+inline constexpr glm::dvec2 kSlidePage{1920.0, 1080.0};
+
+// the page scaled into a window, centred: bars (the theme's background) fill the rest
+struct PageFit {
+  ScreenRect page;     // the page's rectangle in window pixels
+  double scale = 1.0;  // window pixels per page unit
+};
+
+// the largest page of `page`'s aspect centred in `window` (pixels); a window without pixels
+// gives an empty page at scale 1
+PageFit fitPage(glm::dvec2 window, glm::dvec2 page = kSlidePage);
+
+// the text's sizes, in window pixels, as the drawing measures them (ImGui's in the window)
+struct SlideMetrics {
+  double font = 16.0;     // the body text's height
+  double spacing = 6.0;   // the gap between two lines
+  double padding = 12.0;  // a box's inner padding
+  double frame = 24.0;    // a button row's height (the Steps window's controls)
+  double margin = 10.0;   // the gap between a box and the area's edges, or two boxes
+  // the body text's width and height; `size` times the body size where asked
+  MeasureText measure;
+  // a text's width at `scale` times the body size (text widths grow with the font)
+  double widthAt(std::string_view text, double scale) const;
+};
+
+// what the Steps window shows: the method's steps and code, the step shown, its controls
+struct StepsContent {
+  StepModel model;
+  int step = -1;         // the step shown (-1: all)
+  bool controls = true;  // the row of buttons (a slide shows none: its keys step)
+  int codeWanted = -1;   // the pseudo-code: 1 whole, 0 the current line, -1 whole where wide
+};
+
+// a step's lines in the Steps window
+struct StepLines {
+  std::size_t step = 0;            // which step (from 0)
+  std::vector<std::string> lines;  // "3. edge 2: orient2d = +1", broken at spaces
+};
+
+// the Steps window laid out
+struct StepsLayout {
+  ScreenRect box;
+  bool sideBySide = false;           // the code in a column beside the steps
+  bool wholeCode = false;            // all the code (else the current line alone)
+  bool controls = false;             // the controls' two rows are there
+  std::vector<std::string> heading;  // the method and point, and the trace's note
+  double headingTop = 0.0;           // the heading's first line's top
+  double controlsTop = 0.0;          // the controls' two rows' top (none: the list's separator)
+  std::vector<StepLines> shown;      // the steps shown (a long list: a window around the current)
+  double listTop = 0.0;              // the first step line's top; the separator is a spacing above
+  double listLeft = 0.0, codeLeft = 0.0;  // the columns' left edges
+  double columnWidth = 0.0;               // the steps' column width
+  std::vector<std::string> code;          // the code's lines shown, "> " on the current line
+  std::vector<bool> codeCurrent;          // per code line: the current step's line
+  double codeTop = 0.0;
+  double lineStep = 0.0;  // a line's advance (font + spacing)
+};
+
+// a box of text: lines broken at spaces, `scale` times the body size
+struct TextBox {
+  ScreenRect box;
+  std::vector<std::string> lines;
+  double scale = 1.0;
+};
+
+// everything on a slide (or in the live scene) that the layout places
+struct SlideContent {
+  ScreenRect area;          // the scene's area: the page (or window) less the panels
+  std::string title;        // the slide card's text ("4 / 27: Wedges"); empty: no card
+  std::string cardCaption;  // a figure's caption under its title in the card
+  std::string caption;      // the caption box's text at the bottom; empty: none
+  std::optional<StepsContent> steps;
+  glm::dvec2 legend{0.0};    // the legend's size; zero: none floats over the scene
+  double shapeAspect = 1.0;  // the drawn shape's width over its height, about
+  // the caption lines the scene leaves room for whatever the caption holds (a slide: 2, so
+  // that slides with a one- and a two-line caption fit one figure alike); 0: the caption's own
+  std::size_t captionRoom = 0;
+};
+
+// the boxes of one slide, in window pixels
+struct SlideLayout {
+  TextBox title;                     // the title card (with a figure's caption under the title)
+  std::size_t titleLines = 0;        // how many of title.lines are the title's (the rest caption)
+  TextBox caption;                   // the caption box, centred at the bottom
+  std::optional<StepsLayout> steps;  // over the lower left corner, above the caption
+  ScreenRect legend;                 // over the lower right corner, above the caption
+  ScreenRect scene;                  // the room the shape is fitted into, beside all of them
+};
+
+// The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not
+// above `top` where a shorter list allows (a long list shows a window of lines around the
+// step shown). Laid out in logic/teach/slide_steps.cpp.
+StepsLayout layoutSteps(const StepsContent& steps, const SlideMetrics& metrics, ScreenRect area,
+                        double bottom, double top);
+
+// the colour of a step's line in the Steps window: its sign's, the result's (`result`, the
+// class's text colour), or the text's
+Rgba stepColour(const Step& step, const Palette& pal, Rgba result);
+
+// The split view's heading over a half (`half`, window pixels): `text` centred over it,
+// never starting left of it, near its top; the box is the text and a padding of 0.6 body
+// heights around it (half that above and below). The window and the SVG draw it from here.
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics);
+
+// the title card's, caption's and legend's text sizes relative to the body text
+inline constexpr double kTitleScale = 1.3;
+inline constexpr double kCaptionScale = 1.5;
+
+// Lays out a slide: the card over the area's top left, the caption centred along its
+// bottom, the Steps window over the lower left and the legend over the lower right corner
+// above the caption, and the scene's room beside them (logic/view/fit_room). Every size is
+// taken from `metrics`, which grow with the text: at any page scale the boxes keep their
+// places relative to the page.
+SlideLayout layoutSlide(const SlideContent& content, const SlideMetrics& metrics);
+
+}  // namespace convexloc::viewer

@@ -1,0 +1,101 @@
+// convexloc-viewer — the frame's slide, its page and its layout.
+#include "ui/slide_frame.hpp"
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "ui/scene_area.hpp"
+#include "ui/widgets.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// the drawn shape's width over its height, about (the 3D scenes as a square)
+double shapeAspect(const Model& model) {
+  if (model.dim == Dim::Three) return model.planes3d.enabled() ? 2.0 : 1.0;
+  if (model.lines2d.enabled()) return 2.0;  // the dual view sits beside
+  const Box2 b = model.scene2d.polygon().bounds();
+  const double w = b.hi.x - b.lo.x, h = b.hi.y - b.lo.y;
+  return w > 0.0 && h > 0.0 ? std::clamp(w / h, 0.2, 5.0) : 1.0;
+}
+
+// what the Steps window shows, where it shows (a placed point's query, the window not
+// hidden, no Lines or Planes mode: they draw no placed point)
+std::optional<StepsContent> stepsContent(const Model& model, const UiState& ui) {
+  const bool dualMode = model.dim == Dim::Two ? model.lines2d.enabled() : model.planes3d.enabled();
+  if (!model.settings.stepBoxVisible || dualMode) return std::nullopt;
+  std::optional<StepModel> m = model.steps();
+  if (!m || m->steps.empty()) return std::nullopt;
+  StepsContent c;
+  c.step = model.step();
+  c.model = std::move(*m);
+  c.controls = !onSlide(model, ui);  // a slide's steps move by its keys
+  c.codeWanted = ui.stepsCode;
+  return c;
+}
+
+// the slide card's title: "4 / 27: Wedges" in a lecture, the figure's own title alone
+std::string cardTitle(const UiState& ui) {
+  if (!ui.show.active()) return {};
+  const std::size_t count = ui.show.lecture.slides.size();
+  const std::string& t = ui.show.slide().title;
+  return count > 1 ? std::to_string(ui.show.current + 1) + " / " + std::to_string(count) + ": " + t
+                   : t;
+}
+
+}  // namespace
+
+bool onSlide(const Model& model, const UiState& ui) {
+  return ui.show.active() || model.settings.present;
+}
+
+PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window) {
+  if (onSlide(model, ui)) return fitPage(window, model.settings.page);
+  return {{{0.0, 0.0}, window}, 1.0};
+}
+
+SlideMetrics windowMetrics() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  SlideMetrics m;
+  m.font = ImGui::GetFontSize();
+  m.spacing = style.ItemSpacing.y;
+  m.padding = style.WindowPadding.x;
+  m.frame = ImGui::GetFrameHeight();
+  m.margin = 0.625 * m.font;
+  m.measure = measureText;
+  return m;
+}
+
+SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window, bool withSteps) {
+  SlideContent c;
+  c.area = pageArea(model, ui, window);
+  c.title = cardTitle(ui);
+  // a caption the scene shows in its own box (--caption) is not written twice
+  if (ui.show.active() && model.settings.caption.empty()) c.cardCaption = ui.show.slide().caption;
+  c.caption = model.settings.caption;
+  if (withSteps) c.steps = stepsContent(model, ui);
+  const bool floating = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
+  if (floating && !ui.legendMoved) c.legend = {ui.legendSize[0], ui.legendSize[1]};
+  c.shapeAspect = shapeAspect(model);
+  if (onSlide(model, ui)) c.captionRoom = 2;
+  return layoutSlide(c, windowMetrics());
+}
+
+void drawLetterbox(const Model& model, const UiState& ui, glm::dvec2 window) {
+  const ScreenRect p = pageOf(model, ui, window).page;
+  if (p.lo.x <= 0.5 && p.lo.y <= 0.5) return;
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const ImU32 bg = u32(paletteFor(model.settings.theme).background);
+  const auto bar = [&](double x0, double y0, double x1, double y1) {
+    if (x1 > x0 && y1 > y0)
+      dl->AddRectFilled(ImVec2(static_cast<float>(x0), static_cast<float>(y0)),
+                        ImVec2(static_cast<float>(x1), static_cast<float>(y1)), bg);
+  };
+  bar(0.0, 0.0, window.x, p.lo.y);
+  bar(0.0, p.hi.y, window.x, window.y);
+  bar(0.0, p.lo.y, p.lo.x, p.hi.y);
+  bar(p.hi.x, p.lo.y, window.x, p.hi.y);
+}
+
+}  // namespace convexloc::viewer

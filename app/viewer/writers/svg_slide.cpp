@@ -1,0 +1,165 @@
+// convexloc-viewer — a slide's boxes in the SVG.
+#include "writers/svg_slide.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "logic/base/xml.hpp"
+
+namespace convexloc::viewer::svg {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", std::abs(v) < 5e-3 ? 0.0 : v);
+  return buf;
+}
+
+std::string rgb(Rgba c) {
+  auto byte = [](float x) {
+    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255));
+  };
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return buf;
+}
+
+std::string paint(const char* name, Rgba c) {
+  std::string s = std::string(" ") + name + "=\"" + rgb(c) + "\"";
+  if (c.a < 0.999f) s += std::string(" ") + name + "-opacity=\"" + num(c.a) + "\"";
+  return s;
+}
+
+}  // namespace convexloc::viewer::svg
+
+namespace convexloc::viewer {
+namespace {
+
+using svg::num;
+using svg::paint;
+
+// ImGui sizes a font by its height from descent to ascent, SVG by its em: DejaVu Sans is
+// 1.164 em high, its ascent 0.928 em. The window's body text height in pixels:
+double bodyPixels(const SvgScene& s) {
+  return 1.164 * s.fontPixels;
+}
+
+// a rectangle, filled
+std::string rectSvg(const ScreenRect& r, Rgba fill, double rounding = 0.0) {
+  const glm::dvec2 size = r.size();
+  return "<rect x=\"" + num(r.lo.x) + "\" y=\"" + num(r.lo.y) + "\" width=\"" + num(size.x) +
+         "\" height=\"" + num(size.y) + "\"" +
+         (rounding > 0.0 ? " rx=\"" + num(rounding) + "\"" : std::string()) + paint("fill", fill) +
+         "/>";
+}
+
+// a line of text whose top is at `top` (as the window places it), `scale` times the body
+std::string lineSvg(double x, double top, double scale, const std::string& text, Rgba colour,
+                    const SvgScene& s, const char* cls = "line") {
+  const double em = scale * s.fontPixels;
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" +
+         num(top + 0.928 * em) + "\" font-size=\"" + num(em) + "\" xml:space=\"preserve\"" +
+         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+}
+
+// a text box of the layout: its box, then its lines (the first `large` at its scale, the
+// rest at the body size in `rest`)
+void writeTextBox(const SvgScene& s, const char* id, const TextBox& t, std::size_t large, Rgba rest,
+                  std::string& out) {
+  if (t.lines.empty()) return;
+  const double body = bodyPixels(s), pad = s.layoutPadding;
+  out += "<g id=\"" + std::string(id) + "\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
+         rectSvg(t.box, s.panel, s.rounding) + "\n";
+  double top = t.box.lo.y + pad;
+  for (std::size_t k = 0; k < t.lines.size(); ++k) {
+    const double scale = k < large ? t.scale : 1.0;
+    out += "  " +
+           lineSvg(t.box.lo.x + pad, top, scale, t.lines[k], k < large ? s.text : rest, s, id) +
+           "\n";
+    top += scale * body + s.layoutSpacing;
+  }
+  out += "</g>\n";
+}
+
+// a separator a spacing above `y` across the Steps window's inside
+std::string separatorSvg(const StepsLayout& l, double y, const SvgScene& s) {
+  const double at = y - 0.5 * s.layoutSpacing;
+  return "<line x1=\"" + num(l.box.lo.x + s.layoutPadding) + "\" y1=\"" + num(at) + "\" x2=\"" +
+         num(l.box.hi.x - s.layoutPadding) + "\" y2=\"" + num(at) + "\"" +
+         paint("stroke", withAlpha(s.textMuted, 0.5f)) + " stroke-width=\"1\"/>";
+}
+
+// the Steps window: heading, the step shown (its controls' place), steps, pseudo-code
+void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
+  out += "<g id=\"steps\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
+         rectSvg(l.box, s.panel, s.rounding) + "\n";
+  for (std::size_t k = 0; k < l.heading.size(); ++k)
+    out += "  " +
+           lineSvg(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, 1.0,
+                   l.heading[k], s.textMuted, s) +
+           "\n";
+  if (l.controls && !s.stepColours.empty()) {
+    const std::string shown = s.step < 0 ? "all " + std::to_string(s.stepColours.size()) + " steps"
+                                         : "step " + std::to_string(s.step + 1) + " of " +
+                                               std::to_string(s.stepColours.size());
+    out += "  " + lineSvg(l.listLeft, l.controlsTop, 1.0, shown, s.textMuted, s) + "\n";
+  }
+  out += "  " + separatorSvg(l, l.listTop, s) + "\n";
+  double y = l.listTop;
+  for (const StepLines& st : l.shown) {
+    const int i = static_cast<int>(st.step);
+    Rgba c = st.step < s.stepColours.size() ? s.stepColours[st.step] : s.text;
+    if (s.step >= 0 && i > s.step) c = withAlpha(c, 0.35f);
+    if (i == s.step) {
+      const double h = static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing;
+      out += "  " +
+             rectSvg({{l.listLeft - 3.0, y - 1.0}, {l.listLeft + l.columnWidth, y + h + 1.0}},
+                     withAlpha(s.highlight, 0.22f)) +
+             "\n";
+    }
+    for (const std::string& line : st.lines) {
+      out += "  " + lineSvg(l.listLeft, y, 1.0, line, c, s) + "\n";
+      y += l.lineStep;
+    }
+  }
+  if (!l.sideBySide && !l.code.empty()) out += "  " + separatorSvg(l, l.codeTop, s) + "\n";
+  for (std::size_t i = 0; i < l.code.size(); ++i)
+    out += "  " +
+           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, 1.0, l.code[i],
+                   l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
+           "\n";
+  out += "</g>\n";
+}
+
+}  // namespace
+
+void writeLetterbox(const SvgScene& s, std::string& out) {
+  const ScreenRect& p = s.page;
+  if (p.hi.x <= p.lo.x || (p.lo.x <= 0.5 && p.lo.y <= 0.5)) return;
+  out += "<g id=\"letterbox\">\n";
+  for (const ScreenRect& r :
+       {ScreenRect{{0.0, 0.0}, {s.size.x, p.lo.y}}, ScreenRect{{0.0, p.hi.y}, s.size},
+        ScreenRect{{0.0, p.lo.y}, {p.lo.x, p.hi.y}},
+        ScreenRect{{p.hi.x, p.lo.y}, {s.size.x, p.hi.y}}})
+    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) out += "  " + rectSvg(r, s.background) + "\n";
+  out += "</g>\n";
+}
+
+void writeSlideBoxes(const SvgScene& s, std::string& out) {
+  const SlideLayout& l = s.layout;
+  if (s.window.hi.x > s.window.lo.x) {
+    out += "<g id=\"window\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
+           rectSvg(s.window, withAlpha(s.panel, 1.0f), s.rounding) + "\n  " +
+           rectSvg({s.window.lo, {s.window.hi.x, s.window.lo.y + s.windowBarHeight}}, s.windowBar) +
+           "\n  " +
+           lineSvg(s.window.lo.x + 2.0 * s.layoutPadding,
+                   s.window.lo.y + 0.5 * (s.windowBarHeight - bodyPixels(s)), 1.0, s.windowTitle,
+                   s.text, s) +
+           "\n" + s.windowSvg + "</g>\n";
+  }
+  writeTextBox(s, "title", l.title, l.titleLines, s.text, out);
+  writeTextBox(s, "caption", l.caption, l.caption.lines.size(), s.text, out);
+  if (l.steps) writeSteps(s, *l.steps, out);
+}
+
+}  // namespace convexloc::viewer

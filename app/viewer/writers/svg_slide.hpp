@@ -1,0 +1,30 @@
+// convexloc-viewer — a slide's boxes in the SVG, GL-free: the title card, the caption and
+// the Steps window written from the slide's layout (logic/teach/slide_layout), where the
+// window draws them, and the bars beside a letterboxed page; the SVG's attribute helpers.
+#pragma once
+
+#include <string>
+
+#include "logic/base/colour.hpp"
+#include "writers/svg_writer.hpp"
+
+namespace convexloc::viewer::svg {
+
+// a number for an attribute: two decimals are a hundredth of a pixel
+std::string num(double v);
+// "#rrggbb"
+std::string rgb(Rgba c);
+// ` NAME="#rrggbb"`, and its opacity when not opaque
+std::string paint(const char* name, Rgba c);
+
+}  // namespace convexloc::viewer::svg
+
+namespace convexloc::viewer {
+
+// the bars beside `scene.page` (none when the page is empty or fills the picture)
+void writeLetterbox(const SvgScene& scene, std::string& out);
+
+// the layout's title card, caption and Steps window, each a group of a box and its lines
+void writeSlideBoxes(const SvgScene& scene, std::string& out);
+
+}  // namespace convexloc::viewer
