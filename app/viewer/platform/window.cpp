@@ -9,6 +9,10 @@
 
 #include <unistd.h>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten/html5.h>
+#endif
+
 #include "gl/context.hpp"
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
@@ -23,27 +27,51 @@ void onGlfwError(int code, const char* text) {
   std::cerr << "convexloc-viewer: GLFW error " << code << ": " << text << "\n";
 }
 
+#ifndef __EMSCRIPTEN__
 // whether an environment variable is set and not empty
 bool isSet(const char* name) {
   const char* v = std::getenv(name);
   return v && *v;
 }
+#endif
 
-// the GL context every window asks for
+// the GL context every window asks for (the web page: WebGL 2, chosen at link time)
 void contextHints() {
+#ifndef __EMSCRIPTEN__
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+#endif
   // The window needs no multisampling: the scene is drawn into an offscreen target that
   // has it (see SceneView), and ImGui anti-aliases its own shapes.
   glfwWindowHint(GLFW_SAMPLES, 0);
 }
 
+#ifdef __EMSCRIPTEN__
+// The canvas's size on the page in device pixels: the page's style sizes it, the window
+// (GLFW's, Emscripten's) follows, so a HiDPI screen gets every pixel it has.
+void fitCanvas(GLFWwindow* window) {
+  double cssW = 0.0, cssH = 0.0;
+  if (emscripten_get_element_css_size("#canvas", &cssW, &cssH) != EMSCRIPTEN_RESULT_SUCCESS)
+    return;
+  const double ratio = emscripten_get_device_pixel_ratio();
+  const int w = std::max(1, static_cast<int>(cssW * ratio + 0.5));
+  const int h = std::max(1, static_cast<int>(cssH * ratio + 0.5));
+  int winW = 0, winH = 0;
+  glfwGetWindowSize(window, &winW, &winH);
+  if (w != winW || h != winH) glfwSetWindowSize(window, w, h);
+}
+#endif
+
 }  // namespace
 
 bool displayAvailable() {
+#ifdef __EMSCRIPTEN__
+  return true;  // the page's canvas
+#else
   return isSet("DISPLAY") || isSet("WAYLAND_DISPLAY");
+#endif
 }
 
 std::string selfPath(const char* argv0) {
@@ -103,7 +131,12 @@ bool Window::open(const Options& options, bool headless) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // nothing written next to the user's files
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
+#ifdef __EMSCRIPTEN__
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+  fitCanvas(window_);
+#else
   ImGui_ImplOpenGL3_Init("#version 330 core");
+#endif
   imguiStarted_ = true;
   return true;
 }
@@ -123,10 +156,16 @@ bool Window::shouldClose() const {
 }
 
 void Window::takeEvents(bool idle) {
+#ifdef __EMSCRIPTEN__
+  // the browser delivers the events between frames; the page's size may have changed
+  (void)idle;
+  fitCanvas(window_);
+#else
   if (idle)
     glfwWaitEventsTimeout(0.25);
   else
     glfwPollEvents();
+#endif
 }
 
 void Window::newFrame() {
@@ -155,13 +194,21 @@ FrameSize Window::frameSize() const {
 }
 
 float Window::contentScale() const {
+#ifdef __EMSCRIPTEN__
+  return 1.0f;  // the canvas has the screen's pixels; the page scales the text (page.js)
+#else
   float xscale = 1.0f, yscale = 1.0f;
   glfwGetWindowContentScale(window_, &xscale, &yscale);
   return std::max(1.0f, xscale);
+#endif
 }
 
 bool Window::hovered() const {
+#ifdef __EMSCRIPTEN__
+  return true;  // the canvas fills the page; Emscripten's GLFW does not say
+#else
   return glfwGetWindowAttrib(window_, GLFW_HOVERED) != 0;
+#endif
 }
 
 }  // namespace convexloc::viewer

@@ -64,6 +64,7 @@ struct Options {
   // lectures and the paper's figures
   std::optional<int> figure;              // --figure N: start from the paper's figure N
   std::string lecture;                    // --lecture FILE: a slide show
+  int slide = 1;                          // --slide K: the lecture starts at slide K
   std::string exportDir;                  // --export DIR: every slide (or the figure) as PNG
   bool yGap = false;                      // 2D: mark the smallest y-gap and its slab count
   bool hideSlice = false;                 // 3D: --slice none

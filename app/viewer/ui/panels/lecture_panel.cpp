@@ -88,9 +88,10 @@ bool startLecture(Model& model, UiState& ui, const Options& options, bool headle
     return true;
   }
   ui.show.lecture = std::move(parsed.lecture);
-  const std::string problem = showSlideNow(model, ui, 0);
+  const std::string problem = showSlideNow(model, ui, options.slide - 1);
   if (!problem.empty() && headless) {
-    std::cerr << "convexloc-viewer: " << options.lecture << ": slide 1: " << problem << "\n";
+    std::cerr << "convexloc-viewer: " << options.lecture << ": slide " << ui.show.current + 1
+              << ": " << problem << "\n";
     return false;
   }
   return true;
