@@ -1,8 +1,9 @@
 # The web page (scripts/web.sh): convexloc-viewer linked for the browser into site/, beside
 # index.html and page.js, with its files packed into convexloc-viewer.data:
-#   /shaders  the shaders in GLSL ES 3.00, made from the same files at configure time: the
-#             #version line becomes ES's with its precisions, and `noperspective` goes (ES has
-#             none; the thick segments' coverage is then interpolated with perspective)
+#   /shaders  the shaders in GLSL ES 3.00, made from the same files at configure time: ES's
+#             #version line and precisions come first (WebGL takes no comment before them),
+#             and `noperspective` goes (ES has none; the thick segments' coverage is then
+#             interpolated with perspective)
 #   /assets   the shipped shapes and lectures
 #   the DejaVu Sans font at its Debian path, where ui/style.cpp looks for it
 
@@ -17,8 +18,9 @@ foreach(source IN LISTS shader_sources)
   if(at LESS 0)
     message(FATAL_ERROR "${source}: no '#version 330 core' line to turn into GLSL ES 3.00")
   endif()
-  string(REPLACE "#version 330 core\n"
-         "#version 300 es\nprecision highp float;\nprecision highp int;\n" text "${text}")
+  # WebGL wants the #version line first, before any comment
+  string(REPLACE "#version 330 core\n" "" text "${text}")
+  string(PREPEND text "#version 300 es\nprecision highp float;\nprecision highp int;\n")
   string(REPLACE "noperspective " "" text "${text}")
   get_filename_component(name ${source} NAME)
   file(WRITE ${es_shaders}/${name}.new "${text}")

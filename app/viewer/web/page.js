@@ -28,12 +28,17 @@ var Module = {
   print: (text) => console.log(text),
   printErr: (text) => console.warn(text),
   framesDrawn: 0,
+  firstFrameMs: null,  // milliseconds from the page's start to the first frame drawn
+  downloads: [],       // the files offered as downloads: [name, bytes]
   setStatus: (text) => {
     if (text) convexlocStatus.textContent = text;
   },
   onFrame: () => {
-    if (++Module.framesDrawn === 1) convexlocStatus.remove();
+    if (++Module.framesDrawn > 1) return;
+    Module.firstFrameMs = performance.now();
+    convexlocStatus.remove();
   },
+  onDownload: (name, bytes) => Module.downloads.push([name, bytes]),
   onAbort: (what) => {
     convexlocStatus.textContent = 'convexloc stopped: ' + what;
   },

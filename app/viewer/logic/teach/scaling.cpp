@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <system_error>
 
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
@@ -184,10 +185,16 @@ void ScalingWorker::start(ScalingConfig config) {
       for (const Method3D m : kAllMethods3D) progress_.result.series3d.push_back({m, {}});
   }
   running_ = true;
-  thread_ = std::thread([this] {
-    run();
-    running_ = false;
-  });
+  inFrames_ = false;
+  try {
+    thread_ = std::thread([this] {
+      run();
+      running_ = false;
+    });
+  } catch (const std::system_error&) {
+    inFrames_ = true;  // no threads here: step() measures, a size a frame
+    nextStep_ = 0;
+  }
 }
 
 void ScalingWorker::cancel() {
@@ -200,6 +207,19 @@ void ScalingWorker::cancel() {
 
 void ScalingWorker::wait() {
   if (thread_.joinable()) thread_.join();
+  while (inFrames_ && running_) step();
+}
+
+void ScalingWorker::step() {
+  if (!inFrames_ || !running_) return;
+  try {
+    if (stop_ || !runStep(nextStep_++)) running_ = false;
+  } catch (const std::exception& e) {
+    const std::lock_guard lock(mutex_);
+    progress_.error = e.what();
+    progress_.running = false;
+    running_ = false;
+  }
 }
 
 ScalingProgress ScalingWorker::snapshot() const {
@@ -209,26 +229,33 @@ ScalingProgress ScalingWorker::snapshot() const {
 
 void ScalingWorker::run() {
   try {
-    for (const std::size_t n : config_.sizes) {
-      if (stop_) return;
-      runSize(n);
+    for (std::size_t k = 0; !stop_ && runStep(k); ++k) {
     }
-    for (const std::size_t f : config_.faces) {
-      if (stop_) return;
-      runSize3D(f);
-    }
-    std::vector<MemorySample> memory;
-    for (int e = 1; e <= 9 && !stop_; ++e) memory.push_back(measureMemory(std::pow(10.0, -e)));
-    const std::lock_guard lock(mutex_);
-    progress_.result.memory = std::move(memory);
-    progress_.done += 1;
-    progress_.running = false;
-    progress_.finished = !stop_;
   } catch (const std::exception& e) {
     const std::lock_guard lock(mutex_);
     progress_.error = e.what();
     progress_.running = false;
   }
+}
+
+bool ScalingWorker::runStep(std::size_t k) {
+  const std::size_t sizes = config_.sizes.size(), faces = config_.faces.size();
+  if (k < sizes) {
+    runSize(config_.sizes[k]);
+    return true;
+  }
+  if (k < sizes + faces) {
+    runSize3D(config_.faces[k - sizes]);
+    return true;
+  }
+  std::vector<MemorySample> memory;
+  for (int e = 1; e <= 9 && !stop_; ++e) memory.push_back(measureMemory(std::pow(10.0, -e)));
+  const std::lock_guard lock(mutex_);
+  progress_.result.memory = std::move(memory);
+  progress_.done += 1;
+  progress_.running = false;
+  progress_.finished = !stop_;
+  return false;
 }
 
 template <class Method, class Measure>

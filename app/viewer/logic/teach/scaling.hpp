@@ -105,6 +105,8 @@ struct ScalingProgress {
 };
 
 // Runs a measurement in its own thread; cancel() and the destructor stop and join it.
+// Where no thread can start (the web page has none), step() measures one size at a time
+// on the caller's thread instead, a frame each.
 // (it owns a thread, and its mutex keeps it from being copied or moved)
 class ScalingWorker {
  public:
@@ -114,8 +116,10 @@ class ScalingWorker {
   void start(ScalingConfig config);
   // asks the run to stop and waits for it
   void cancel();
-  // waits for the run to end
+  // waits for the run to end (without a thread: measures what is left, here)
   void wait();
+  // without a thread: measures the run's next size here; with one, or no run: nothing
+  void step();
   // a copy of the progress and the results so far
   ScalingProgress snapshot() const;
   const ScalingConfig& config() const { return config_; }
@@ -124,6 +128,8 @@ class ScalingWorker {
 
  private:
   void run();
+  // measures step k of the run (a 2D size, a 3D size, then the memory); false after the last
+  bool runStep(std::size_t k);
   void runSize(std::size_t n);
   void runSize3D(std::size_t f);
   // measures every method of `methods` allowed at `size` into `series`, under the lock
@@ -136,6 +142,8 @@ class ScalingWorker {
   ScalingProgress progress_;
   std::atomic<bool> stop_{false};
   std::atomic<bool> running_{false};
+  bool inFrames_ = false;     // no thread: step() runs the steps
+  std::size_t nextStep_ = 0;  // the step step() runs next
 };
 
 // === The plots

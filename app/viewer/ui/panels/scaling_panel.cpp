@@ -116,6 +116,7 @@ void plots(const Model& model, const ScalingProgress& p, bool solid) {
 
 void scalingWindow(Model& model, UiState& ui) {
   if (!model.whyOpen) return;
+  model.scaling->step();  // a measurement without a thread goes on a size a frame
   const ImGuiIO& io = ImGui::GetIO();
   // between a slide's card and its caption, where a lecture shows them (kept there while
   // the panels are hidden)
