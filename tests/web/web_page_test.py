@@ -11,6 +11,7 @@ Usage: tests/web/web_page_test.py [SITE_DIR]   (default build-web/site); exit 1 
 Prints the first frame's time and the frame rate with 10^5 sprayed points (figures for the
 README, not pass/fail: the test machine's speed is not the page's)."""
 
+import gzip
 import os
 import sys
 import tempfile
@@ -194,12 +195,23 @@ def report_spray(b, url):
     check(end[0] - start[0] >= 3, "the page keeps drawing with 10^5 sprayed points")
 
 
+def test_sizes(site):
+    total = 0
+    for name in sorted(os.listdir(site)):
+        with open(os.path.join(site, name), "rb") as f:
+            packed = len(gzip.compress(f.read(), 9))
+        print("      %-24s %8d bytes gzip -9" % (name, packed))
+        total += packed
+    check(total < 8 * 1000 * 1000, "the page's files are %.2f MB compressed (under 8)" % (total / 1e6))
+
+
 def main():
     site = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
         os.path.dirname(__file__), "..", "..", "build-web", "site")
     if not os.path.exists(os.path.join(site, "convexloc-viewer.wasm")):
         print("no web build in %s: run scripts/web.sh first" % site)
         return 1
+    test_sizes(site)
     server = cdp.Server(site)
     browser = cdp.Browser(WIDTH, HEIGHT)
     try:
