@@ -46,7 +46,8 @@ imgui_dir=$out/imgui
 if [[ ! -f $imgui_dir/imgui.cpp ]]; then
   apt_dir=$out/apt
   mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/parts" "$apt_dir/src"
-  echo "deb-src http://deb.debian.org/debian bookworm main" >"$apt_dir/sources.list"
+  echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main" \
+    >"$apt_dir/sources.list"
   apt_opts=(-o "Dir::Etc::SourceList=$apt_dir/sources.list" -o "Dir::Etc::SourceParts=$apt_dir/parts"
             -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache"
             -o APT::Sandbox::User=root -o Debug::NoLocking=1)
