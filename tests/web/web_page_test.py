@@ -11,6 +11,7 @@ Usage: tests/web/web_page_test.py [SITE_DIR]   (default build-web/site); exit 1 
 Prints the first frame's time and the frame rate with 10^5 sprayed points (figures for the
 README, not pass/fail: the test machine's speed is not the page's)."""
 
+import base64
 import gzip
 import os
 import sys
@@ -115,17 +116,22 @@ OFF_OCTAHEDRON = ("OFF\\n6 8 0\\n1 0 0\\n-1 0 0\\n0 1 0\\n0 -1 0\\n0 0 1\\n0 0 -
                   "3 0 3 5\\n")
 
 
-def test_drop(b, url):
-    b.open(url)
-    before = b.screenshot()
+def drop(b, js_bytes, name):
+    """Drops a file built in JS from `js_bytes` (a JS expression) on the canvas."""
     b.evaluate("""(() => {
-      const file = new File(["%s"], "octahedron.off", {type: "text/plain"});
+      const file = new File([%s], "%s");
       const data = new DataTransfer();
       data.items.add(file);
       Module.canvas.dispatchEvent(new DragEvent("drop", {dataTransfer: data, bubbles: true,
                                                          cancelable: true}));
-    })()""" % OFF_OCTAHEDRON)
+    })()""" % (js_bytes, name))
     b.settle(8)
+
+
+def test_drop(b, url):
+    b.open(url)
+    before = b.screenshot()
+    drop(b, '"%s"' % OFF_OCTAHEDRON, "octahedron.off")
     after = b.screenshot()
     check(scene_change(before, after) > 20000,
           "a dropped OFF file replaces the scene (%d pixels)" % scene_change(before, after))
@@ -133,6 +139,23 @@ def test_drop(b, url):
     background = after.pixel(SCENE[0] + 5, SCENE[3] - 5)
     check(not near(mid, background, 12), "the octahedron's faces cover the scene's middle")
     return after
+
+
+def test_hull(b, url):
+    # a binary PLY point cloud (no faces) opens as the exact hull of its points, as --hull
+    # makes any mesh do, in the page too
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "assets",
+                        "sphere-cloud.ply")
+    with open(path, "rb") as f:
+        cloud = base64.b64encode(f.read()).decode()
+    b.open(url)
+    before = b.screenshot()
+    drop(b, 'Uint8Array.from(atob("%s"), c => c.charCodeAt(0))' % cloud, "sphere-cloud.ply")
+    after = b.screenshot()
+    check(scene_change(before, after) > 20000, "a dropped PLY point cloud is drawn as its hull")
+    mid = after.pixel((SCENE[0] + SCENE[2]) // 2, (SCENE[1] + SCENE[3]) // 2)
+    check(not near(mid, after.pixel(SCENE[0] + 5, SCENE[3] - 5), 12),
+          "the hull's faces cover the scene's middle")
 
 
 def test_picker(b, before):
@@ -221,6 +244,7 @@ def main():
         test_lecture(browser, server.url)
         dropped = test_drop(browser, server.url)
         test_picker(browser, dropped)
+        test_hull(browser, server.url)
         test_downloads(browser, server.url)
         test_why(browser, server.url)
         report_spray(browser, server.url)
