@@ -215,7 +215,8 @@ int Viewer::start(const char* argv0) {
 bool Viewer::frame() {
   if (window_.shouldClose()) return false;
   stats_.begin();
-  window_.takeEvents(!headless_ && idle_.idle());
+  // the web page, idle: nothing new to draw, the picture on the page stays
+  if (!window_.takeEvents(!headless_ && idle_.idle())) return true;
   // outside the ImGui frame; a new text size refits the scene (the panels changed width)
   if (style_->update(model_.settings, ui_.pendingFontScale)) model_.requestFit();
   window_.newFrame();
@@ -229,7 +230,8 @@ bool Viewer::frame() {
   if (options_.animate && stats_.frames() > 0) nudgeCamera(model_);
   model_.lines2d.sync(model_.scene2d);
   model_.collectErrors();
-  idle_.note(cv::hadInput(dropped || ui_.pendingFontScale > 0.0f) || model_.busy());
+  idle_.note(cv::hadInput(dropped || ui_.pendingFontScale > 0.0f) || model_.busy() ||
+             options_.animate);  // a camera moving by itself is never idle
 
   cv::drawUi(model_, renderer_, ui_, stats_.seconds());
   view_.sync(model_, renderer_);
@@ -249,6 +251,7 @@ bool Viewer::frame() {
   ui_.reloadShaders = false;
   stats_.end();
   ui_.frameMs = stats_.smoothedMs();
+  cv::frameDrawn();
   if (lastFrame && headless_) printSummary();
   return !lastFrame;
 }

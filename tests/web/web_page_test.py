@@ -72,6 +72,19 @@ def test_default_scene(b, url):
     return img
 
 
+def test_idle(b):
+    # untouched, the page draws about 4 frames a second (the desktop viewer waits for events
+    # as long), not one every animation frame
+    b.settle(6)
+    start = b.evaluate("[Module.framesDrawn, performance.now()]")
+    b.wait_for("performance.now() > %f" % (start[1] + 2000))
+    end = b.evaluate("[Module.framesDrawn, performance.now()]")
+    drawn = end[0] - start[0]
+    check(1 <= drawn <= (end[1] - start[1]) / 250.0 + 2,
+          "an idle page draws a few frames a second (%d in %.1f s)" %
+          (drawn, (end[1] - start[1]) / 1000.0))
+
+
 def test_click(b, before):
     b.click(640, 470)
     b.settle()
@@ -239,6 +252,7 @@ def main():
     browser = cdp.Browser(WIDTH, HEIGHT)
     try:
         default_img = test_default_scene(browser, server.url)
+        test_idle(browser)
         test_click(browser, default_img)
         test_figure(browser, server.url, default_img)
         test_lecture(browser, server.url)

@@ -3,11 +3,6 @@
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten/emscripten.h>
-
-// tells the page a frame was drawn (it counts them; the first one takes the loading note away)
-EM_JS(void, convexlocFrameDrawn, (), {
-  if (Module.onFrame) Module.onFrame();
-});
 #endif
 
 namespace convexloc::viewer {
@@ -17,9 +12,7 @@ namespace convexloc::viewer {
 namespace {
 // one animation frame; the loop stops when the source's run is over
 void browserFrame(void* source) {
-  const bool more = static_cast<FrameSource*>(source)->frame();
-  convexlocFrameDrawn();
-  if (!more) emscripten_cancel_main_loop();
+  if (!static_cast<FrameSource*>(source)->frame()) emscripten_cancel_main_loop();
 }
 }  // namespace
 

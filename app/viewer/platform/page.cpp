@@ -27,6 +27,9 @@ EM_JS(void, convexlocDownload, (const char* path, const char* name, const char* 
   FS.unlink(file);
   if (Module.onDownload) Module.onDownload(UTF8ToString(name), data.length);
 });
+EM_JS(void, convexlocFrameDrawn, (), {
+  if (Module.onFrame) Module.onFrame();
+});
 // clang-format on
 #endif
 
@@ -43,6 +46,10 @@ void preparePage() {
   std::error_code ec;
   std::filesystem::create_directories(kDownloadDir, ec);
   std::filesystem::current_path(kDownloadDir, ec);
+}
+
+void frameDrawn() {
+  convexlocFrameDrawn();
 }
 
 void offerDownloads() {
@@ -63,6 +70,7 @@ void offerDownloads() {
 #else
 
 void preparePage() {}
+void frameDrawn() {}
 void offerDownloads() {}
 
 #endif

@@ -9,6 +9,10 @@ namespace convexloc::viewer {
 // where the screenshots and SVGs are written. The desktop: nothing.
 void preparePage();
 
+// Web page: tells the page's script a frame was drawn (it counts them; the first one takes
+// the loading note away). The desktop: nothing.
+void frameDrawn();
+
 // Web page: offers every PNG and SVG written into the working directory since the last call
 // as a download, then deletes it. The desktop: nothing.
 void offerDownloads();

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #ifdef __EMSCRIPTEN__
+#include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #endif
 
@@ -49,18 +50,38 @@ void contextHints() {
 }
 
 #ifdef __EMSCRIPTEN__
+// Whether the page saw input (the mouse, the keyboard, a touch, a drop, a resize) since the
+// last call: an idle viewer draws again at once for it.
+// clang-format off
+EM_JS(bool, convexlocTakeInput, (), {
+  if (!Module.convexlocInputWatched) {
+    Module.convexlocInputWatched = true;
+    const note = () => { Module.convexlocInput = true; };
+    for (const kind of ['mousemove', 'mousedown', 'mouseup', 'wheel', 'keydown', 'keyup',
+                        'touchstart', 'touchmove', 'touchend', 'drop', 'resize', 'focus'])
+      window.addEventListener(kind, note, {capture: true, passive: true});
+  }
+  const input = !!Module.convexlocInput;
+  Module.convexlocInput = false;
+  return input;
+});
+// clang-format on
+
 // The canvas's size on the page in device pixels: the page's style sizes it, the window
-// (GLFW's, Emscripten's) follows, so a HiDPI screen gets every pixel it has.
-void fitCanvas(GLFWwindow* window) {
+// (GLFW's, Emscripten's) follows, so a HiDPI screen gets every pixel it has. True when the
+// size changed.
+bool fitCanvas(GLFWwindow* window) {
   double cssW = 0.0, cssH = 0.0;
   if (emscripten_get_element_css_size("#canvas", &cssW, &cssH) != EMSCRIPTEN_RESULT_SUCCESS)
-    return;
+    return false;
   const double ratio = emscripten_get_device_pixel_ratio();
   const int w = std::max(1, static_cast<int>(cssW * ratio + 0.5));
   const int h = std::max(1, static_cast<int>(cssH * ratio + 0.5));
   int winW = 0, winH = 0;
   glfwGetWindowSize(window, &winW, &winH);
-  if (w != winW || h != winH) glfwSetWindowSize(window, w, h);
+  if (w == winW && h == winH) return false;
+  glfwSetWindowSize(window, w, h);
+  return true;
 }
 #endif
 
@@ -155,16 +176,21 @@ bool Window::shouldClose() const {
   return glfwWindowShouldClose(window_);
 }
 
-void Window::takeEvents(bool idle) {
+bool Window::takeEvents(bool idle) {
 #ifdef __EMSCRIPTEN__
   // the browser delivers the events between frames; the page's size may have changed
-  (void)idle;
-  fitCanvas(window_);
+  const bool resized = fitCanvas(window_);
+  const bool input = convexlocTakeInput();
+  const double now = emscripten_get_now();
+  if (idle && !resized && !input && now - lastDrawnMs_ < 250.0) return false;
+  lastDrawnMs_ = now;
+  return true;
 #else
   if (idle)
     glfwWaitEventsTimeout(0.25);
   else
     glfwPollEvents();
+  return true;
 #endif
 }
 
