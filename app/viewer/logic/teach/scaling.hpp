@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -105,20 +106,22 @@ struct ScalingProgress {
 };
 
 // Runs a measurement in its own thread; cancel() and the destructor stop and join it.
-// Where no thread can start (the web page has none), step() measures one size at a time
-// on the caller's thread instead, a frame each.
+// Where no thread can start (the web page has none), step() measures one method at one
+// size at a time on the caller's thread instead, a frame each.
 // (it owns a thread, and its mutex keeps it from being copied or moved)
 class ScalingWorker {
  public:
   ScalingWorker() = default;
   ~ScalingWorker();
-  // starts a run (a running one is cancelled first)
-  void start(ScalingConfig config);
+  // Starts a run (a running one is cancelled first): in a thread, or, without `threaded` or
+  // where no thread can start, by step() on the caller's thread.
+  void start(ScalingConfig config, bool threaded = true);
   // asks the run to stop and waits for it
   void cancel();
   // waits for the run to end (without a thread: measures what is left, here)
   void wait();
-  // without a thread: measures the run's next size here; with one, or no run: nothing
+  // without a thread: measures the run's next method at its size here; with one, or no
+  // run: nothing
   void step();
   // a copy of the progress and the results so far
   ScalingProgress snapshot() const;
@@ -136,14 +139,30 @@ class ScalingWorker {
   template <class Method, class Measure>
   void runMethods(std::span<const Method> methods, std::size_t size,
                   std::vector<SeriesOf<Method>>& series, Measure measure);
+  // measures methods[i] at `size` into series[i] when it is measured there
+  template <class Method, class Measure>
+  void measureOne(std::span<const Method> methods, std::size_t i, std::size_t size,
+                  std::vector<SeriesOf<Method>>& series, Measure& measure);
+  // without a thread: the next method at the current size, or the memory; false after it
+  bool stepOne();
+  // the next of `methods` at `size`, its shape and points made by `make` at the first
+  template <class Method, class Make>
+  bool stepMethod(std::span<const Method> methods, std::size_t size,
+                  std::vector<SeriesOf<Method>>& series,
+                  std::function<ScalingSample(Method)>& measure, Make make);
   ScalingConfig config_;
   std::thread thread_;
   mutable std::mutex mutex_;
   ScalingProgress progress_;
   std::atomic<bool> stop_{false};
   std::atomic<bool> running_{false};
-  bool inFrames_ = false;     // no thread: step() runs the steps
-  std::size_t nextStep_ = 0;  // the step step() runs next
+  // without a thread (step() runs the steps): the size under way (2D, then 3D), the method
+  // measured next there, and the size's shape and points
+  bool inFrames_ = false;
+  std::size_t nextStep_ = 0;
+  std::size_t nextMethod_ = 0;
+  std::function<ScalingSample(Method2D)> measure2d_;
+  std::function<ScalingSample(Method3D)> measure3d_;
 };
 
 // === The plots
