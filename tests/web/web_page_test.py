@@ -17,6 +17,7 @@ import os
 import sys
 import tempfile
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import cdp  # noqa: E402
 
@@ -45,30 +46,44 @@ def scene_change(a, b):
     return cdp.changed_pixels(a, b, SCENE)
 
 
+def dominant_colour(img, box, background):
+    """The most frequent colour in `box` that is neither the background nor grey (a point's)."""
+    counts = {}
+    for c in img.region(*box):
+        if near(c, background, 30) or max(c) - min(c) < 60:
+            continue
+        key = tuple(v // 16 for v in c)
+        counts[key] = counts.get(key, 0) + 1
+    if not counts:
+        return None, 0
+    key = max(counts, key=counts.get)
+    return tuple(v * 16 + 8 for v in key), counts[key]
+
+
 def test_default_scene(b, url):
     b.open(url)
     print("      first frame %.0f ms after the page started (SwiftShader)" %
           b.evaluate("Module.firstFrameMs"))
     img = b.screenshot()
     background = img.pixel(SCENE[0] + 5, SCENE[3] - 5)
-    # the default scene: a random 16-gon around the window's middle, its spray classified,
-    # inside points blue and outside points orange (the legend's dots give the colours)
-    inside_colour = img.pixel(967, 42)
-    outside_colour = img.pixel(967, 82)
-    check(not near(inside_colour, background, 30) and not near(outside_colour, background, 30),
-          "the legend shows the inside and outside colours")
+    # the default scene: a random 16-gon around the scene's middle, its spray classified
+    # by the locator, inside points in one colour and outside points in another
     middle = (560, 330, 700, 510)   # well inside the 16-gon
     ring = (360, 660, 940, 690)     # below the polygon's lowest vertex: outside
-    blue_mid = count_near(img, middle, inside_colour)
-    orange_mid = count_near(img, middle, outside_colour)
-    orange_ring = count_near(img, ring, outside_colour)
-    blue_ring = count_near(img, ring, inside_colour)
-    check(blue_mid > 200 and orange_mid < blue_mid // 20,
-          "inside points where the shape is (%d inside-coloured, %d outside-coloured)" %
-          (blue_mid, orange_mid))
-    check(orange_ring > 200 and blue_ring < orange_ring // 20,
-          "outside points where the shape is not (%d outside-, %d inside-coloured)" %
-          (orange_ring, blue_ring))
+    inside_colour, inside_count = dominant_colour(img, middle, background)
+    outside_colour, outside_count = dominant_colour(img, ring, background)
+    check(inside_count > 200 and outside_count > 200,
+          "points drawn inside the shape (%d) and around it (%d)" % (inside_count, outside_count))
+    check(inside_colour is not None and outside_colour is not None and
+          not near(inside_colour, outside_colour, 60),
+          "the inside points' colour %s is not the outside points' %s" %
+          (inside_colour, outside_colour))
+    if inside_colour and outside_colour:
+        stray_mid = count_near(img, middle, outside_colour, 24)
+        stray_ring = count_near(img, ring, inside_colour, 24)
+        check(stray_mid < inside_count // 20 and stray_ring < outside_count // 20,
+              "no outside-coloured points where the shape is (%d), no inside-coloured ones "
+              "where it is not (%d)" % (stray_mid, stray_ring))
     return img
 
 
