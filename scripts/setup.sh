@@ -10,6 +10,8 @@
 #   --bench     build-bench/ Release, g++: convexloc-bench with GEOS and CGAL beside it
 #                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox, and
 #                            python3-shapely, python3-scipy for tests/bench/python_peers.py)
+# Every variant installs emscripten, dpkg-dev, fonts-dejavu-core (scripts/web.sh builds the web
+# page with them) and chromium, python3-websocket (tests/web drives the page in a browser).
 # Every variant installs pybind11-dev, python3-numpy and python3-pytest (and, for the Python
 # module's Dask path and its type checks, python3-dask, python3-distributed, python3-pandas and
 # python3-mypy): the plain and bench
@@ -33,7 +35,8 @@ packages=(cmake ninja-build g++ pkg-config libgmp-dev libboost-dev libcli11-dev
           libgtest-dev libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
           xvfb xauth xdotool libgl1-mesa-dri clang-14 libclang-rt-14-dev
           python3-dev pybind11-dev python3-numpy python3-pytest
-          python3-dask python3-distributed python3-pandas python3-mypy)
+          python3-dask python3-distributed python3-pandas python3-mypy
+          emscripten dpkg-dev fonts-dejavu-core chromium python3-websocket)
 if [[ $variant == bench ]]; then
   packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-shapely python3-scipy)
 fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs, builds (warnings as errors) and runs every test through CTest, three times over:
 #   1. build/       Release, g++: the whole suite
+#      build-web/   the web page (scripts/web.sh), checked in headless Chromium (tests/web)
 #   2. build-asan/  the whole suite again under AddressSanitizer + UBSan (any report fails)
 #   3. build-fuzz/  each libFuzzer target for CONVEXLOC_FUZZ_SECONDS (default 20) from its seeds
 # Fails when any test fails. Usage: scripts/test.sh [--quick]   (--quick: step 1 only)
@@ -20,6 +21,10 @@ scripts/setup.sh --werror
 step="plain tests"
 echo "convexloc: running the test suite (build/) [$(elapsed)]"
 ctest --test-dir build "${ctest_args[@]}"
+step="web page"
+echo "convexloc: building the web page and testing it in Chromium (build-web/) [$(elapsed)]"
+scripts/web.sh
+/usr/bin/python3 tests/web/web_page_test.py build-web/site
 if [[ "${1:-}" == "--quick" ]]; then exit 0; fi
 
 step="sanitized build"

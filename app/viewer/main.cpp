@@ -1,6 +1,6 @@
 // convexloc-viewer — the interactive teaching app for the paper's polar slabs.
 //
-// main() runs the frame loop in the order of Dear ImGui's GLFW + OpenGL 3 example: take
+// Viewer::frame() is one turn of Dear ImGui's GLFW + OpenGL 3 example loop: take
 // events, start the ImGui frame, build the UI (the camera moves only when ImGui does not
 // want the mouse), render ImGui's lists, clear, draw the scene, draw ImGui over it, swap.
 // The window and input live in platform/, everything shown in logic/ (GL-free), every GL
@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,9 +23,11 @@
 #include "logic/app/lecture.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
+#include "platform/frame_loop.hpp"
 #include "platform/frame_stats.hpp"
 #include "platform/input.hpp"
 #include "platform/notes_window.hpp"
+#include "platform/page.hpp"
 #include "platform/window.hpp"
 #include "ui/frame.hpp"
 #include "ui/key_actions.hpp"
@@ -175,6 +178,128 @@ void showNotes(cv::NotesWindow& notes, const cv::Window& window, cv::UiState& ui
   if (ui.show.active()) ui.showNotes = wanted;
 }
 
+// The viewer from its first frame to its last: the window, the model, the panels' state,
+// the GL objects; frame() is one turn of Dear ImGui's GLFW + OpenGL 3 example loop.
+class Viewer final : public cv::FrameSource {
+ public:
+  Viewer(const cv::Options& options, bool headless) : options_(options), headless_(headless) {}
+  // opens the window and readies the scene: an exit code when the run ends here, else -1
+  int start(const char* argv0);
+  bool frame() override;
+  int exitCode() const override { return exitCode_; }
+
+ private:
+  // --frames and the other headless runs: what the frames cost, on stdout
+  void printSummary() const;
+
+  cv::Options options_;
+  bool headless_;
+  cv::Window window_;  // first: the GL objects below go before their context
+  int samples_ = 0;
+  cv::Model model_;
+  cv::UiState ui_;
+  std::unique_ptr<cv::SlideExporter> exporter_;
+  std::unique_ptr<cv::StyleKeeper> style_;
+  cv::Renderer renderer_;
+  cv::SceneView view_;
+  cv::NotesWindow notes_;
+  cv::Interaction interaction_;
+  cv::FrameStats stats_;
+  cv::IdleCounter idle_;
+  int exitCode_ = 0;
+};
+
+int Viewer::start(const char* argv0) {
+  if (!window_.open(options_, headless_)) return 1;
+  cv::watchDrops(window_.handle());
+  cv::watchKeys(window_.handle());
+  const cv::GlInfo gl = cv::queryGl();
+  samples_ = samplesFor(options_, gl);
+  cv::enableMultisample();
+  if (const std::string problem = model_.apply(options_); !problem.empty() && headless_) {
+    std::cerr << "convexloc-viewer: " << problem << "\n";
+    return 1;
+  }
+  ui_ = startUi(model_, options_, gl, samples_);
+  ui_.exporting = headless_;  // no tooltips in written files
+  if (!options_.lecture.empty()) {
+    // a lecture's slides give their own text size: --font-scale zooms it
+    model_.settings.textZoom = options_.fontScale;
+    model_.settings.fontScale = 1.0f;
+  }
+  if (!cv::startLecture(model_, ui_, options_, headless_)) return 1;
+  exporter_ = std::make_unique<cv::SlideExporter>(options_.exportDir);
+  style_ = std::make_unique<cv::StyleKeeper>(model_.settings, window_.contentScale());
+  const std::string shaderDir = shaderDirFor(options_, argv0);
+  if (!renderer_.init(shaderDir)) {
+    std::cerr << "convexloc-viewer: shader problems in " << shaderDir << ":\n"
+              << renderer_.shaderLog();
+    model_.fail("shaders failed to compile (see View > shaders): " + shaderDir);
+    if (headless_) return 1;
+  }
+  return -1;
+}
+
+bool Viewer::frame() {
+  if (window_.shouldClose()) return false;
+  stats_.begin();
+  // the web page, idle: nothing new to draw, the picture on the page stays
+  if (!window_.takeEvents(!headless_ && idle_.idle())) return true;
+  // a slide's page scales with the window; outside the ImGui frame, a new text size on
+  // screen (a new page scale, zoom or text size) makes the font again and refits the scene
+  model_.settings.pageScale =
+      static_cast<float>(cv::pageOf(model_, ui_, window_.frameSize().window).scale);
+  if (style_->update(model_.settings, ui_.pendingFontScale)) model_.requestFit();
+  window_.newFrame();
+
+  const cv::FrameSize size = window_.frameSize();
+  model_.camera2d.setViewport(size.window);
+  model_.camera3d.setViewport(size.window);
+  const bool dropped = openDropped(model_, ui_);
+  if (model_.takeFitRequest()) cv::fitScene(model_, ui_, size.window, stats_.seconds());
+  if (!headless_) takeInput(window_, interaction_, model_, ui_);
+  if (options_.animate && stats_.frames() > 0) nudgeCamera(model_);
+  model_.lines2d.sync(model_.scene2d);
+  model_.collectErrors();
+  idle_.note(cv::hadInput(dropped || ui_.pendingFontScale > 0.0f) || model_.busy() ||
+             options_.animate);  // a camera moving by itself is never idle
+
+  cv::drawUi(model_, renderer_, ui_, stats_.seconds());
+  view_.sync(model_, renderer_);
+  cv::drawLabels(model_, ui_, view_);
+  cv::blankIfAsked(ui_.show);
+  ImGui::Render();
+
+  drawScene(model_, renderer_, view_, size, samples_, ui_);
+  window_.renderImGui();
+
+  stats_.count();
+  const bool lastFrame = writeFrameFiles(options_, headless_, stats_, size, model_, view_, ui_,
+                                         *exporter_, exitCode_);
+  cv::offerDownloads();
+  if (headless_) cv::finishGl();  // time what the GL really did
+  window_.swapBuffers();
+  if (!headless_) showNotes(notes_, window_, ui_);
+  if (ui_.reloadShaders && !renderer_.reload()) model_.fail("shaders failed to compile: see View");
+  ui_.reloadShaders = false;
+  stats_.end();
+  ui_.frameMs = stats_.smoothedMs();
+  cv::frameDrawn();
+  // --export: a lecture with problems wrote its good slides, and says so by its exit code
+  if (lastFrame && exporter_->active() && !ui_.show.lecture.allProblems().empty()) exitCode_ = 1;
+  if (lastFrame && headless_) printSummary();
+  return !lastFrame;
+}
+
+void Viewer::printSummary() const {
+  std::printf(
+      "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
+      "ms/frame after the first (%s)\n",
+      stats_.frames(), options_.width, options_.height, renderer_.pointCount(),
+      view_.pointsDrawn(), options_.animate ? "camera moving" : "camera still", stats_.meanMs(),
+      ui_.glInfo.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -189,93 +314,8 @@ int main(int argc, char** argv) {
   }
   const bool headless = !options.screenshot.empty() || !options.svg.empty() ||
                         options.framesGiven || !options.exportDir.empty();
-
-  cv::Window window;
-  if (!window.open(options, headless)) return 1;
-  cv::watchDrops(window.handle());
-  cv::watchKeys(window.handle());
-  const cv::GlInfo gl = cv::queryGl();
-  int samples = samplesFor(options, gl);
-  cv::enableMultisample();
-
-  cv::Model model;
-  if (const std::string problem = model.apply(options); !problem.empty() && headless) {
-    std::cerr << "convexloc-viewer: " << problem << "\n";
-    return 1;
-  }
-  cv::UiState ui = startUi(model, options, gl, samples);
-  ui.exporting = headless;  // no tooltips in written files
-  if (!options.lecture.empty()) {
-    // a lecture's slides give their own text size: --font-scale zooms it
-    model.settings.textZoom = options.fontScale;
-    model.settings.fontScale = 1.0f;
-  }
-  if (!cv::startLecture(model, ui, options, headless)) return 1;
-  cv::SlideExporter exporter(options.exportDir);
-  cv::StyleKeeper style(model.settings, window.contentScale());
-  cv::Renderer renderer;
-  const std::string shaderDir = shaderDirFor(options, argv[0]);
-  if (!renderer.init(shaderDir)) {
-    std::cerr << "convexloc-viewer: shader problems in " << shaderDir << ":\n"
-              << renderer.shaderLog();
-    model.fail("shaders failed to compile (see View > shaders): " + shaderDir);
-    if (headless) return 1;
-  }
-  cv::SceneView view;
-  cv::NotesWindow notes;
-  cv::Interaction interaction;
-  cv::FrameStats stats;
-  cv::IdleCounter idle;
-  int exitCode = 0;
-  while (!window.shouldClose()) {
-    stats.begin();
-    window.takeEvents(!headless && idle.idle());
-    // a slide's page scales with the window; outside the ImGui frame, a new text size on
-    // screen (a new page scale, zoom or text size) makes the font again and refits the scene
-    model.settings.pageScale =
-        static_cast<float>(cv::pageOf(model, ui, window.frameSize().window).scale);
-    if (style.update(model.settings, ui.pendingFontScale)) model.requestFit();
-    window.newFrame();
-
-    const cv::FrameSize size = window.frameSize();
-    model.camera2d.setViewport(size.window);
-    model.camera3d.setViewport(size.window);
-    const bool dropped = openDropped(model, ui);
-    if (model.takeFitRequest()) cv::fitScene(model, ui, size.window, stats.seconds());
-    if (!headless) takeInput(window, interaction, model, ui);
-    if (options.animate && stats.frames() > 0) nudgeCamera(model);
-    model.lines2d.sync(model.scene2d);
-    model.collectErrors();
-    idle.note(cv::hadInput(dropped || ui.pendingFontScale > 0.0f) || model.busy());
-
-    cv::drawUi(model, renderer, ui, stats.seconds());
-    view.sync(model, renderer);
-    cv::drawLabels(model, ui, view);
-    cv::blankIfAsked(ui.show);
-    ImGui::Render();
-
-    drawScene(model, renderer, view, size, samples, ui);
-    window.renderImGui();
-
-    stats.count();
-    const bool lastFrame =
-        writeFrameFiles(options, headless, stats, size, model, view, ui, exporter, exitCode);
-    if (headless) cv::finishGl();  // time what the GL really did
-    window.swapBuffers();
-    if (!headless) showNotes(notes, window, ui);
-    if (ui.reloadShaders && !renderer.reload()) model.fail("shaders failed to compile: see View");
-    ui.reloadShaders = false;
-    stats.end();
-    ui.frameMs = stats.smoothedMs();
-    if (lastFrame) break;
-  }
-  // --export: a lecture with problems wrote its good slides, and says so by its exit code
-  if (exporter.active() && !ui.show.lecture.allProblems().empty()) exitCode = 1;
-  if (headless)
-    std::printf(
-        "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
-        "ms/frame after the first (%s)\n",
-        stats.frames(), options.width, options.height, renderer.pointCount(), view.pointsDrawn(),
-        options.animate ? "camera moving" : "camera still", stats.meanMs(), ui.glInfo.c_str());
-  return exitCode;
+  cv::preparePage();
+  auto viewer = std::make_unique<Viewer>(options, headless);
+  if (const int code = viewer->start(argv[0]); code >= 0) return code;
+  return cv::runFrames(std::move(viewer));
 }

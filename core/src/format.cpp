@@ -6,6 +6,8 @@
 #include <initializer_list>
 #include <iterator>
 
+#include "convexloc/detail/chars.hpp"
+
 namespace convexloc {
 namespace {
 
@@ -24,7 +26,7 @@ std::string exactTuple(std::initializer_list<double> values) {
 
 std::string exactText(double v) {
   char buf[64];  // "-1.2345678901234567e-308" with room to spare: to_chars cannot fail
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = detail::doubleToChars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 

@@ -402,3 +402,11 @@ TEST(Lecture, TeachingViewsDoNotLeakIntoTheNextSlide) {
   EXPECT_FALSE(m.planes3d.enabled());
   EXPECT_EQ(m.dim, cv::Dim::Three);
 }
+
+TEST(Lecture, SlideStartsTheLectureAtASlideNumberedFromOne) {
+  // --slide K (the web page's ?lecture=paper&slide=K)
+  EXPECT_EQ(parsed({"--lecture", "x.lecture"}).slide, 1);
+  EXPECT_EQ(parsed({"--lecture", "x.lecture", "--slide", "12"}).slide, 12);
+  for (const char* bad : {"0", "-1", "two", "1.5", ""})
+    EXPECT_NE(cv::parseOptions(std::vector<std::string_view>{"--slide", bad}).error, "") << bad;
+}

@@ -145,6 +145,60 @@ TEST(Scaling, SolidsOnGeodesicSpheres) {
   EXPECT_EQ(cv::solidSvgPath("/tmp/why.svg"), "/tmp/why-3d.svg");
 }
 
+TEST(Scaling, StepsWithoutAThreadMeasureWhatTheThreadMeasures) {
+  // the web page's way: one method at one size per step() on the caller's thread
+  cv::ScalingConfig c;
+  c.sizes = cv::scalingSizes(512);
+  c.faces = cv::geodesicSizes(80);
+  c.tracedPoints = 100;
+  c.timedPoints = 512;
+  c.minSeconds = 0.0;
+  cv::ScalingWorker threaded, stepped;
+  threaded.start(c);
+  threaded.wait();
+  stepped.start(c, false);
+  std::size_t steps = 0;
+  for (; stepped.running() && steps < 1000; ++steps) {
+    const cv::ScalingProgress before = stepped.snapshot();
+    stepped.step();
+    // at most one measurement a step, so that a frame is never long
+    EXPECT_LE(stepped.snapshot().done, before.done + 1);
+  }
+  EXPECT_EQ(steps, (c.sizes.size() * std::size(convexloc::kAllMethods2D)) +
+                       (c.faces.size() * std::size(convexloc::kAllMethods3D)) + 1);
+  const cv::ScalingProgress a = threaded.snapshot(), b = stepped.snapshot();
+  EXPECT_TRUE(b.finished);
+  EXPECT_EQ(b.done, b.total);
+  EXPECT_EQ(a.total, b.total);
+  ASSERT_EQ(a.result.series.size(), b.result.series.size());
+  for (std::size_t i = 0; i < a.result.series.size(); ++i) {
+    ASSERT_EQ(a.result.series[i].samples.size(), b.result.series[i].samples.size());
+    for (std::size_t k = 0; k < a.result.series[i].samples.size(); ++k) {
+      // the same points traced: the same predicate counts, the same memory
+      EXPECT_EQ(a.result.series[i].samples[k].predicates, b.result.series[i].samples[k].predicates);
+      EXPECT_EQ(a.result.series[i].samples[k].bytes, b.result.series[i].samples[k].bytes);
+    }
+  }
+  ASSERT_EQ(a.result.series3d.size(), b.result.series3d.size());
+  for (std::size_t i = 0; i < a.result.series3d.size(); ++i)
+    EXPECT_EQ(a.result.series3d[i].samples.size(), b.result.series3d[i].samples.size());
+  EXPECT_EQ(a.result.memory.size(), b.result.memory.size());
+}
+
+TEST(Scaling, CancelStopsASteppedRun) {
+  cv::ScalingWorker worker;
+  cv::ScalingConfig c;
+  c.sizes = cv::scalingSizes(1000000);
+  worker.start(c, false);
+  worker.step();
+  worker.cancel();  // measures nothing more
+  EXPECT_FALSE(worker.running());
+  const cv::ScalingProgress p = worker.snapshot();
+  EXPECT_FALSE(p.running);
+  EXPECT_TRUE(p.cancelled);
+  EXPECT_EQ(p.done, 1u);
+}
+
 TEST(Scaling, TheLinearMethodStopsAtItsLimit) {
   cv::ScalingConfig c;
   c.linearLimit = 64;

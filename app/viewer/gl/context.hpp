@@ -30,6 +30,9 @@ GlInfo queryGl();
 // lets multisampled targets resolve with anti-aliasing
 void enableMultisample();
 
+// lets vertex shaders set the size of points (GL ES always does)
+void enableShaderPointSize();
+
 // clears the window's framebuffer (width x height pixels) to `background`, depth too
 void clearWindow(int width, int height, Rgba background);
 

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <vector>
 
+#include "gl/context.hpp"
+
 namespace convexloc::viewer {
 namespace {
 
@@ -361,7 +363,7 @@ void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
   flat.depth = false;
   flat.offset = false;
   blending(flat);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  enableShaderPointSize();
   commonUniforms(markers_, f);
   markers_.set("uPixelRatio", f.pixelRatio * f.lineScale);
   glBindVertexArray(l.markVao);
@@ -371,7 +373,7 @@ void Renderer::drawMarkers(Layer layer, const FrameParams& f) {
 void Renderer::drawPoints(const FrameParams& f, PointRange range) {
   if (!pointCount_ || !points_.ready()) return;
   blending(f);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  enableShaderPointSize();
   commonUniforms(points_, f);
   points_.set("uPointSize", f.pointSize);
   points_.set("uBoundaryScale", 1.7f);

@@ -91,6 +91,10 @@ std::vector<std::string> takeDroppedFiles() {
   return files;
 }
 
+void openLater(const std::string& path) {
+  gDropped.push_back(path);
+}
+
 PointerInput pointerInput(bool hovering) {
   const ImGuiIO& io = ImGui::GetIO();
   PointerInput in;

@@ -19,6 +19,8 @@ void watchDrops(GLFWwindow* window);
 void watchKeys(GLFWwindow* window);
 // the files dropped since the last call, oldest first
 std::vector<std::string> takeDroppedFiles();
+// `path` opens at the next frame, as a file dropped on the window does
+void openLater(const std::string& path);
 
 // the mouse this frame, from ImGui's IO; `hovering`: the cursor is over the window
 PointerInput pointerInput(bool hovering);

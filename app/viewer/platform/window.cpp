@@ -9,6 +9,11 @@
 
 #include <unistd.h>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+#endif
+
 #include "gl/context.hpp"
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
@@ -23,27 +28,71 @@ void onGlfwError(int code, const char* text) {
   std::cerr << "convexloc-viewer: GLFW error " << code << ": " << text << "\n";
 }
 
+#ifndef __EMSCRIPTEN__
 // whether an environment variable is set and not empty
 bool isSet(const char* name) {
   const char* v = std::getenv(name);
   return v && *v;
 }
+#endif
 
-// the GL context every window asks for
+// the GL context every window asks for (the web page: WebGL 2, chosen at link time)
 void contextHints() {
+#ifndef __EMSCRIPTEN__
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+#endif
   // The window needs no multisampling: the scene is drawn into an offscreen target that
   // has it (see SceneView), and ImGui anti-aliases its own shapes.
   glfwWindowHint(GLFW_SAMPLES, 0);
 }
 
+#ifdef __EMSCRIPTEN__
+// Whether the page saw input (the mouse, the keyboard, a touch, a drop, a resize) since the
+// last call: an idle viewer draws again at once for it.
+// clang-format off
+EM_JS(bool, convexlocTakeInput, (), {
+  if (!Module.convexlocInputWatched) {
+    Module.convexlocInputWatched = true;
+    const note = () => { Module.convexlocInput = true; };
+    for (const kind of ['mousemove', 'mousedown', 'mouseup', 'wheel', 'keydown', 'keyup',
+                        'touchstart', 'touchmove', 'touchend', 'drop', 'resize', 'focus'])
+      window.addEventListener(kind, note, {capture: true, passive: true});
+  }
+  const input = !!Module.convexlocInput;
+  Module.convexlocInput = false;
+  return input;
+});
+// clang-format on
+
+// The canvas's size on the page in device pixels: the page's style sizes it, the window
+// (GLFW's, Emscripten's) follows, so a HiDPI screen gets every pixel it has. True when the
+// size changed.
+bool fitCanvas(GLFWwindow* window) {
+  double cssW = 0.0, cssH = 0.0;
+  if (emscripten_get_element_css_size("#canvas", &cssW, &cssH) != EMSCRIPTEN_RESULT_SUCCESS)
+    return false;
+  const double ratio = emscripten_get_device_pixel_ratio();
+  const int w = std::max(1, static_cast<int>(cssW * ratio + 0.5));
+  const int h = std::max(1, static_cast<int>(cssH * ratio + 0.5));
+  int winW = 0, winH = 0;
+  glfwGetWindowSize(window, &winW, &winH);
+  if (w == winW && h == winH) return false;
+  glfwSetWindowSize(window, w, h);
+  return true;
+}
+#endif
+
 }  // namespace
 
 bool displayAvailable() {
+#ifdef __EMSCRIPTEN__
+  return true;  // the page's canvas
+#else
   return isSet("DISPLAY") || isSet("WAYLAND_DISPLAY");
+#endif
 }
 
 std::string selfPath(const char* argv0) {
@@ -103,7 +152,12 @@ bool Window::open(const Options& options, bool headless) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // nothing written next to the user's files
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
+#ifdef __EMSCRIPTEN__
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+  fitCanvas(window_);
+#else
   ImGui_ImplOpenGL3_Init("#version 330 core");
+#endif
   imguiStarted_ = true;
   return true;
 }
@@ -122,11 +176,22 @@ bool Window::shouldClose() const {
   return glfwWindowShouldClose(window_);
 }
 
-void Window::takeEvents(bool idle) {
+bool Window::takeEvents(bool idle) {
+#ifdef __EMSCRIPTEN__
+  // the browser delivers the events between frames; the page's size may have changed
+  const bool resized = fitCanvas(window_);
+  const bool input = convexlocTakeInput();
+  const double now = emscripten_get_now();
+  if (idle && !resized && !input && now - lastDrawnMs_ < 250.0) return false;
+  lastDrawnMs_ = now;
+  return true;
+#else
   if (idle)
     glfwWaitEventsTimeout(0.25);
   else
     glfwPollEvents();
+  return true;
+#endif
 }
 
 void Window::newFrame() {
@@ -155,13 +220,21 @@ FrameSize Window::frameSize() const {
 }
 
 float Window::contentScale() const {
+#ifdef __EMSCRIPTEN__
+  return 1.0f;  // the canvas has the screen's pixels; the page scales the text (page.js)
+#else
   float xscale = 1.0f, yscale = 1.0f;
   glfwGetWindowContentScale(window_, &xscale, &yscale);
   return std::max(1.0f, xscale);
+#endif
 }
 
 bool Window::hovered() const {
+#ifdef __EMSCRIPTEN__
+  return true;  // the canvas fills the page; Emscripten's GLFW does not say
+#else
   return glfwGetWindowAttrib(window_, GLFW_HOVERED) != 0;
+#endif
 }
 
 }  // namespace convexloc::viewer

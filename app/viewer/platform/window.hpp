@@ -45,8 +45,10 @@ class Window : NoCopy {
   GLFWwindow* handle() const { return window_; }
 
   bool shouldClose() const;
-  // takes the events that came in; with `idle`, first waits for one (a quarter second)
-  void takeEvents(bool idle);
+  // Takes the events that came in; with `idle`, first waits for one (a quarter second).
+  // Returns whether to draw a frame: always on the desktop; in the web page, which must not
+  // wait, false while idle with nothing new and less than a quarter second since the last.
+  bool takeEvents(bool idle);
   // starts an ImGui frame
   void newFrame();
   // draws ImGui's lists over the scene
@@ -63,6 +65,7 @@ class Window : NoCopy {
   GLFWwindow* window_ = nullptr;
   bool glfwStarted_ = false;
   bool imguiStarted_ = false;
+  double lastDrawnMs_ = 0.0;  // the web page: when takeEvents last asked for a frame
 };
 
 }  // namespace convexloc::viewer

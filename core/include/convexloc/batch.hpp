@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <span>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "convexloc/geometry.hpp"
@@ -24,6 +25,28 @@ namespace convexloc {
 void setVectorBatches(bool enabled) noexcept;
 // whether batches use the AVX2 code: enabled, and the CPU has it
 bool vectorBatches() noexcept;
+
+namespace detail {
+#if defined(__cpp_lib_jthread)
+using BatchThread = std::jthread;
+#else
+// a thread joined when it goes, where the standard library has no std::jthread (libc++ 14,
+// the web build's)
+class BatchThread {
+ public:
+  template <class F>
+  explicit BatchThread(F&& f) : thread_(std::forward<F>(f)) {}
+  BatchThread(BatchThread&&) noexcept = default;
+  BatchThread& operator=(BatchThread&&) = delete;
+  ~BatchThread() {
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::thread thread_;
+};
+#endif
+}  // namespace detail
 
 // below this many points per thread, starting a thread costs more than it saves
 inline constexpr std::size_t kMinPointsPerThread = std::size_t{1} << 15;
@@ -48,7 +71,7 @@ void locateParallel(const Locator& locator, std::span<const Point> points, std::
   }
   constexpr std::size_t kLine = 64;  // points per cache line of answers
   const std::size_t share = ((n + t - 1) / t + kLine - 1) / kLine * kLine;  // t shares cover n
-  std::vector<std::jthread> helpers;
+  std::vector<detail::BatchThread> helpers;
   helpers.reserve(t - 1);
   for (unsigned k = 1; k < t; ++k) {
     const std::size_t begin = std::min(n, share * k);
@@ -59,7 +82,7 @@ void locateParallel(const Locator& locator, std::span<const Point> points, std::
     });
   }
   locator.locate(points.first(std::min(n, share)), out.first(std::min(n, share)));
-  // the jthreads join as they go
+  // the helpers join as they go
 }
 
 }  // namespace convexloc

@@ -16,6 +16,7 @@
 #include <initializer_list>
 
 #include "convexloc/geometry.hpp"
+#include "detail/bit_cast.hpp"
 
 #ifndef __SIZEOF_INT128__
 #error "the narrow-integer stage needs __int128 (GCC and Clang have it, WebAssembly included)"
@@ -28,7 +29,7 @@ __extension__ typedef unsigned __int128 Uint128;
 
 // the bit pattern of |v|: ordered as the magnitudes are, for finite v
 inline std::uint64_t magnitudeBits(double v) noexcept {
-  return std::bit_cast<std::uint64_t>(v) & ~(1ULL << 63);
+  return detail::bit_cast<std::uint64_t>(v) & ~(1ULL << 63);
 }
 
 // The largest and the smallest non-zero magnitude of a set of doubles, as bit patterns
@@ -55,7 +56,7 @@ class Magnitudes {
     const int e = biased(largest_);
     if (largest_ == 0 || e < 1023 - 900 || e > 1023 + 900) return 0.0;
     if (biased(smallestLess1_ + 1) < e - 61) return 0.0;
-    return std::bit_cast<double>(static_cast<std::uint64_t>(2 * 1023 + 60 - e) << 52);
+    return detail::bit_cast<double>(static_cast<std::uint64_t>(2 * 1023 + 60 - e) << 52);
   }
 
  private:

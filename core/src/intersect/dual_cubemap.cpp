@@ -50,6 +50,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/table.hpp"
 #include "cubemap/index.hpp"
+#include "detail/bit_cast.hpp"
 
 namespace convexloc::detail {
 
@@ -182,9 +183,9 @@ void DualCubemap3D::buildRecords(const ConvexPolyhedron& polyhedron, const Verte
     const auto around = graph.of(v);
     w[0] = v | std::uint64_t{static_cast<std::uint32_t>(around.size())} << 32;
     auto put = [&](std::size_t k, Vec3 p) {
-      w[1 + 3 * k] = std::bit_cast<std::uint64_t>(p.x);
-      w[2 + 3 * k] = std::bit_cast<std::uint64_t>(p.y);
-      w[3 + 3 * k] = std::bit_cast<std::uint64_t>(p.z);
+      w[1 + 3 * k] = detail::bit_cast<std::uint64_t>(p.x);
+      w[2 + 3 * k] = detail::bit_cast<std::uint64_t>(p.y);
+      w[3 + 3 * k] = detail::bit_cast<std::uint64_t>(p.z);
     };
     put(0, points[v]);
     std::uint64_t* links = w + 1 + 3 * (around.size() + 1);

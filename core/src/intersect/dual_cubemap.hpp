@@ -12,6 +12,7 @@
 #include "convexloc/locate3d.hpp"
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/table.hpp"
+#include "detail/bit_cast.hpp"
 #include "intersect/graph3d.hpp"
 
 namespace convexloc::detail {
@@ -27,7 +28,7 @@ struct StarRecord {
   // the star's point k: the vertex (k = 0), then its neighbours (1 <= k <= degree)
   Vec3 point(std::uint32_t k) const noexcept {
     const std::uint64_t* p = word + 1 + 3 * k;
-    return {std::bit_cast<double>(p[0]), std::bit_cast<double>(p[1]), std::bit_cast<double>(p[2])};
+    return {detail::bit_cast<double>(p[0]), detail::bit_cast<double>(p[1]), detail::bit_cast<double>(p[2])};
   }
   // the record of neighbour k (1 <= k <= degree), as an index for DualCubemap3D::record()
   std::uint32_t link(std::uint32_t k) const noexcept {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "convexloc/detail/chars.hpp"
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
 #include "io/byte_source.hpp"
@@ -45,7 +46,7 @@ class BlockWriter {
 // appends the shortest round-trip decimal of v
 void appendNumber(std::string& out, double v) {
   char buf[32];
-  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  auto [ptr, ec] = detail::doubleToChars(buf, buf + sizeof buf, v);
   out.append(buf, ptr);
 }
 

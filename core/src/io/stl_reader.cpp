@@ -11,6 +11,7 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
+#include "detail/bit_cast.hpp"
 #include "io/byte_source.hpp"
 #include "io/mesh_parsers.hpp"
 #include "io/mesh_tokens.hpp"
@@ -30,7 +31,7 @@ constexpr std::size_t kFacetBytes = 50;   // normal, 3 vertices (float32 each), 
 
 // the bits of a coordinate, -0 read as +0 (they are equal)
 std::uint64_t coordinateBits(double v) noexcept {
-  return std::bit_cast<std::uint64_t>(v + 0.0);
+  return detail::bit_cast<std::uint64_t>(v + 0.0);
 }
 
 // a hash of a corner's coordinates

@@ -9,6 +9,7 @@
 
 #include <sys/stat.h>
 
+#include "convexloc/detail/chars.hpp"
 #include "convexloc/error.hpp"
 #include "io/text_scan.hpp"
 
@@ -51,7 +52,7 @@ double parseNumber(std::string_view s, std::size_t& pos, std::size_t lineNo) {
   if (digits == end || !((*digits >= '0' && *digits <= '9') || *digits == '.'))
     throw ParseError("not a number: " + quote(s.substr(start)), lineNo);
   double v = 0.0;
-  auto [ptr, ec] = std::from_chars(p, end, v, std::chars_format::general);
+  auto [ptr, ec] = detail::doubleFromChars(p, end, v);
   if (ec == std::errc::invalid_argument)
     throw ParseError("not a number: " + quote(s.substr(start)), lineNo);
   if (ptr != end && !isBlank(*ptr) && *ptr != ',' && *ptr != '#')

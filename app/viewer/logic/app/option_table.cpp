@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 
 #include "convexloc/intersect3d.hpp"
 #include "convexloc/methods.hpp"
@@ -68,14 +69,17 @@ bool applyCell(const Values& v, Options& o, std::string&) {
     o.cell.reset();
     return true;
   }
+  // cell numbers up to 2^40, or what a size_t holds (32 bits in the web page)
+  constexpr std::size_t kMost = static_cast<std::size_t>(
+      std::min<std::uint64_t>(std::uint64_t{1} << 40, std::numeric_limits<std::size_t>::max()));
   std::size_t k = 0, l = 0;
   const std::size_t comma = s.find(',');
   if (comma != std::string_view::npos &&
-      parseInt<std::size_t>(s.substr(comma + 1), 0, std::size_t{1} << 40, l)) {
+      parseInt<std::size_t>(s.substr(comma + 1), 0, kMost, l)) {
     o.cellSecond = l;
     s = s.substr(0, comma);
   }
-  if (!parseInt<std::size_t>(s, 0, std::size_t{1} << 40, k)) return false;
+  if (!parseInt<std::size_t>(s, 0, kMost, k)) return false;
   o.cell = k;
   return true;
 }
@@ -296,6 +300,12 @@ const OptionSpec kOptions[] = {
      "a slide show (.lecture, see docs/viewer.md): PageDown / PageUp, "
      "Home / End move through it",
      "a .lecture file", true, setText<&Options::lecture>},
+    {"--slide", "K", 1, kLectures,
+     "with --lecture: start at slide K (1 = the first; beyond the last: the last)",
+     "a slide number from 1", false,
+     [](const Values& v, Options& o, std::string&) {
+       return parseInt<int>(v[0], 1, 1000000, o.slide);
+     }},
     {"--export", "DIR", 1, kLectures,
      "with --lecture or --figure: write every slide as DIR/slide-NN.png "
      "and DIR/slide-NN.svg (PNG and SVG), and exit; a slide with problems is reported and "

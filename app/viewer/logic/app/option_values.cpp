@@ -3,11 +3,13 @@
 
 #include <algorithm>
 
+#include "convexloc/detail/chars.hpp"
+
 namespace convexloc::viewer {
 
 bool parseDouble(std::string_view s, double& out) {
   double v = 0.0;
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+  const auto r = convexloc::detail::doubleFromChars(s.data(), s.data() + s.size(), v);
   if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return false;
   out = v;
   return true;

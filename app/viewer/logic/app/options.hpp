@@ -66,6 +66,7 @@ struct Options {
   // lectures and the paper's figures
   std::optional<int> figure;              // --figure N: start from the paper's figure N
   std::string lecture;                    // --lecture FILE: a slide show
+  int slide = 1;                          // --slide K: the lecture starts at slide K
   std::string exportDir;                  // --export DIR: every slide (or the figure) as PNG
   std::string checkFile;                  // --check FILE: list a lecture's problems and exit
   std::string notesFile;                  // --notes FILE: print a lecture's notes and exit

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <system_error>
 
 #include "convexloc/error.hpp"
 #include "convexloc/generate2d.hpp"
@@ -16,13 +19,29 @@ namespace {
 
 // A method's measurement on `shape`, for runMethods: `measure` on the points `generate`
 // makes of it, those traced (seed + 1) and those timed (seed + 2), made once for every method.
+// It holds the shape, so that a measurement without a thread keeps it from step to step.
 template <class Shape, class Generate, class Measure>
-auto measurerOn(const ScalingConfig& c, const Shape& shape, Generate generate, Measure measure) {
-  auto traced = generate(shape, c.tracedPoints, c.seed + 1, false);
-  auto timed = generate(shape, c.timedPoints, c.seed + 2, false);
-  return [&c, &shape, measure, traced = std::move(traced), timed = std::move(timed)](auto m) {
-    return measure(shape, m, traced, timed, c.minSeconds);
+auto measurerOn(const ScalingConfig& c, std::shared_ptr<const Shape> shape, Generate generate,
+                Measure measure) {
+  auto traced = generate(*shape, c.tracedPoints, c.seed + 1, false);
+  auto timed = generate(*shape, c.timedPoints, c.seed + 2, false);
+  return [&c, shape, measure, traced = std::move(traced), timed = std::move(timed)](auto m) {
+    return measure(*shape, m, traced, timed, c.minSeconds);
   };
+}
+
+// the measurer of every 2D method on core's regular n-gon
+std::function<ScalingSample(Method2D)> measurer2D(const ScalingConfig& c, std::size_t n) {
+  return measurerOn(c, std::make_shared<const ConvexPolygon>(
+                           generatePolygon(PolygonKind::Regular, n, c.seed)),
+                    generatePoints, measureMethod);
+}
+
+// the measurer of every 3D method on core's geodesic sphere of about f faces
+std::function<ScalingSample(Method3D)> measurer3D(const ScalingConfig& c, std::size_t f) {
+  return measurerOn(c, std::make_shared<const ConvexPolyhedron>(
+                           generatePolyhedron(PolyhedronKind::Geodesic, f, c.seed)),
+                    generatePoints3D, measureMethod3D);
 }
 
 // the batch locate's time per point over `timed`, in chunks until minSeconds have passed
@@ -167,7 +186,7 @@ ScalingWorker::~ScalingWorker() {
   cancel();
 }
 
-void ScalingWorker::start(ScalingConfig config) {
+void ScalingWorker::start(ScalingConfig config, bool threaded) {
   cancel();
   config_ = std::move(config);
   stop_ = false;
@@ -185,10 +204,21 @@ void ScalingWorker::start(ScalingConfig config) {
       for (const Method3D m : kAllMethods3D) progress_.result.series3d.push_back({m, {}});
   }
   running_ = true;
-  thread_ = std::thread([this] {
-    run();
-    running_ = false;
-  });
+  inFrames_ = false;
+  nextStep_ = 0;
+  nextMethod_ = 0;
+  measure2d_ = nullptr;
+  measure3d_ = nullptr;
+  try {
+    if (threaded)
+      thread_ = std::thread([this] {
+        run();
+        running_ = false;
+      });
+  } catch (const std::system_error&) {
+    threaded = false;  // no threads here (the web page)
+  }
+  inFrames_ = !threaded;  // step() measures, a method at one size a frame
 }
 
 void ScalingWorker::show(ScalingConfig config, ScalingResult result) {
@@ -212,6 +242,48 @@ void ScalingWorker::cancel() {
 
 void ScalingWorker::wait() {
   if (thread_.joinable()) thread_.join();
+  while (inFrames_ && running_) step();
+}
+
+void ScalingWorker::step() {
+  if (!inFrames_ || !running_) return;
+  try {
+    if (stop_ || !stepOne()) running_ = false;
+  } catch (const std::exception& e) {
+    const std::lock_guard lock(mutex_);
+    progress_.error = e.what();
+    progress_.running = false;
+    running_ = false;
+  }
+  if (!running_) {  // the shapes go
+    measure2d_ = nullptr;
+    measure3d_ = nullptr;
+  }
+}
+
+bool ScalingWorker::stepOne() {
+  const std::size_t sizes = config_.sizes.size(), faces = config_.faces.size();
+  if (nextStep_ < sizes)
+    return stepMethod<Method2D>(kAllMethods2D, config_.sizes[nextStep_], progress_.result.series,
+                                measure2d_, measurer2D);
+  if (nextStep_ < sizes + faces)
+    return stepMethod<Method3D>(kAllMethods3D, config_.faces[nextStep_ - sizes],
+                                progress_.result.series3d, measure3d_, measurer3D);
+  return runStep(nextStep_);  // the memory comparison, the last step
+}
+
+template <class Method, class Make>
+bool ScalingWorker::stepMethod(std::span<const Method> methods, std::size_t size,
+                               std::vector<SeriesOf<Method>>& series,
+                               std::function<ScalingSample(Method)>& measure, Make make) {
+  if (!measure) measure = make(config_, size);
+  measureOne(methods, nextMethod_, size, series, measure);
+  if (++nextMethod_ == methods.size()) {
+    nextMethod_ = 0;
+    ++nextStep_;
+    measure = nullptr;
+  }
+  return true;
 }
 
 ScalingProgress ScalingWorker::snapshot() const {
@@ -221,21 +293,8 @@ ScalingProgress ScalingWorker::snapshot() const {
 
 void ScalingWorker::run() {
   try {
-    for (const std::size_t n : config_.sizes) {
-      if (stop_) return;
-      runSize(n);
+    for (std::size_t k = 0; !stop_ && runStep(k); ++k) {
     }
-    for (const std::size_t f : config_.faces) {
-      if (stop_) return;
-      runSize3D(f);
-    }
-    std::vector<MemorySample> memory;
-    for (int e = 1; e <= 9 && !stop_; ++e) memory.push_back(measureMemory(std::pow(10.0, -e)));
-    const std::lock_guard lock(mutex_);
-    progress_.result.memory = std::move(memory);
-    progress_.done += 1;
-    progress_.running = false;
-    progress_.finished = !stop_;
   } catch (const std::exception& e) {
     const std::lock_guard lock(mutex_);
     progress_.error = e.what();
@@ -243,34 +302,54 @@ void ScalingWorker::run() {
   }
 }
 
+bool ScalingWorker::runStep(std::size_t k) {
+  const std::size_t sizes = config_.sizes.size(), faces = config_.faces.size();
+  if (k < sizes) {
+    runSize(config_.sizes[k]);
+    return true;
+  }
+  if (k < sizes + faces) {
+    runSize3D(config_.faces[k - sizes]);
+    return true;
+  }
+  std::vector<MemorySample> memory;
+  for (int e = 1; e <= 9 && !stop_; ++e) memory.push_back(measureMemory(std::pow(10.0, -e)));
+  const std::lock_guard lock(mutex_);
+  progress_.result.memory = std::move(memory);
+  progress_.done += 1;
+  progress_.running = false;
+  progress_.finished = !stop_;
+  return false;
+}
+
+template <class Method, class Measure>
+void ScalingWorker::measureOne(std::span<const Method> methods, std::size_t i, std::size_t size,
+                               std::vector<SeriesOf<Method>>& series, Measure& measure) {
+  const Method m = methods[i];
+  if (!measured(config_, m, size)) return;
+  {
+    const std::lock_guard lock(mutex_);
+    progress_.current = std::string(toString(m)) + ", " + grouped(size);
+  }
+  const ScalingSample s = measure(m);
+  const std::lock_guard lock(mutex_);
+  series[i].samples.push_back(s);
+  progress_.done += 1;
+}
+
 template <class Method, class Measure>
 void ScalingWorker::runMethods(std::span<const Method> methods, std::size_t size,
                                std::vector<SeriesOf<Method>>& series, Measure measure) {
-  for (std::size_t i = 0; i < methods.size(); ++i) {
-    const Method m = methods[i];
-    if (stop_) return;
-    if (!measured(config_, m, size)) continue;
-    {
-      const std::lock_guard lock(mutex_);
-      progress_.current = std::string(toString(m)) + ", " + grouped(size);
-    }
-    const ScalingSample s = measure(m);
-    const std::lock_guard lock(mutex_);
-    series[i].samples.push_back(s);
-    progress_.done += 1;
-  }
+  for (std::size_t i = 0; i < methods.size() && !stop_; ++i)
+    measureOne(methods, i, size, series, measure);
 }
 
 void ScalingWorker::runSize(std::size_t n) {
-  const ConvexPolygon polygon(generatePolygon(PolygonKind::Regular, n, config_.seed));
-  runMethods<Method2D>(kAllMethods2D, n, progress_.result.series,
-                       measurerOn(config_, polygon, generatePoints, measureMethod));
+  runMethods<Method2D>(kAllMethods2D, n, progress_.result.series, measurer2D(config_, n));
 }
 
 void ScalingWorker::runSize3D(std::size_t f) {
-  const ConvexPolyhedron solid(generatePolyhedron(PolyhedronKind::Geodesic, f, config_.seed));
-  runMethods<Method3D>(kAllMethods3D, f, progress_.result.series3d,
-                       measurerOn(config_, solid, generatePoints3D, measureMethod3D));
+  runMethods<Method3D>(kAllMethods3D, f, progress_.result.series3d, measurer3D(config_, f));
 }
 
 }  // namespace convexloc::viewer

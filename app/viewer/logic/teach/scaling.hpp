@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -102,19 +103,25 @@ struct ScalingProgress {
 };
 
 // Runs a measurement in its own thread; cancel() and the destructor stop and join it.
+// Where no thread can start (the web page has none), step() measures one method at one
+// size at a time on the caller's thread instead, a frame each.
 // (it owns a thread, and its mutex keeps it from being copied or moved)
 class ScalingWorker {
  public:
   ScalingWorker() = default;
   ~ScalingWorker();
-  // starts a run (a running one is cancelled first)
-  void start(ScalingConfig config);
+  // Starts a run (a running one is cancelled first): in a thread, or, without `threaded` or
+  // where no thread can start, by step() on the caller's thread.
+  void start(ScalingConfig config, bool threaded = true);
   // a finished run's results, recorded earlier, shown as if just measured
   void show(ScalingConfig config, ScalingResult result);
   // asks the run to stop and waits for it
   void cancel();
-  // waits for the run to end
+  // waits for the run to end (without a thread: measures what is left, here)
   void wait();
+  // without a thread: measures the run's next method at its size here; with one, or no
+  // run: nothing
+  void step();
   // a copy of the progress and the results so far
   ScalingProgress snapshot() const;
   const ScalingConfig& config() const { return config_; }
@@ -123,18 +130,38 @@ class ScalingWorker {
 
  private:
   void run();
+  // measures step k of the run (a 2D size, a 3D size, then the memory); false after the last
+  bool runStep(std::size_t k);
   void runSize(std::size_t n);
   void runSize3D(std::size_t f);
   // measures every method of `methods` allowed at `size` into `series`, under the lock
   template <class Method, class Measure>
   void runMethods(std::span<const Method> methods, std::size_t size,
                   std::vector<SeriesOf<Method>>& series, Measure measure);
+  // measures methods[i] at `size` into series[i] when it is measured there
+  template <class Method, class Measure>
+  void measureOne(std::span<const Method> methods, std::size_t i, std::size_t size,
+                  std::vector<SeriesOf<Method>>& series, Measure& measure);
+  // without a thread: the next method at the current size, or the memory; false after it
+  bool stepOne();
+  // the next of `methods` at `size`, its shape and points made by `make` at the first
+  template <class Method, class Make>
+  bool stepMethod(std::span<const Method> methods, std::size_t size,
+                  std::vector<SeriesOf<Method>>& series,
+                  std::function<ScalingSample(Method)>& measure, Make make);
   ScalingConfig config_;
   std::thread thread_;
   mutable std::mutex mutex_;
   ScalingProgress progress_;
   std::atomic<bool> stop_{false};
   std::atomic<bool> running_{false};
+  // without a thread (step() runs the steps): the size under way (2D, then 3D), the method
+  // measured next there, and the size's shape and points
+  bool inFrames_ = false;
+  std::size_t nextStep_ = 0;
+  std::size_t nextMethod_ = 0;
+  std::function<ScalingSample(Method2D)> measure2d_;
+  std::function<ScalingSample(Method3D)> measure3d_;
 };
 
 // === The plots

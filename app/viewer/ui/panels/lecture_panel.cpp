@@ -95,10 +95,13 @@ bool startLecture(Model& model, UiState& ui, const Options& options, bool headle
     if (!parsed.problems.empty()) model.fail(parsed.problems.front());
     return true;
   }
-  const std::string problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(first));
+  // --slide K opens the window at slide K (a link to a slide in the web page)
+  const std::ptrdiff_t start =
+      options.exportDir.empty() ? options.slide - 1 : static_cast<std::ptrdiff_t>(first);
+  const std::string problem = showSlideNow(model, ui, start);
   if (!problem.empty() && headless) {
-    std::cerr << "convexloc-viewer: " << options.lecture << ": slide " << first + 1 << ": "
-              << problem << "\n";
+    std::cerr << "convexloc-viewer: " << options.lecture << ": slide " << ui.show.current + 1
+              << ": " << problem << "\n";
     return false;
   }
   if (!headless) printNotes(ui.show);

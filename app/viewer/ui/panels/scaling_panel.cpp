@@ -121,6 +121,7 @@ void scalingWindow(Model& model, UiState& ui) {
   ui.whyPlots = {};
   ui.whyWindow = {};
   if (!model.whyOpen) return;
+  model.scaling->step();  // a measurement without a thread goes on a size a frame
   const ImGuiIO& io = ImGui::GetIO();
   // between a slide's card and its caption, where a lecture shows them (kept there while
   // the panels are hidden), in the page
