@@ -4,12 +4,15 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
 
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
+#include "logic/app/interaction.hpp"
+#include "logic/app/model.hpp"
 #include "logic/view/snap.hpp"
 
 namespace cv = convexloc::viewer;
@@ -160,4 +163,124 @@ TEST(Snap, NiceGridSteps) {
   EXPECT_DOUBLE_EQ(cv::niceGridStep(7.0), 10.0);
   EXPECT_DOUBLE_EQ(cv::niceGridStep(100.0), 100.0);
   EXPECT_EQ(cv::niceGridStep(0.0), 0.0);
+}
+
+// === The gestures snap
+
+namespace {
+
+// the box (0,0)-(4,3) fitted into a 1000x800 viewport
+cv::Model boxModel() {
+  cv::Model m;
+  m.scene2d.setShape(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 3}, {0, 3}}, "box");
+  m.camera2d.setViewport({1000.0, 800.0});
+  m.fit({{0.0, 0.0}, {1000.0, 800.0}});
+  return m;
+}
+
+// a press and a release at `pos` (a click), with Alt held or not
+void clickAt(cv::Interaction& ia, cv::Model& m, glm::dvec2 pos, bool alt = false) {
+  cv::PointerInput in;
+  in.pos = pos;
+  in.alt = alt;
+  in.pressed[0] = in.down[0] = true;
+  ia.update(in, m);
+  in.pressed[0] = in.down[0] = false;
+  in.released[0] = true;
+  ia.update(in, m);
+}
+
+// a left drag from `from` to `to` in ten moves
+void dragFromTo(cv::Interaction& ia, cv::Model& m, glm::dvec2 from, glm::dvec2 to, bool alt) {
+  cv::PointerInput in;
+  in.pos = from;
+  in.alt = alt;
+  in.pressed[0] = in.down[0] = true;
+  ia.update(in, m);
+  in.pressed[0] = false;
+  for (int k = 1; k <= 10; ++k) {
+    const glm::dvec2 next = from + (to - from) * (k / 10.0);
+    in.delta = next - in.pos;
+    in.pos = next;
+    ia.update(in, m);
+  }
+  in.down[0] = false;
+  in.released[0] = true;
+  in.delta = {0.0, 0.0};
+  ia.update(in, m);
+}
+
+}  // namespace
+
+TEST(SnapGestures, AClickNearAnEdgeLandsOnItAndAltPlacesFreely) {
+  cv::Model m = boxModel();
+  cv::Interaction ia;
+  // 4 pixels inside the bottom edge, away from the grid's points
+  const glm::dvec2 near = m.camera2d.toScreen({1.37, 0.0}) + glm::dvec2(0.0, -4.0);
+  clickAt(ia, m, near);
+  ASSERT_TRUE(m.scene2d.probe());
+  EXPECT_EQ(m.scene2d.probe()->point.y, 0.0);
+  EXPECT_EQ(m.scene2d.probe()->trace.result, Location::Boundary);
+  clickAt(ia, m, near, true);
+  EXPECT_GT(m.scene2d.probe()->point.y, 0.0);
+  EXPECT_EQ(m.scene2d.probe()->trace.result, Location::Inside);
+}
+
+TEST(SnapGestures, AClickOnAVertexHandlePlacesThePointOnTheVertex) {
+  cv::Model m = boxModel();
+  cv::Interaction ia;
+  clickAt(ia, m, m.camera2d.toScreen({4.0, 3.0}) + glm::dvec2(3.0, -2.0));
+  ASSERT_TRUE(m.scene2d.probe());
+  EXPECT_EQ(m.scene2d.probe()->point, (Vec2{4.0, 3.0}));
+  EXPECT_EQ(m.scene2d.probe()->trace.result, Location::Boundary);
+  EXPECT_EQ(m.scene2d.polygon().size(), 4u);  // and the shape is as it was
+}
+
+TEST(SnapGestures, ADraggedVertexSnapsToTheGridUnlessAltIsHeld) {
+  cv::Model m = boxModel();
+  cv::Interaction ia;
+  const glm::dvec2 corner = m.camera2d.toScreen({4.0, 3.0});
+  const glm::dvec2 target = m.camera2d.toScreen({5.0, 4.0}) + glm::dvec2(3.0, 2.0);
+  dragFromTo(ia, m, corner, target, false);
+  const auto has = [&](Vec2 q) {
+    const auto v = m.scene2d.polygon().vertices();
+    return std::find(v.begin(), v.end(), q) != v.end();
+  };
+  EXPECT_TRUE(has({5.0, 4.0}));
+  ASSERT_FALSE(m.scene2d.drag());
+  // with Alt the vertex goes where the pointer is, off the grid
+  const glm::dvec2 back = m.camera2d.toScreen({5.0, 4.0});
+  const glm::dvec2 further = m.camera2d.toScreen({5.5, 4.5}) + glm::dvec2(3.0, 2.0);
+  dragFromTo(ia, m, back, further, true);
+  EXPECT_FALSE(has({5.0, 4.0}));
+  EXPECT_FALSE(has({5.5, 4.5}));
+  EXPECT_FALSE(m.scene2d.probe());
+  EXPECT_EQ(m.scene2d.polygon().size(), 4u);
+}
+
+TEST(SnapGestures, ALineDrawnBetweenTwoVerticesGoesThroughThemExactly) {
+  cv::Model m = boxModel();
+  m.setLinesMode(true);
+  m.fit({{0.0, 0.0}, {1000.0, 800.0}});
+  cv::Interaction ia;
+  // from near (4,0) to near (4,3): the line holds the right edge, so it touches
+  dragFromTo(ia, m, m.camera2d.toScreen({4.0, 0.0}) + glm::dvec2(3.0, 3.0),
+             m.camera2d.toScreen({4.0, 3.0}) + glm::dvec2(-2.0, 4.0), false);
+  ASSERT_TRUE(m.lines2d.line());
+  EXPECT_EQ(m.lines2d.line()->p1, (Vec2{4.0, 0.0}));
+  EXPECT_EQ(m.lines2d.line()->p2, (Vec2{4.0, 3.0}));
+  EXPECT_EQ(m.lines2d.line()->hit.crossing, convexloc::Crossing::Touches);
+}
+
+TEST(SnapGestures, TheIndicatorShowsWhatAClickWouldSnapTo) {
+  cv::Model m = boxModel();
+  cv::Interaction ia;
+  cv::PointerInput in;
+  in.pos = m.camera2d.toScreen({0.0, 3.0}) + glm::dvec2(12.0, 0.0);  // beyond the handle
+  ia.update(in, m);
+  ASSERT_TRUE(m.scene2d.snapMark());
+  EXPECT_EQ(m.scene2d.snapMark()->kind, cv::SnapKind::Edge);
+  in.alt = true;
+  ia.update(in, m);
+  EXPECT_FALSE(m.scene2d.snapMark());
 }

@@ -8,6 +8,7 @@
 #include "logic/teach/build_anim.hpp"
 #include "logic/dual/dual_view2d.hpp"
 #include "logic/dual/dual_view3d.hpp"
+#include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/draw/structure3d.hpp"
 
@@ -112,6 +113,7 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     if (!lines.enabled()) return buildOverlay2D(scene, pal, opt, out);
     out.clear();
     buildLines2D(lines, pal, opt.showLabels, out);
+    snapIndicator(scene, pal, out);
   });
 }
 

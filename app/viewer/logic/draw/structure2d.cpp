@@ -7,6 +7,7 @@
 #include <string>
 
 #include "logic/base/format.hpp"
+#include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/y_gap.hpp"
 #include "logic/narration/steps.hpp"
 #include "logic/view/camera2d.hpp"
@@ -480,6 +481,7 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
       probeTrace(scene, *probe, pal, opt, out);
   }
   if (const auto& d = scene.drag()) dragMarker(scene, *d, pal, out);
+  snapIndicator(scene, pal, out);
 }
 
 }  // namespace convexloc::viewer

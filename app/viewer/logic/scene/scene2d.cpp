@@ -126,6 +126,17 @@ void Scene2D::hover(std::optional<Vec2> p) {
   }
 }
 
+// === Snap indicator
+
+void Scene2D::setSnapMark(std::optional<Snap> s) {
+  if (s && s->kind == SnapKind::None) s.reset();
+  const bool same = s.has_value() == snapMark_.has_value() &&
+                    (!s || (s->kind == snapMark_->kind && s->point == snapMark_->point));
+  if (same) return;
+  snapMark_ = s;
+  ++versions_.overlay;
+}
+
 // === Drag
 
 void Scene2D::beginDrag(std::size_t i) {

@@ -15,6 +15,7 @@
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
 #include "logic/scene/scene_common.hpp"
+#include "logic/view/snap.hpp"
 
 namespace convexloc::viewer {
 
@@ -88,6 +89,10 @@ class Scene2D : public SceneState<Traits2D> {
   void endDrag();
   const std::optional<Drag>& drag() const { return drag_; }
 
+  // === Snap indicator: what the pointer's position snaps to (drawn over the scene), or none
+  void setSnapMark(std::optional<Snap> s);
+  const std::optional<Snap>& snapMark() const { return snapMark_; }
+
  private:
   void cellsChanged() override;
   bool adoptShape(ConvexPolygon polygon, std::string label) override;
@@ -97,6 +102,7 @@ class Scene2D : public SceneState<Traits2D> {
   std::ptrdiff_t hovered_ = -1;
   std::optional<Vec2> hoverPoint_;
   std::optional<Drag> drag_;
+  std::optional<Snap> snapMark_;
 };
 
 }  // namespace convexloc::viewer
