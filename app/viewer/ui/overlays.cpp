@@ -95,7 +95,8 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
     if (!ui.toast.empty()) std::cerr << "convexloc-viewer: " << ui.toast << "\n";
   }
   const Palette& pal = paletteFor(model.settings.theme);
-  float y = 10.0f;
+  // below a slide's card: a message never hides the slide's title
+  float y = 10.0f + model.settings.slideCardHeight;
   auto banner = [&](const char* id, const std::string& text, Rgba colour, bool closable,
                     double& until) {
     if (text.empty() || now > until) return;

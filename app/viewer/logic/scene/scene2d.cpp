@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "convexloc/text_reader.hpp"
+#include "logic/base/format.hpp"
 #include "logic/view/picking.hpp"
 
 namespace convexloc::viewer {
@@ -176,7 +177,7 @@ bool Scene2D::dragTo(Vec2 p) {
     return true;
   } catch (const Error& e) {
     drag_->rejected = true;
-    drag_->message = countedFromZero(e.what());
+    drag_->message = shortestCoordinates(countedFromZero(e.what()));
   }
   return false;
 }
