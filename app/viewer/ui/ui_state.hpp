@@ -75,8 +75,9 @@ struct UiState {
   // the lecture (or the paper's figure) shown, and the spray settings the Points panel last
   // took from the scene
   SlideShow show;
-  // a slide moved to by a key shows no hovered cell until the pointer moves
-  bool pointerStill = false;
+  // a slide moved to by a key, and the viewer just started, show no hovered cell until the
+  // pointer moves
+  bool pointerStill = true;
   SpraySettings sprayFollowed{~std::size_t{0}, 0, false};
 };
 
