@@ -13,6 +13,7 @@
 #include "convexloc/polygon.hpp"
 #include "logic/app/interaction.hpp"
 #include "logic/app/model.hpp"
+#include "logic/draw/snap_indicator.hpp"
 #include "logic/view/snap.hpp"
 
 namespace cv = convexloc::viewer;
@@ -101,6 +102,9 @@ int snapNearEdges(bool dyadic, int& trials) {
       } else {
         EXPECT_EQ(s.kind, cv::SnapKind::Vertex);
         EXPECT_EQ(s.point, ring[s.index]);
+        // near the vertex itself, or the edge's end where the edge holds no double near
+        const bool near = std::hypot(s.point.x - cursor.x, s.point.y - cursor.y) <= 0.01;
+        EXPECT_TRUE(near || s.fromEdge == e);
       }
       EXPECT_EQ(halfplane.locate(s.point), Location::Boundary);
       EXPECT_EQ(polar.locate(s.point), Location::Boundary);
@@ -155,6 +159,14 @@ TEST(Snap, ADraggedVertexSkipsItselfAndItsOwnEdges) {
   EXPECT_EQ(opposite.kind, cv::SnapKind::Edge);
   EXPECT_EQ(opposite.index, 3u);
   EXPECT_EQ(opposite.point.x, 0.0);
+}
+
+TEST(Snap, TheIndicatorSaysWhenAnEdgeHoldsNoDoubleNear) {
+  EXPECT_EQ(cv::snapText({{}, cv::SnapKind::Vertex, 4, 3u}, 6),
+            "vertex 4 (edge 3-4 holds no double here)");
+  EXPECT_EQ(cv::snapText({{}, cv::SnapKind::Edge, 5, {}}, 6), "edge 5-0");
+  EXPECT_EQ(cv::snapText({{}, cv::SnapKind::Vertex, 2, {}}, 6), "vertex 2");
+  EXPECT_EQ(cv::snapText({{}, cv::SnapKind::Centre, 0, {}}, 6), "centre");
 }
 
 TEST(Snap, NiceGridSteps) {

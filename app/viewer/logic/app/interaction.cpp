@@ -129,7 +129,7 @@ Snap Interaction::snapAt(const PointerInput& in, const Model& model,
                          std::optional<std::size_t> skip, bool grid) const {
   const Camera2D& cam = model.camera2d;
   const Vec2 w = toVec2(cam.toWorld(in.pos));
-  if (in.alt) return {w, SnapKind::None, 0};
+  if (in.alt) return {w, SnapKind::None, 0, {}};
   const Scene2D& scene = model.scene2d;
   const double gridStep = grid ? niceGridStep(kGridPixels * cam.worldPerPixel()) : 0.0;
   const SnapTargets targets{scene.polygon().vertices(), scene.centre(), gridStep, skip};
@@ -145,7 +145,7 @@ Snap Interaction::clickTarget(const PointerInput& in, const Model& model, bool m
   const Scene2D& scene = model.scene2d;
   const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(), model.settings.visibleMask,
                                        model.camera2d, in.pos, kPickRadius);
-  if (hit >= 0) return {scene.points()[static_cast<std::size_t>(hit)], SnapKind::None, 0};
+  if (hit >= 0) return {scene.points()[static_cast<std::size_t>(hit)], SnapKind::None, 0, {}};
   return grid;
 }
 

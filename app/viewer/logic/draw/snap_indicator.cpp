@@ -6,15 +6,25 @@
 namespace convexloc::viewer {
 
 std::string snapText(const Snap& s, std::size_t n) {
+  const auto edgeName = [n](std::size_t from) {
+    std::string e = "edge ";
+    e.append(std::to_string(from));
+    e.append("-");
+    e.append(std::to_string(n > 0 ? (from + 1) % n : 0));
+    return e;
+  };
   std::string text = toString(s.kind);
   if (s.kind == SnapKind::Vertex) {
     text.append(" ");
     text.append(std::to_string(s.index));
-  } else if (s.kind == SnapKind::Edge && n > 0) {
-    text.append(" ");
-    text.append(std::to_string(s.index));
-    text.append("-");
-    text.append(std::to_string((s.index + 1) % n));
+    // the edge aimed at has no double near: say so, or the jump to its end surprises
+    if (s.fromEdge) {
+      text.append(" (");
+      text.append(edgeName(*s.fromEdge));
+      text.append(" holds no double here)");
+    }
+  } else if (s.kind == SnapKind::Edge) {
+    text = edgeName(s.index);
   }
   return text;
 }

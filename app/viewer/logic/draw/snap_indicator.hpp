@@ -10,8 +10,9 @@
 
 namespace convexloc::viewer {
 
-// what a snap names beside its square: "vertex 3", "edge 3-4", "centre", "grid"; "" when
-// free (`n`: the polygon's vertex count, for an edge's far end)
+// what a snap names beside its square: "vertex 3", "edge 3-4", "centre", "grid",
+// "vertex 4 (edge 3-4 holds no double here)"; "" when free (`n`: the polygon's vertex
+// count, for an edge's far end)
 std::string snapText(const Snap& s, std::size_t n);
 
 // a square where the scene's snap mark is, and snapText beside it; nothing without a mark

@@ -98,8 +98,8 @@ Snap snapPoint(Vec2 p, const SnapTargets& t, double radius) {
     if (i != t.skip && distance2(t.ring[i], p) <= r2 &&
         (!vertex || distance2(t.ring[i], p) < distance2(t.ring[*vertex], p)))
       vertex = i;
-  if (vertex) return {t.ring[*vertex], SnapKind::Vertex, *vertex};
-  if (t.centre && distance2(*t.centre, p) <= r2) return {*t.centre, SnapKind::Centre, 0};
+  if (vertex) return {t.ring[*vertex], SnapKind::Vertex, *vertex, {}};
+  if (t.centre && distance2(*t.centre, p) <= r2) return {*t.centre, SnapKind::Centre, 0, {}};
   // the nearest edge within reach; a dragged vertex's own edges move with it and are no target
   std::optional<std::size_t> edge;
   double edgeD2 = r2;
@@ -111,18 +111,18 @@ Snap snapPoint(Vec2 p, const SnapTargets& t, double radius) {
   }
   if (edge) {
     const Vec2 a = t.ring[*edge], b = t.ring[(*edge + 1) % n];
-    if (const auto q = pointOnSegment(a, b, p, radius)) return {*q, SnapKind::Edge, *edge};
+    if (const auto q = pointOnSegment(a, b, p, radius)) return {*q, SnapKind::Edge, *edge, {}};
     // no double near is exactly on the edge: its nearer end is
     const bool toA = distance2(a, p) <= distance2(b, p);
-    return {toA ? a : b, SnapKind::Vertex, toA ? *edge : (*edge + 1) % n};
+    return {toA ? a : b, SnapKind::Vertex, toA ? *edge : (*edge + 1) % n, *edge};
   }
   if (t.gridStep > 0.0) {
     const Vec2 g{std::round(p.x / t.gridStep) * t.gridStep,
                  std::round(p.y / t.gridStep) * t.gridStep};
     if (std::isfinite(g.x) && std::isfinite(g.y) && distance2(g, p) <= r2)
-      return {g, SnapKind::Grid, 0};
+      return {g, SnapKind::Grid, 0, {}};
   }
-  return {p, SnapKind::None, 0};
+  return {p, SnapKind::None, 0, {}};
 }
 
 double niceGridStep(double minWorld) {

@@ -21,6 +21,9 @@ struct Snap {
   Vec2 point{};                  // the position to use (the cursor's, when kind is None)
   SnapKind kind = SnapKind::None;
   std::size_t index = 0;         // the vertex (Vertex), or the edge from vertex index (Edge)
+  // a Vertex snap taken because the edge aimed at (from this vertex index) holds no double
+  // near the pointer
+  std::optional<std::size_t> fromEdge;
 };
 
 // what a position may snap to, in world units
