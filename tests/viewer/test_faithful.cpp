@@ -8,6 +8,7 @@
 #include <string>
 
 #include "logic/base/glyphs.hpp"
+#include "logic/scene/scene3d.hpp"
 
 namespace cv = convexloc::viewer;
 
@@ -34,4 +35,17 @@ TEST(Glyphs, EveryCharacterOfTheShippedLectureIsInTheFont) {
   ASSERT_FALSE(text.empty());
   const auto missing = cv::firstMissingGlyph(text);
   EXPECT_EQ(missing, std::nullopt) << "U+" << std::hex << static_cast<std::uint32_t>(*missing);
+}
+
+TEST(FaceCount, AGeneratedPolyhedronIsNamedByItsPlaneFaces) {
+  cv::Scene3D s;
+  ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::Dodecahedron, 320, 1));
+  EXPECT_EQ(s.polyhedron().planeCount(), 12u);
+  EXPECT_EQ(s.label(), "dodecahedron, 12 faces (36 triangles)");
+  EXPECT_EQ(s.stats().faces, 12u);
+  ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::Cube, 320, 1));
+  EXPECT_EQ(s.label(), "cube, 6 faces (12 triangles)");
+  ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::SphereHull, 100, 4));
+  EXPECT_NE(s.label().find(", seed 4"), std::string::npos) << s.label();
+  EXPECT_EQ(s.label().find("about"), std::string::npos) << s.label();
 }
