@@ -212,6 +212,21 @@ TEST(Format, ShortestCoordinatesRewritesOnlyNumberTuples) {
   EXPECT_EQ(cv::shortestCoordinates("(one) (1) (1, 2, 3, 4) (2,"), "(one) (1) (1, 2, 3, 4) (2,");
 }
 
+TEST(Format, ATypedNumberIsReadWholeOrRefused) {
+  EXPECT_EQ(cv::parseNumber("0.1"), 0.1);
+  EXPECT_EQ(cv::parseNumber(" -2.5e-3 "), -2.5e-3);
+  EXPECT_EQ(cv::parseNumber("1e9"), 1e9);
+  EXPECT_EQ(cv::parseNumber("0.30000000000000004"), 0.1 + 0.2);
+  EXPECT_EQ(cv::parseNumber("4.9e-324"), 4.9e-324);  // the smallest subnormal reads
+  EXPECT_EQ(cv::parseNumber("1.2,0.5"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("0.5x"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber(""), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("inf"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("nan"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("0x10"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("1e999"), std::nullopt);
+}
+
 TEST(Scene2D, CompareTimesEveryMethodAndTheyAgree) {
   cv::Scene2D s;
   s.spray({20000, 9, false});

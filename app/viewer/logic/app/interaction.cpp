@@ -74,7 +74,8 @@ void Interaction::begin2d(const PointerInput& in, Model& model) {
   const auto v = scene.polygon().vertices();
   const bool lines = model.lines2d.enabled();
   const bool handles = !lines && model.settings.view2d.showHandles && v.size() <= kMaxHandles;
-  const std::ptrdiff_t grab = in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
+  const std::ptrdiff_t grab =
+      in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
   if (grab >= 0) {
     scene.beginDrag(static_cast<std::size_t>(grab));
     gesture_ = Gesture::DragVertex;

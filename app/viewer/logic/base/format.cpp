@@ -1,6 +1,7 @@
 // convexloc-viewer — numbers as the viewer writes them.
 #include "logic/base/format.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +37,23 @@ bool readTuple(std::string_view text, std::size_t open, std::vector<double>& val
 }
 
 }  // namespace
+
+std::optional<double> parseNumber(std::string_view text) {
+  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  if (text.empty() || text.size() > 400) return std::nullopt;
+  const std::string copy(text);
+  // strtod takes "inf", "nan" and hexadecimal too: only decimal digits, signs, '.', 'e'
+  for (char c : copy)
+    if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E'))
+      return std::nullopt;
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(copy.c_str(), &end);
+  if (end != copy.c_str() + copy.size() || !std::isfinite(v)) return std::nullopt;
+  if (errno == ERANGE && std::fabs(v) > 1.0) return std::nullopt;  // overflow, not underflow
+  return v;
+}
 
 std::string shortestCoordinates(std::string_view message) {
   std::string out;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,9 @@ std::string compact(double v, double scale = 0.0);
 // core names a vertex "(0.30000000000000004, 0.59999999999999998)", which reads here
 // "(0.30000000000000004, 0.6)". Only parenthesised lists of two or three numbers change.
 std::string shortestCoordinates(std::string_view message);
+// A typed number: the whole of `text` (spaces around allowed) read as the nearest double
+// ("0.1", "-2.5e-3", "1e9"); none for anything else, an overflow or a non-finite value.
+std::optional<double> parseNumber(std::string_view text);
 // "(x,y)" and "(x,y,z)" with compact(), no spaces
 std::string compact(Vec2 p, double scale = 0.0);
 std::string compact(Vec3 p, double scale = 0.0);

@@ -77,7 +77,8 @@ std::optional<Vec2> pointOnSegment(Vec2 a, Vec2 b, Vec2 p, double reach) {
   tryAround(a, b, q, {a.x + (q.y - a.y) * inverse, q.y}, best);
   // a + t (b - a) at dyadic t near the projection's: exact where the ends have bits to spare
   const double dx = b.x - a.x, dy = b.y - a.y;
-  const double u = std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  const double u =
+      std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
   for (int m = 1; m <= kDyadicLevels; ++m) {
     const double t = std::ldexp(std::round(std::ldexp(u, m)), -m);
     const Vec2 c{a.x + t * dx, a.y + t * dy};

@@ -18,9 +18,9 @@ enum class SnapKind { None, Vertex, Edge, Centre, Grid };
 
 // the snapped position and what it lies on
 struct Snap {
-  Vec2 point{};                  // the position to use (the cursor's, when kind is None)
+  Vec2 point{};  // the position to use (the cursor's, when kind is None)
   SnapKind kind = SnapKind::None;
-  std::size_t index = 0;         // the vertex (Vertex), or the edge from vertex index (Edge)
+  std::size_t index = 0;  // the vertex (Vertex), or the edge from vertex index (Edge)
   // a Vertex snap taken because the edge aimed at (from this vertex index) holds no double
   // near the pointer
   std::optional<std::size_t> fromEdge;
@@ -28,10 +28,10 @@ struct Snap {
 
 // what a position may snap to, in world units
 struct SnapTargets {
-  std::span<const Vec2> ring;        // the polygon's vertices, in order (edges between)
-  std::optional<Vec2> centre;        // the polar centre, where there is one
-  double gridStep = 0.0;             // the grid's spacing; 0: no grid
-  std::optional<std::size_t> skip;   // a vertex that is not a target (the one dragged)
+  std::span<const Vec2> ring;       // the polygon's vertices, in order (edges between)
+  std::optional<Vec2> centre;       // the polar centre, where there is one
+  double gridStep = 0.0;            // the grid's spacing; 0: no grid
+  std::optional<std::size_t> skip;  // a vertex that is not a target (the one dragged)
 };
 
 // "vertex", "edge", "centre", "grid" or "" (for the indicator's label)
