@@ -8,6 +8,9 @@
 #include <string>
 
 #include "logic/base/glyphs.hpp"
+#include "logic/draw/radii_arc.hpp"
+#include "logic/draw/structure2d.hpp"
+#include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
 
 namespace cv = convexloc::viewer;
@@ -48,4 +51,66 @@ TEST(FaceCount, AGeneratedPolyhedronIsNamedByItsPlaneFaces) {
   ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::SphereHull, 100, 4));
   EXPECT_NE(s.label().find(", seed 4"), std::string::npos) << s.label();
   EXPECT_EQ(s.label().find("about"), std::string::npos) << s.label();
+}
+
+// === Radii: arcs inside their cell's wedge
+
+namespace {
+
+// p - c lies in the closed wedge from direction lo counter-clockwise to hi (up to rounding
+// relative to |p - c|)
+bool inWedge(glm::dvec2 c, glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 p) {
+  const glm::dvec2 d = p - c;
+  const auto cross = [](glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; };
+  const double slack = 1e-9 * glm::length(d) * glm::length(lo) + 1e-300;
+  const double slackHi = 1e-9 * glm::length(d) * glm::length(hi) + 1e-300;
+  return cross(lo, d) >= -slack && cross(d, hi) >= -slackHi;
+}
+
+}  // namespace
+
+TEST(Radii, AnArcRunsFromOneRayToTheOtherAtItsRadius) {
+  const glm::dvec2 c{2.0, -1.0}, lo{1.0, 0.2}, hi{0.6, 1.0};
+  const auto arc = cv::wedgeArc(c, 3.0, lo, hi);
+  ASSERT_GE(arc.size(), 3u);
+  for (const glm::dvec2& p : arc) {
+    EXPECT_NEAR(glm::length(p - c), 3.0, 1e-12);
+    EXPECT_TRUE(inWedge(c, lo, hi, p)) << p.x << ", " << p.y;
+  }
+  EXPECT_NEAR(glm::length(glm::normalize(arc.front() - c) - glm::normalize(lo)), 0.0, 1e-15);
+  EXPECT_NEAR(glm::length(glm::normalize(arc.back() - c) - glm::normalize(hi)), 0.0, 1e-15);
+  // a wedge across the negative x axis (the angle wraps)
+  for (const glm::dvec2& p : cv::wedgeArc(c, 1.0, {-1.0, 0.3}, {-1.0, -0.3}))
+    EXPECT_TRUE(inWedge(c, {-1.0, 0.3}, {-1.0, -0.3}, p));
+  // no wedge: the whole circle, closed
+  const auto whole = cv::wedgeArc(c, 1.0, {0.0, 0.0}, {0.0, 0.0});
+  EXPECT_NEAR(glm::length(whole.front() - whole.back()), 0.0, 1e-12);
+}
+
+TEST(Radii, APlacedPointsRadiiAreDrawnInsideItsCellOnly) {
+  // the default scene's polar query at (0.3, 0.2) is decided by the radii
+  cv::Scene2D s;
+  s.place({0.3, 0.2});
+  ASSERT_TRUE(s.probe());
+  const convexloc::Trace2D& t = s.probe()->trace;
+  ASSERT_TRUE(t.byRadius);
+  const std::ptrdiff_t pos = cv::cellPosition(s, t.cell);
+  ASSERT_GE(pos, 0);
+  const convexloc::Cell2D& cell = s.cells()[static_cast<std::size_t>(pos)];
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Dark);
+  cv::DrawList out;
+  cv::buildOverlay2D(s, pal, cv::View2DOptions{}, out);
+  const glm::dvec2 c{t.apex.x, t.apex.y};
+  int radii = 0;
+  for (const cv::Segment& seg : out.segments) {
+    const bool radius = seg.dash > 0.0f && (seg.colour == pal.positive || seg.colour == pal.negative);
+    if (!radius) continue;
+    ++radii;
+    for (const glm::dvec3& p : {seg.a, seg.b}) {
+      EXPECT_TRUE(inWedge(c, {cell.dirLo.x, cell.dirLo.y}, {cell.dirHi.x, cell.dirHi.y}, {p.x, p.y}));
+      const double r = glm::length(glm::dvec2(p.x, p.y) - c);
+      EXPECT_TRUE(std::abs(r - t.innerRadius) < 1e-9 || std::abs(r - t.outerRadius) < 1e-9) << r;
+    }
+  }
+  EXPECT_GE(radii, 4);
 }

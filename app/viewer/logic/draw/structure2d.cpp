@@ -7,6 +7,7 @@
 #include <string>
 
 #include "logic/base/format.hpp"
+#include "logic/draw/radii_arc.hpp"
 #include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/y_gap.hpp"
 #include "logic/narration/steps.hpp"
@@ -211,29 +212,33 @@ void hoveredCell(const Scene2D& scene, const Palette& pal, const View2DOptions& 
   }
 }
 
-// a circle around c of radius r (for the radii)
-void circle(glm::dvec2 c, double r, Rgba colour, float width, DrawList& out) {
-  constexpr int kSides = 96;
-  for (int k = 0; k < kSides; ++k) {
-    const double a0 = 2.0 * std::numbers::pi * k / kSides,
-                 a1 = 2.0 * std::numbers::pi * (k + 1) / kSides;
-    out.segment(at2(c + r * glm::dvec2(std::cos(a0), std::sin(a0))),
-                at2(c + r * glm::dvec2(std::cos(a1), std::sin(a1))), colour, width, 6.0f);
-  }
+// a dashed arc (or circle) through `points`
+void dashedPath(const std::vector<glm::dvec2>& points, Rgba colour, float width, DrawList& out) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k)
+    out.segment(at2(points[k]), at2(points[k + 1]), colour, width, 6.0f);
 }
 
 // polar: the cell's two radii around the centre x_T (inside within r_in, outside beyond
-// r_out), labelled when `current`
-void radiiCircles(const Trace2D& t, const Palette& pal, bool current, bool labels, DrawList& out) {
+// r_out), as arcs inside the cell's wedge (they hold for its points only), labelled at the
+// arcs' middles when `current`
+void radiiArcs(const Scene2D& scene, const Trace2D& t, const Palette& pal, bool current,
+               bool labels, DrawList& out) {
   const glm::dvec2 c = toGlm(t.apex);
+  const std::ptrdiff_t pos = cellPosition(scene, t.cell);
+  glm::dvec2 lo{0.0}, hi{0.0};
+  if (pos >= 0) {
+    const Cell2D& cell = scene.cells()[static_cast<std::size_t>(pos)];
+    lo = toGlm(cell.dirLo), hi = toGlm(cell.dirHi);
+  }
   const float w = current ? 2.0f : 1.0f;
   const float a = current ? 1.0f : 0.5f;
-  circle(c, t.innerRadius, withAlpha(pal.positive, a), w, out);
-  circle(c, t.outerRadius, withAlpha(pal.negative, a), w, out);
+  const auto inner = wedgeArc(c, t.innerRadius, lo, hi);
+  const auto outer = wedgeArc(c, t.outerRadius, lo, hi);
+  dashedPath(inner, withAlpha(pal.positive, a), w, out);
+  dashedPath(outer, withAlpha(pal.negative, a), w, out);
   if (current && labels) {
-    // r_in below the centre, r_out above it: the two circles may lie close
-    out.label(at2(c - glm::dvec2(0.0, t.innerRadius)), "r_in", pal.positive, {0.0f, -12.0f});
-    out.label(at2(c + glm::dvec2(0.0, t.outerRadius)), "r_out", pal.negative, {0.0f, -12.0f});
+    out.label(at2(inner[inner.size() / 2]), "r_in", pal.positive, {0.0f, 12.0f});
+    out.label(at2(outer[outer.size() / 2]), "r_out", pal.negative, {0.0f, -12.0f});
   }
 }
 
@@ -247,7 +252,7 @@ void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
   const glm::dvec2 x = toGlm(probe.point);
   if (t.outsideBox) drawBox(poly.bounds(), pal.negative, 2.0f, out);
   // the radii, where they decided
-  if (t.byRadius) radiiCircles(t, pal, true, opt.showLabels, out);
+  if (t.byRadius) radiiArcs(scene, t, pal, true, opt.showLabels, out);
   // the cell the query chose
   const std::ptrdiff_t pos = cellPosition(scene, t.cell);
   if (pos >= 0) {
@@ -331,7 +336,7 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
 
 // polar: the cell's two radii around the centre
 void stepRadii(const StepDraw& d, bool current) {
-  radiiCircles(d.t, d.pal, current, d.opt.showLabels, d.out);
+  radiiArcs(d.scene, d.t, d.pal, current, d.opt.showLabels, d.out);
 }
 
 // a ray from the apex through a vertex, by its sign
