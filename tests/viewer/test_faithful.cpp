@@ -114,3 +114,22 @@ TEST(Radii, APlacedPointsRadiiAreDrawnInsideItsCellOnly) {
   }
   EXPECT_GE(radii, 4);
 }
+
+TEST(Labels, TheStepsOctantIsNamedOnce) {
+  cv::Scene2D s;
+  s.place({0.3, 0.2});
+  s.setStep(0);  // the octant
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
+  for (const bool structure : {true, false}) {
+    cv::View2DOptions opt;
+    opt.showStructure = structure;
+    cv::DrawList base, overlay;
+    cv::buildStructure2D(s, pal, opt, base);
+    cv::buildOverlay2D(s, pal, opt, overlay);
+    const std::string name = "octant " + std::to_string(s.probe()->trace.octant);
+    int named = 0;
+    for (const cv::DrawList* list : {&base, &overlay})
+      for (const cv::Label& l : list->labels) named += l.text == name;
+    EXPECT_EQ(named, 1) << (structure ? "with" : "without") << " the structure";
+  }
+}

@@ -328,7 +328,8 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
   const float w = current ? 2.5f : 1.25f;
   d.out.segment(at2(c), at2(toGlm(cells[octant * q].hitLo)), colour, w);
   d.out.segment(at2(c), at2(toGlm(cells[octant * q + q - 1].hitHi)), colour, w);
-  if (current && d.opt.showLabels)
+  // the structure names every octant already where it is drawn: named once
+  if (current && d.opt.showLabels && !d.opt.showStructure)
     d.out.label(
         at2(0.5 * (toGlm(cells[octant * q].hitLo) + toGlm(cells[octant * q + q - 1].hitHi))),
         numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
