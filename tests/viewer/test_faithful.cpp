@@ -12,6 +12,9 @@
 #include "logic/draw/structure2d.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
+#include "logic/teach/build_anim.hpp"
+#include "logic/view/camera2d.hpp"
+#include "logic/view/scene_labels.hpp"
 
 namespace cv = convexloc::viewer;
 
@@ -132,4 +135,68 @@ TEST(Labels, TheStepsOctantIsNamedOnce) {
       for (const cv::Label& l : list->labels) named += l.text == name;
     EXPECT_EQ(named, 1) << (structure ? "with" : "without") << " the structure";
   }
+}
+
+// === Labels beside their vertices (the build slide: "11" sat beside vertex 12, "2", "6",
+// "8" away from theirs, and "e8 added" was crowded out)
+
+namespace {
+
+// the gap in pixels between an anchor and a placed label's box
+double gapTo(const cv::LabelPlacement& p, glm::dvec2 anchor) {
+  const glm::dvec2 lo = p.centre - 0.5 * p.size, hi = p.centre + 0.5 * p.size;
+  const glm::dvec2 nearest = glm::clamp(anchor, lo, hi);
+  return glm::length(nearest - anchor);
+}
+
+}  // namespace
+
+TEST(Labels, TheBuildSlidesLabelsSitBesideTheirVertices) {
+  cv::Scene2D s;
+  ASSERT_TRUE(s.generate(convexloc::PolygonKind::Random, 16, 7));
+  s.setMethod(convexloc::Method2D::Polar);
+  ASSERT_TRUE(s.setResolution(3));
+  // a 1920x1080 slide: the title card above, the caption below, the legend at the right
+  cv::Camera2D cam;
+  cam.setViewport({1920.0, 1080.0});
+  cam.fit(s.polygon().bounds(), {{0.0, 95.0}, {1380.0, 915.0}});
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
+  cv::View2DOptions opt;
+  opt.showTints = false;
+  cv::DrawList structure, step;
+  cv::buildStructure2D(s, pal, opt, structure);
+  cv::buildAnimation2D(s, 9, pal, step);
+  cv::appendBuildStep(structure, step);
+  const cv::DrawList* lists[] = {&structure};
+  const cv::ScreenProjection project = [&](glm::dvec3 p) -> std::optional<glm::dvec3> {
+    return glm::dvec3(cam.toScreen({p.x, p.y}), 0.0);
+  };
+  const double scale = 1.33;
+  const cv::MeasureText measure = [&](std::string_view t) {
+    return glm::dvec2(9.0 * scale * static_cast<double>(t.size()), 19.0 * scale);
+  };
+  const cv::PixelBox windows[] = {{{100.0, 925.0}, {1820.0, 1070.0}},
+                                  {{1380.0, 490.0}, {1910.0, 910.0}}};
+  const auto placed = cv::layoutSceneLabels(lists, 1, project, {{0.0, 0.0}, {1920.0, 1080.0}},
+                                            measure, scale, 400, windows);
+  bool added = false;
+  std::size_t vertices = 0;
+  for (const cv::PlacedSceneLabel& p : placed) {
+    added |= p.label->text.starts_with("e8 added");
+    for (std::size_t i = 0; i < s.polygon().size(); ++i) {
+      if (p.label->text != std::to_string(i)) continue;
+      ++vertices;
+      const glm::dvec2 v = cam.toScreen({s.polygon().vertex(i).x, s.polygon().vertex(i).y});
+      EXPECT_LT(gapTo(p.place, v), 16.0 * scale) << "vertex " << i;
+      // and nearer to its own vertex than to any other
+      for (std::size_t j = 0; j < s.polygon().size(); ++j) {
+        const glm::dvec2 w = cam.toScreen({s.polygon().vertex(j).x, s.polygon().vertex(j).y});
+        if (j != i) {
+          EXPECT_LT(gapTo(p.place, v), gapTo(p.place, w)) << i << " nearer " << j;
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(added);
+  EXPECT_EQ(vertices, s.polygon().size());
 }

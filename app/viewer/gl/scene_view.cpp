@@ -149,7 +149,7 @@ void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
   buildStructure2D(model.scene2d, pal, untinted, structure_);
   DrawList step;
   buildAnimation2D(model.scene2d, model.build.step, pal, step);
-  append(structure_, step);
+  appendBuildStep(structure_, step);
 }
 
 void SceneView::syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt,
@@ -216,7 +216,7 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     if (model.build.active) {
       DrawList step;
       buildAnimation3D(scene, model.build.step, far, pal, step);
-      append(structure_, step);
+      appendBuildStep(structure_, step);
     }
     buildSeen_ = build;
     farFaces_ = far;
