@@ -19,5 +19,7 @@ ScreenRect sceneArea(const Model& model, glm::dvec2 window);
 // fits the camera to the shape in the scene area, leaving room for the caption and the
 // floating legend; for `now` + 1.5 s a change of the legend's size fits again
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now);
+// true while the camera is as the last fitScene left it (not panned, zoomed or turned since)
+bool viewAsFitted(const Model& model, const UiState& ui);
 
 }  // namespace convexloc::viewer

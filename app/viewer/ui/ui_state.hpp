@@ -40,6 +40,9 @@ struct UiState {
   float captionHeight = 0.0f;          // the caption box's height in the last frame
   std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
   double refitUntil = 0.0;             // until then a change of the legend's size refits the scene
+  // the camera as the last fit left it (2D: centre, scale; 3D: target, distance, yaw,
+  // pitch): a Steps window that appears over an untouched view refits it
+  double fittedView[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   // the Steps window
   float stepsSize[2] = {0.0f, 0.0f};  // its size in the last frame; zero while hidden
   int stepsCode = -1;  // its pseudo-code: 1 whole, 0 the current line, -1 whole where wide

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "logic/view/label_layout.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -240,9 +241,11 @@ void stepsWindow(Model& model, UiState& ui, ScreenRect area, double now) {
   ui.stepsSize[1] = size.y;
   ui.stepsRect[0] = pos.x, ui.stepsRect[1] = pos.y;
   ui.stepsRect[2] = pos.x + size.x, ui.stepsRect[3] = pos.y + size.y;
-  // fitted a moment ago for another size (or none): fit again
+  // fitted a moment ago for another size (or none): fit again; and a window appearing (a
+  // point just clicked) over a view left as fitted: fit beside it, the shape in the free room
+  const bool appeared = before[0] <= 0.0f && viewAsFitted(model, ui);
   if ((std::abs(size.x - before[0]) > 2.0f || std::abs(size.y - before[1]) > 2.0f) &&
-      now < ui.refitUntil)
+      (now < ui.refitUntil || appeared))
     model.requestFit();
 }
 
