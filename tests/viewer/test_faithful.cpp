@@ -14,6 +14,7 @@
 #include "logic/scene/scene3d.hpp"
 #include "logic/teach/build_anim.hpp"
 #include "logic/view/camera2d.hpp"
+#include "logic/view/camera3d.hpp"
 #include "logic/view/scene_labels.hpp"
 
 namespace cv = convexloc::viewer;
@@ -199,4 +200,47 @@ TEST(Labels, TheBuildSlidesLabelsSitBesideTheirVertices) {
   }
   EXPECT_TRUE(added);
   EXPECT_EQ(vertices, s.polygon().size());
+}
+
+// === Live fit: a wide 3D scene (the Planes mode's polyhedron and dual) fills its area
+
+namespace {
+
+// the screen box of the eight corners of `box`
+cv::ScreenRect cornersOnScreen(const cv::Camera3D& cam, const cv::Bounds3& box) {
+  glm::dvec2 lo{1e9}, hi{-1e9};
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 c{(k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y,
+                       (k & 4) ? box.hi.z : box.lo.z};
+    const cv::Projected p = cam.toScreen(c);
+    EXPECT_TRUE(p.visible());
+    lo = glm::min(lo, p.screen), hi = glm::max(hi, p.screen);
+  }
+  return {lo, hi};
+}
+
+}  // namespace
+
+TEST(Fit, AWideBoxFittedByItsCornersFillsTheArea) {
+  cv::Camera3D cam;
+  cam.setViewport({1920.0, 1080.0});
+  const cv::Bounds3 box{{-1.0, -1.0, -1.0}, {4.0, 1.0, 1.0}};  // 5 by 2 by 2
+  const cv::ScreenRect area{{345.0, 0.0}, {1590.0, 1080.0}};
+  for (const double yaw : {0.0, 0.4, -0.7}) {
+    cam.set({1.5, 0.0, 0.0}, 10.0, yaw, 0.35);
+    cam.fit(box, area);
+    const cv::ScreenRect sphere = cornersOnScreen(cam, box);
+    cam.fitCorners(box, area);
+    const cv::ScreenRect r = cornersOnScreen(cam, box);
+    EXPECT_GE(r.lo.x, area.lo.x - 1.0) << yaw;
+    EXPECT_GE(r.lo.y, area.lo.y - 1.0) << yaw;
+    EXPECT_LE(r.hi.x, area.hi.x + 1.0) << yaw;
+    EXPECT_LE(r.hi.y, area.hi.y + 1.0) << yaw;
+    // some corner reaches within 5% of an edge of the area ...
+    const double gap = std::min({r.lo.x - area.lo.x, r.lo.y - area.lo.y, area.hi.x - r.hi.x,
+                                 area.hi.y - r.hi.y});
+    EXPECT_LT(gap, 0.05 * area.size().y) << yaw;
+    // ... and the box is drawn far larger than its bounding sphere's fit drew it
+    EXPECT_GT(r.size().x, 1.15 * sphere.size().x) << yaw;
+  }
 }

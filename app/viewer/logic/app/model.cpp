@@ -409,7 +409,8 @@ void Model::fit(ScreenRect area) {
   if (planes3d.enabled()) {
     planes3d.sync(s);
     planes3d.placeDual(camera3d.right());
-    b = planes3d.both();
+    // the polyhedron and its dual side by side: fitted by their corners, filling the area
+    return camera3d.fitCorners(planes3d.both(), area);
   }
   camera3d.fit(b, area);
 }

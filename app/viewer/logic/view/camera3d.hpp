@@ -61,6 +61,10 @@ class Camera3D {
   void zoom(double factor);
   // looks at the box's middle from a distance at which its bounding sphere fills `area`
   void fit(const Bounds3& box, ScreenRect area);
+  // looks at the box's middle from the nearest distance at which all eight corners of the
+  // box, seen as the camera is turned now, lie in `area` (a wide box, the polyhedron with
+  // its dual beside, then fills a wide area instead of its bounding sphere's square)
+  void fitCorners(const Bounds3& box, ScreenRect area);
 
   // window pixel of a world point
   Projected toScreen(glm::dvec3 world) const;
