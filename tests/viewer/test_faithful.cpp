@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "logic/app/legend.hpp"
+#include "logic/app/model.hpp"
 #include "logic/base/glyphs.hpp"
 #include "logic/draw/radii_arc.hpp"
 #include "logic/draw/structure2d.hpp"
@@ -18,6 +20,7 @@
 #include "logic/view/scene_labels.hpp"
 
 namespace cv = convexloc::viewer;
+using convexloc::Vec2;
 
 namespace {
 
@@ -243,4 +246,31 @@ TEST(Fit, AWideBoxFittedByItsCornersFillsTheArea) {
     // ... and the box is drawn far larger than its bounding sphere's fit drew it
     EXPECT_GT(r.size().x, 1.15 * sphere.size().x) << yaw;
   }
+}
+
+// === Degenerate cases that show: the points normalisation dropped
+
+TEST(Dropped, TheInputPointsNormalisationDroppedAreDrawnAndNamed) {
+  cv::Model m;
+  ASSERT_TRUE(m.applyPreset("collinear-duplicate"));
+  const auto dropped = m.scene2d.droppedPoints();
+  ASSERT_FALSE(dropped.empty());
+  EXPECT_EQ(dropped.size(), m.scene2d.polygon().droppedCount());
+  const cv::Palette& pal = cv::paletteFor(m.settings.theme);
+  cv::DrawList out;
+  cv::buildStructure2D(m.scene2d, pal, m.settings.view2d, out);
+  for (const Vec2 p : dropped) {
+    bool ringed = false;
+    for (const cv::Marker& k : out.markers)
+      ringed |= k.shape == cv::MarkerShape::Ring && k.colour == pal.textMuted &&
+                k.p == glm::dvec3(p.x, p.y, 0.0);
+    EXPECT_TRUE(ringed) << p.x << ", " << p.y;
+  }
+  bool named = false;
+  for (const cv::LegendRow& r : cv::legendOf(m).rows)
+    named |= r.text.find("dropped") != std::string::npos;
+  EXPECT_TRUE(named);
+  // a shape with nothing dropped draws and names none
+  ASSERT_TRUE(m.scene2d.setShape(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}}, "triangle"));
+  EXPECT_TRUE(m.scene2d.droppedPoints().empty());
 }

@@ -473,6 +473,9 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
     strokeEdge(scene.polygon(), e, pal.polygonEdge, 2.25f, out);
   if (opt.showCentre) markCentre(scene, pal, opt, out);
   vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
+  // the input points normalisation dropped: hollow grey rings over the edges
+  for (const Vec2 p : scene.droppedPoints())
+    out.marker(at2(toGlm(p)), pal.textMuted, 15.0f, MarkerShape::Ring);
   if (opt.showGap) drawYGap(scene, pal, out);
 }
 

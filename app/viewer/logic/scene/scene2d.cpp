@@ -62,6 +62,7 @@ Scene2D::Scene2D() {
 
 bool Scene2D::adopt(ConvexPolygon polygon, std::string label, bool fresh) {
   if (!swapShape(std::move(polygon), std::move(label), fresh)) return false;
+  dropped_.clear();
   // a new shape gets a new spray (same count, seed and kind, in its box); an edited one
   // keeps its points, which rebuildLocator has classified again
   if (fresh && !points_.empty()) spray(spray_);
@@ -75,8 +76,15 @@ bool Scene2D::adoptShape(ConvexPolygon polygon, std::string label) {
 
 bool Scene2D::setShape(std::span<const Vec2> points, std::string label,
                        std::span<const std::size_t> lines, const std::string& source) {
-  return guarded(source,
-                 [&] { return adoptShape(ConvexPolygon(points, lines), std::move(label)); });
+  if (!guarded(source, [&] { return adoptShape(ConvexPolygon(points, lines), std::move(label)); }))
+    return false;
+  // the input points that are no vertex now, to be drawn as dropped
+  std::vector<bool> kept(points.size(), false);
+  for (const std::uint32_t i : shape_->sourceIndex())
+    if (i < kept.size()) kept[i] = true;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!kept[i]) dropped_.push_back(points[i]);
+  return true;
 }
 
 bool Scene2D::generate(PolygonKind kind, std::size_t n, std::uint64_t seed) {

@@ -65,6 +65,9 @@ class Scene2D : public SceneState<Traits2D> {
   // a generated polygon (core's generators); false and error() on a bad argument
   bool generate(PolygonKind kind, std::size_t n, std::uint64_t seed);
   const ConvexPolygon& polygon() const { return *shape_; }
+  // the input points of the last setShape that normalisation dropped (repeated, or on the
+  // segment between two vertices), none after a file, a generator's shape or a drag
+  std::span<const Vec2> droppedPoints() const { return dropped_; }
 
   // === Method
   // the resolution the locator actually uses (core's choice when 0 was asked): slabs
@@ -103,6 +106,7 @@ class Scene2D : public SceneState<Traits2D> {
   std::optional<Vec2> hoverPoint_;
   std::optional<Drag> drag_;
   std::optional<Snap> snapMark_;
+  std::vector<Vec2> dropped_;
 };
 
 }  // namespace convexloc::viewer
