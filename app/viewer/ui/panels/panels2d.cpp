@@ -128,6 +128,7 @@ bool inspectable2D(Model& model) {
 }
 
 constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a point",
+                                    "points snap to vertices, edges, x_T, a grid; Alt: free",
                                     "F fit, H hide panels, 1-5 method, Space spray",
                                     "L lines mode: drag to place a line", nullptr};
 
