@@ -3,6 +3,7 @@
 // reports its plane faces.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -11,6 +12,7 @@
 #include "logic/app/model.hpp"
 #include "logic/base/glyphs.hpp"
 #include "logic/draw/radii_arc.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
@@ -273,4 +275,43 @@ TEST(Dropped, TheInputPointsNormalisationDroppedAreDrawnAndNamed) {
   // a shape with nothing dropped draws and names none
   ASSERT_TRUE(m.scene2d.setShape(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}}, "triangle"));
   EXPECT_TRUE(m.scene2d.droppedPoints().empty());
+}
+
+// === A zoom inset onto the tiny edges
+
+TEST(ZoomInset, TheTinyEdgesAreDrawnMagnifiedBesideThePolygon) {
+  const convexloc::ConvexPolygon poly(
+      convexloc::generatePolygon(convexloc::PolygonKind::TinyEdges, 24, 1));
+  const auto inset = cv::tinyEdgesInset(poly);
+  ASSERT_TRUE(inset);
+  EXPECT_GE(inset->exponent, 6);
+  const convexloc::Box2 box = poly.bounds();
+  // beside the polygon, not over it, and about half its height
+  EXPECT_LT(inset->frame.hi.x, box.lo.x);
+  const double side = inset->frame.hi.x - inset->frame.lo.x, height = box.hi.y - box.lo.y;
+  EXPECT_GT(side, 0.2 * height);
+  EXPECT_LE(side, 0.5 * height * (1.0 + 1e-9));
+  // every edge too short to see lies in the source, and so is drawn in the frame
+  std::size_t tiny = 0;
+  for (std::size_t e = 0; e < poly.size(); ++e) {
+    const Vec2 a = poly.edgeStart(e), b = poly.edgeEnd(e);
+    if (std::hypot(b.x - a.x, b.y - a.y) > 1e-6) continue;
+    ++tiny;
+    for (const Vec2 p : {a, b}) {
+      const Vec2 q = cv::insetPoint(*inset, p);
+      EXPECT_TRUE(q.x >= inset->frame.lo.x && q.x <= inset->frame.hi.x && q.y >= inset->frame.lo.y &&
+                  q.y <= inset->frame.hi.y);
+    }
+  }
+  EXPECT_GE(tiny, 10u);
+  EXPECT_NE(cv::magnificationText(*inset).find("10^"), std::string::npos);
+  // and drawn: the label names the magnification
+  cv::DrawList out;
+  cv::drawZoomInset(poly, *inset, cv::paletteFor(cv::Theme::Light), out);
+  bool named = false;
+  for (const cv::Label& l : out.labels) named |= l.text == "zoom " + cv::magnificationText(*inset);
+  EXPECT_TRUE(named);
+  // a polygon whose edges all show has none
+  EXPECT_FALSE(cv::tinyEdgesInset(convexloc::ConvexPolygon(
+      convexloc::generatePolygon(convexloc::PolygonKind::Regular, 64, 1))));
 }

@@ -10,6 +10,7 @@
 #include "logic/draw/radii_arc.hpp"
 #include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/y_gap.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/narration/steps.hpp"
 #include "logic/view/camera2d.hpp"
 
@@ -477,6 +478,9 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   for (const Vec2 p : scene.droppedPoints())
     out.marker(at2(toGlm(p)), pal.textMuted, 15.0f, MarkerShape::Ring);
   if (opt.showGap) drawYGap(scene, pal, out);
+  // edges too short to see at this scale, drawn magnified beside the polygon
+  if (const auto inset = tinyEdgesInset(scene.polygon()))
+    drawZoomInset(scene.polygon(), *inset, pal, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
