@@ -12,6 +12,7 @@
 #include "logic/app/model.hpp"
 #include "logic/base/glyphs.hpp"
 #include "logic/draw/radii_arc.hpp"
+#include "logic/draw/section_polygon.hpp"
 #include "logic/draw/zoom_inset.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/scene/scene2d.hpp"
@@ -235,7 +236,7 @@ TEST(Fit, AWideBoxFittedByItsCornersFillsTheArea) {
     cam.set({1.5, 0.0, 0.0}, 10.0, yaw, 0.35);
     cam.fit(box, area);
     const cv::ScreenRect sphere = cornersOnScreen(cam, box);
-    cam.fitCorners(box, area);
+    cam.fitCorners(std::span<const cv::Bounds3>(&box, 1), area);
     const cv::ScreenRect r = cornersOnScreen(cam, box);
     EXPECT_GE(r.lo.x, area.lo.x - 1.0) << yaw;
     EXPECT_GE(r.lo.y, area.lo.y - 1.0) << yaw;
@@ -314,4 +315,44 @@ TEST(ZoomInset, TheTinyEdgesAreDrawnMagnifiedBesideThePolygon) {
   // a polygon whose edges all show has none
   EXPECT_FALSE(cv::tinyEdgesInset(convexloc::ConvexPolygon(
       convexloc::generatePolygon(convexloc::PolygonKind::Regular, 64, 1))));
+}
+
+// === The plane's section as one straight-sided polygon
+
+TEST(Section, TheSectionIsOnePolygonOnTheSurface) {
+  cv::Scene3D s;
+  ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::Cube, 6, 1));
+  // z = 0.3 through the cube [-1, 1]^3: the square |x|, |y| <= 1
+  const auto square =
+      cv::sectionPolygon(s.polyhedron(), {-2.0, -2.0, 0.3}, {0.1, 0.0, 0.0}, {0.0, 0.1, 0.0});
+  ASSERT_EQ(square.size(), 4u);
+  for (const glm::dvec3& p : square) {
+    EXPECT_DOUBLE_EQ(p.z, 0.3);
+    EXPECT_DOUBLE_EQ(std::abs(p.x), 1.0);
+    EXPECT_DOUBLE_EQ(std::abs(p.y), 1.0);
+  }
+  // an oblique plane through the dodecahedron: every corner on the surface (on some face's
+  // plane, inside all), the polygon convex and counter-clockwise about the normal
+  ASSERT_TRUE(s.generate(convexloc::PolyhedronKind::Dodecahedron, 12, 1));
+  const glm::dvec3 du{0.3, 0.1, -0.2}, dv{-0.1, 0.25, 0.15};
+  const auto poly = cv::sectionPolygon(s.polyhedron(), {0.1, -0.05, 0.2}, du, dv);
+  ASSERT_GE(poly.size(), 5u);
+  const auto v = s.polyhedron().vertices();
+  const auto at = [&](std::uint32_t i) { return glm::dvec3(v[i].x, v[i].y, v[i].z); };
+  for (const glm::dvec3& p : poly) {
+    double most = -1e300;
+    for (const auto& t : s.polyhedron().triangles()) {
+      const glm::dvec3 n = glm::normalize(glm::cross(at(t[1]) - at(t[0]), at(t[2]) - at(t[0])));
+      most = std::max(most, glm::dot(p - at(t[0]), n));
+    }
+    EXPECT_NEAR(most, 0.0, 1e-12);
+  }
+  const glm::dvec3 n = glm::cross(du, dv);
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const glm::dvec3 a = poly[i], b = poly[(i + 1) % poly.size()], c = poly[(i + 2) % poly.size()];
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - b), n), 0.0);
+  }
+  // a plane beside the polyhedron cuts nothing
+  EXPECT_TRUE(cv::sectionPolygon(s.polyhedron(), {0.0, 0.0, 5.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0})
+                  .empty());
 }

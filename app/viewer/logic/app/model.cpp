@@ -415,7 +415,10 @@ void Model::fit(ScreenRect area) {
     planes3d.sync(s);
     planes3d.placeDual(camera3d.right());
     // the polyhedron and its dual side by side: fitted by their corners, filling the area
-    return camera3d.fitCorners(planes3d.both(), area);
+    const DualPlace3D& at = planes3d.place();
+    const Bounds3 boxes[] = {planes3d.box(),
+                             {at.middle - glm::dvec3(at.scale), at.middle + glm::dvec3(at.scale)}};
+    return camera3d.fitCorners(boxes, area);
   }
   camera3d.fit(b, area);
 }
