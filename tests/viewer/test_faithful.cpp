@@ -356,3 +356,20 @@ TEST(Section, TheSectionIsOnePolygonOnTheSurface) {
   EXPECT_TRUE(cv::sectionPolygon(s.polyhedron(), {0.0, 0.0, 5.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0})
                   .empty());
 }
+
+TEST(ZoomInset, AFarOffsetShowsItsDigits) {
+  cv::Model m;
+  ASSERT_TRUE(m.applyPreset("large-offset"));
+  const auto note = cv::offsetNote(m.scene2d.polygon());
+  ASSERT_TRUE(note);
+  EXPECT_NE(note->find("10^9"), std::string::npos) << *note;
+  EXPECT_NE(note->find(convexloc::exactText(m.scene2d.polygon().vertex(0))), std::string::npos);
+  cv::DrawList out;
+  cv::buildStructure2D(m.scene2d, cv::paletteFor(m.settings.theme), m.settings.view2d, out);
+  bool drawn = false;
+  for (const cv::Label& l : out.labels) drawn |= l.text == *note;
+  EXPECT_TRUE(drawn);
+  // near the origin: none
+  EXPECT_FALSE(cv::offsetNote(convexloc::ConvexPolygon(
+      convexloc::generatePolygon(convexloc::PolygonKind::Regular, 12, 1))));
+}

@@ -478,9 +478,10 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   for (const Vec2 p : scene.droppedPoints())
     out.marker(at2(toGlm(p)), pal.textMuted, 15.0f, MarkerShape::Ring);
   if (opt.showGap) drawYGap(scene, pal, out);
-  // edges too short to see at this scale, drawn magnified beside the polygon
-  if (const auto inset = tinyEdgesInset(scene.polygon()))
-    drawZoomInset(scene.polygon(), *inset, pal, out);
+  // tiny edges magnified beside the polygon; a far offset's digits over it
+  const ConvexPolygon& p = scene.polygon();
+  if (const auto inset = tinyEdgesInset(p)) drawZoomInset(p, *inset, pal, out);
+  if (const auto note = offsetNote(p)) drawOffsetNote(p, *note, pal, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "convexloc/format.hpp"
+
 namespace convexloc::viewer {
 namespace {
 
@@ -119,6 +121,25 @@ void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const P
   out.segment({s.x, s.y, 0.0}, c11, withAlpha(pal.textMuted, 0.7f), 1.0f, 6.0f);
   out.label({0.5 * (f.lo.x + f.hi.x), f.hi.y, 0.0}, "zoom " + magnificationText(inset), pal.text,
             {0.0f, -14.0f});
+}
+
+std::optional<std::string> offsetNote(const ConvexPolygon& polygon) {
+  const Box2 box = polygon.bounds();
+  const double size = lengthOf(box.lo, box.hi);
+  const double far =
+      std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.hi.x), std::abs(box.hi.y)});
+  if (!(size > 0.0) || !(far > 1e6 * size) || polygon.size() == 0) return std::nullopt;
+  const int power = static_cast<int>(std::lround(std::log10(far)));
+  return "at 10^" + std::to_string(power) + " from the origin: vertex 0 is " +
+         exactText(polygon.vertex(0)) + ", exactly";
+}
+
+void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const Palette& pal,
+                    DrawList& out) {
+  const Box2 box = polygon.bounds();
+  const Vec2 v = polygon.vertex(0);
+  out.marker({v.x, v.y, 0.0}, pal.text, 14.0f, MarkerShape::Ring);
+  out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
 }
 
 }  // namespace convexloc::viewer

@@ -39,4 +39,14 @@ Vec2 insetPoint(const ZoomInset& inset, Vec2 p);
 void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const Palette& palette,
                    DrawList& out);
 
+// For a polygon farther from the origin than 10^6 times its size (the large-offset gallery
+// shape), what its digits are: "at 10^9 from the origin: vertex 0 is (1000000000.25, ...)",
+// the vertex's exact doubles in their shortest digits, the offset's power of ten rounded;
+// none for a polygon near the origin.
+std::optional<std::string> offsetNote(const ConvexPolygon& polygon);
+
+// the note over the middle of the polygon's box, and a ring at vertex 0
+void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const Palette& palette,
+                    DrawList& out);
+
 }  // namespace convexloc::viewer
