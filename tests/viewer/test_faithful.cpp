@@ -13,8 +13,8 @@
 #include "logic/base/glyphs.hpp"
 #include "logic/draw/radii_arc.hpp"
 #include "logic/draw/section_polygon.hpp"
-#include "logic/draw/zoom_inset.hpp"
 #include "logic/draw/structure2d.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
 #include "logic/teach/build_anim.hpp"
@@ -113,11 +113,13 @@ TEST(Radii, APlacedPointsRadiiAreDrawnInsideItsCellOnly) {
   const glm::dvec2 c{t.apex.x, t.apex.y};
   int radii = 0;
   for (const cv::Segment& seg : out.segments) {
-    const bool radius = seg.dash > 0.0f && (seg.colour == pal.positive || seg.colour == pal.negative);
+    const bool radius =
+        seg.dash > 0.0f && (seg.colour == pal.positive || seg.colour == pal.negative);
     if (!radius) continue;
     ++radii;
     for (const glm::dvec3& p : {seg.a, seg.b}) {
-      EXPECT_TRUE(inWedge(c, {cell.dirLo.x, cell.dirLo.y}, {cell.dirHi.x, cell.dirHi.y}, {p.x, p.y}));
+      EXPECT_TRUE(
+          inWedge(c, {cell.dirLo.x, cell.dirLo.y}, {cell.dirHi.x, cell.dirHi.y}, {p.x, p.y}));
       const double r = glm::length(glm::dvec2(p.x, p.y) - c);
       EXPECT_TRUE(std::abs(r - t.innerRadius) < 1e-9 || std::abs(r - t.outerRadius) < 1e-9) << r;
     }
@@ -243,8 +245,8 @@ TEST(Fit, AWideBoxFittedByItsCornersFillsTheArea) {
     EXPECT_LE(r.hi.x, area.hi.x + 1.0) << yaw;
     EXPECT_LE(r.hi.y, area.hi.y + 1.0) << yaw;
     // some corner reaches within 5% of an edge of the area ...
-    const double gap = std::min({r.lo.x - area.lo.x, r.lo.y - area.lo.y, area.hi.x - r.hi.x,
-                                 area.hi.y - r.hi.y});
+    const double gap =
+        std::min({r.lo.x - area.lo.x, r.lo.y - area.lo.y, area.hi.x - r.hi.x, area.hi.y - r.hi.y});
     EXPECT_LT(gap, 0.05 * area.size().y) << yaw;
     // ... and the box is drawn far larger than its bounding sphere's fit drew it
     EXPECT_GT(r.size().x, 1.15 * sphere.size().x) << yaw;
@@ -300,8 +302,8 @@ TEST(ZoomInset, TheTinyEdgesAreDrawnMagnifiedBesideThePolygon) {
     ++tiny;
     for (const Vec2 p : {a, b}) {
       const Vec2 q = cv::insetPoint(*inset, p);
-      EXPECT_TRUE(q.x >= inset->frame.lo.x && q.x <= inset->frame.hi.x && q.y >= inset->frame.lo.y &&
-                  q.y <= inset->frame.hi.y);
+      EXPECT_TRUE(q.x >= inset->frame.lo.x && q.x <= inset->frame.hi.x &&
+                  q.y >= inset->frame.lo.y && q.y <= inset->frame.hi.y);
     }
   }
   EXPECT_GE(tiny, 10u);

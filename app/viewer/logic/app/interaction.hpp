@@ -76,7 +76,7 @@ class Interaction {
   void endWhenReleased(const PointerInput& in);
   Gesture gesture_ = Gesture::None;
   glm::dvec2 pressAt_{0.0};
-  Vec2 lineStart_{};      // the snapped start of a line being drawn
+  Vec2 lineStart_{};          // the snapped start of a line being drawn
   bool vertexMoved_ = false;  // the grabbed vertex went past the click slop
   bool lastAlt_ = false;      // Alt was down in the last frame (its change moves the vertex)
 };

@@ -15,8 +15,9 @@ struct GlyphRange {
   char32_t first, last;
 };
 
-// Latin-1, Greek (φ, θ in a lecturer's captions), general punctuation with super- and subscripts, arrows, mathematical operators,
-// miscellaneous technical (the floor and ceiling brackets), geometric shapes
+// Latin-1, Greek (φ, θ in a lecturer's captions), general punctuation with super- and subscripts,
+// arrows, mathematical operators, miscellaneous technical (the floor and ceiling brackets),
+// geometric shapes
 std::span<const GlyphRange> fontGlyphRanges();
 
 // the first code point of the UTF-8 `text` outside fontGlyphRanges() (newlines and tabs

@@ -474,14 +474,12 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
     strokeEdge(scene.polygon(), e, pal.polygonEdge, 2.25f, out);
   if (opt.showCentre) markCentre(scene, pal, opt, out);
   vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
-  // the input points normalisation dropped: hollow grey rings over the edges
-  for (const Vec2 p : scene.droppedPoints())
-    out.marker(at2(toGlm(p)), pal.textMuted, 15.0f, MarkerShape::Ring);
   if (opt.showGap) drawYGap(scene, pal, out);
-  // tiny edges magnified beside the polygon; a far offset's digits over it
-  const ConvexPolygon& p = scene.polygon();
-  if (const auto inset = tinyEdgesInset(p)) drawZoomInset(p, *inset, pal, out);
-  if (const auto note = offsetNote(p)) drawOffsetNote(p, *note, pal, out);
+  // degenerate cases that show: the input points normalisation dropped as hollow grey
+  // rings, tiny edges magnified beside the polygon, a far offset's digits over it
+  for (const Vec2 q : scene.droppedPoints())
+    out.marker(at2(toGlm(q)), pal.textMuted, 15.0f, MarkerShape::Ring);
+  drawDegenerateInsets(scene.polygon(), pal, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,

@@ -142,4 +142,9 @@ void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const
   out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
 }
 
+void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, DrawList& out) {
+  if (const auto inset = tinyEdgesInset(polygon)) drawZoomInset(polygon, *inset, pal, out);
+  if (const auto note = offsetNote(polygon)) drawOffsetNote(polygon, *note, pal, out);
+}
+
 }  // namespace convexloc::viewer

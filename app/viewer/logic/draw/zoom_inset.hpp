@@ -49,4 +49,7 @@ std::optional<std::string> offsetNote(const ConvexPolygon& polygon);
 void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const Palette& palette,
                     DrawList& out);
 
+// the zoom inset where the polygon has tiny edges, the offset note where it lies far out
+void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& palette, DrawList& out);
+
 }  // namespace convexloc::viewer

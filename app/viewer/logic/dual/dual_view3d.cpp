@@ -68,8 +68,7 @@ void dualCell(const CubemapLocator& cube, const DualPlace3D& at, const Cell3D& c
 }
 
 // the plane's patch and, where it meets the polyhedron, the section core classifies on it
-void planePatch(const Planes3D& planes, const PlaneProbe3D& p, const Palette& pal,
-                DrawList& out) {
+void planePatch(const Planes3D& planes, const PlaneProbe3D& p, const Palette& pal, DrawList& out) {
   const auto& patch = p.patch;
   for (std::size_t i = 0; i < patch.size(); ++i)
     out.segment(patch[i], patch[(i + 1) % patch.size()], pal.box, 1.25f, 6.0f);

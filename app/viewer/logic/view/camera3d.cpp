@@ -92,8 +92,8 @@ void Camera3D::fitCorners(std::span<const Bounds3> boxes, ScreenRect area) {
     const glm::dvec3 c = corner - target_;
     const double depth = glm::dot(c, f);  // beyond the target: positive
     // the corner at depth distance + depth must project within the area's half-angles
-    needed = std::max({needed, std::abs(glm::dot(c, s)) / tanX - depth,
-                       std::abs(glm::dot(c, u)) / tanY - depth});
+    needed = std::max(
+        {needed, std::abs(glm::dot(c, s)) / tanX - depth, std::abs(glm::dot(c, u)) / tanY - depth});
     nearest = std::max(nearest, -depth);
   }
   // a margin, and the eye never among the corners
