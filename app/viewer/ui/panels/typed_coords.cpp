@@ -50,11 +50,16 @@ bool tripleFields(const char* id, Vec3& p) {
   return changed;
 }
 
+// `index` kept within [0, count) (a vertex chosen for a shape since replaced)
+void clampIndex(int& index, std::size_t count) {
+  index = std::clamp(index, 0, static_cast<int>(std::max<std::size_t>(count, 1)) - 1);
+}
+
 // a vertex number field, kept within [0, count)
 void vertexIndexField(const char* id, int& index, std::size_t count, float width) {
   ImGui::SetNextItemWidth(width);
   ImGui::InputInt(id, &index, 1, 1);
-  index = std::clamp(index, 0, static_cast<int>(std::max<std::size_t>(count, 1)) - 1);
+  clampIndex(index, count);
 }
 
 // what the 2D panel keeps between frames: the point typed and the vertices chosen
@@ -76,6 +81,7 @@ void typedPoint2D(Model& model) {
   ImGui::TextDisabled("point (x, y): Enter places it");
   if (pairFields("##px", "##py", t.point)) scene.place(t.point);
   const auto v = scene.polygon().vertices();
+  clampIndex(t.vertex, v.size());
   if (ImGui::SmallButton("on vertex")) scene.place(v[static_cast<std::size_t>(t.vertex)]);
   ImGui::SameLine();
   vertexIndexField("##onVertex", t.vertex, v.size(), fieldWidth(1) * 0.45f);
@@ -110,6 +116,8 @@ void typedLine2D(Model& model) {
   changed |= pairFields("##l2x", "##l2y", t.lineP2);
   if (changed && !lines.setLine(t.lineP1, t.lineP2)) model.fail("a line needs two distinct points");
   const auto v = model.scene2d.polygon().vertices();
+  clampIndex(t.lineFrom, v.size());
+  clampIndex(t.lineTo, v.size());
   if (ImGui::SmallButton("through vertices")) {
     if (t.lineFrom == t.lineTo)
       model.fail("a line needs two distinct vertices");
@@ -174,6 +182,7 @@ void typedPlane3D(Model& model) {
   const ConvexPolyhedron* p = planes.polyhedron();
   if (!p) return;
   const auto v = p->vertices();
+  for (int& k : chosen) clampIndex(k, v.size());
   if (ImGui::SmallButton("through vertices")) {
     if (!planes.setPlane(v[static_cast<std::size_t>(chosen[0])],
                          v[static_cast<std::size_t>(chosen[1])],
