@@ -131,6 +131,32 @@ void typedLine2D(Model& model) {
   vertexIndexField("##lineTo", t.lineTo, v.size(), w * 0.45f);
 }
 
+// the plane n.x = d typed: three points of it derived along the normal's largest axis
+void typedNormalOffset(Model& model) {
+  static Vec3 n{0.0, 0.0, 1.0};
+  static double d = 0.0;
+  ImGui::TextDisabled("plane a x + b y + c z = d: Enter sets it");
+  bool changed = tripleFields("##n", n);
+  changed |= exactField("##d", d, fieldWidth(1));
+  if (!changed) return;
+  const double c[3] = {n.x, n.y, n.z};
+  int k = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(c[a]) > std::abs(c[k])) k = a;
+  if (c[k] == 0.0) return model.fail("a plane needs a normal other than (0, 0, 0)");
+  // (0, 0), (1, 0), (0, 1) on the other two axes, the k-th solved (rounded to a double)
+  std::array<Vec3, 3> q{};
+  const int i = (k + 1) % 3, j = (k + 2) % 3;
+  for (int m = 0; m < 3; ++m) {
+    double x[3] = {0.0, 0.0, 0.0};
+    x[i] = m == 1 ? 1.0 : 0.0;
+    x[j] = m == 2 ? 1.0 : 0.0;
+    x[k] = (d - c[i] * x[i] - c[j] * x[j]) / c[k];
+    q[static_cast<std::size_t>(m)] = {x[0], x[1], x[2]};
+  }
+  model.planes3d.setPlane(q[0], q[1], q[2]);
+}
+
 }  // namespace
 
 bool exactField(const char* id, double& v, float width) {
@@ -171,6 +197,7 @@ void typedCoordinates2D(Model& model) {
 
 void typedPlane3D(Model& model) {
   Planes3D& planes = model.planes3d;
+  typedNormalOffset(model);
   static std::array<Vec3, 3> q{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
   static std::array<int, 3> chosen{0, 1, 2};
   if (planes.plane()) q = planes.plane()->q;
@@ -183,18 +210,18 @@ void typedPlane3D(Model& model) {
   if (!p) return;
   const auto v = p->vertices();
   for (int& k : chosen) clampIndex(k, v.size());
-  if (ImGui::SmallButton("through vertices")) {
-    if (!planes.setPlane(v[static_cast<std::size_t>(chosen[0])],
-                         v[static_cast<std::size_t>(chosen[1])],
-                         v[static_cast<std::size_t>(chosen[2])]))
-      model.fail("those three vertices are collinear: they define no plane");
-  }
+  // the three vertex numbers on a row, the button below them
   const float w = fieldWidth(3);
   for (int k = 0; k < 3; ++k) {
-    ImGui::SameLine();
+    if (k) ImGui::SameLine();
     vertexIndexField(("##pv" + std::to_string(k)).c_str(), chosen[static_cast<std::size_t>(k)],
-                     v.size(), w * 0.5f);
+                     v.size(), w);
   }
+  if (ImGui::SmallButton("plane through these vertices") &&
+      !planes.setPlane(v[static_cast<std::size_t>(chosen[0])],
+                       v[static_cast<std::size_t>(chosen[1])],
+                       v[static_cast<std::size_t>(chosen[2])]))
+    model.fail("those three vertices are collinear: they define no plane");
 }
 
 bool steppedField(const char* id, double& v, double step) {
