@@ -7,6 +7,7 @@
 
 #include "convexloc/generate2d.hpp"
 #include "logic/app/model.hpp"
+#include "logic/base/format.hpp"
 #include "logic/scene/presets.hpp"
 #include "logic/scene/scene2d.hpp"
 
@@ -187,6 +188,43 @@ TEST(Scene2D, InvalidDragKeepsTheLastValidShapeAndSaysWhy) {
   s.endDrag();
   EXPECT_NE(s.error().find("last valid shape"), std::string::npos) << s.error();
   EXPECT_EQ(s.polygon().size(), 4u);
+}
+
+TEST(Scene2D, ARefusedDragNamesTheVertexInShortestDigits) {
+  cv::Scene2D s;
+  ASSERT_TRUE(s.setShape(kSquare, "square"));
+  s.beginDrag(2);
+  // below the diagonal from (2, 0) to (0, 2): reflex
+  EXPECT_FALSE(s.dragTo({0.1 + 0.2, 0.7}));
+  ASSERT_TRUE(s.drag());
+  const std::string& m = s.drag()->message;
+  EXPECT_NE(m.find("vertex 2 (0.30000000000000004, 0.7)"), std::string::npos) << m;
+  EXPECT_EQ(m.find("0.69999999999999996"), std::string::npos) << m;
+  s.endDrag();
+  EXPECT_EQ(s.error().find("0.69999999999999996"), std::string::npos) << s.error();
+}
+
+TEST(Format, ShortestCoordinatesRewritesOnlyNumberTuples) {
+  EXPECT_EQ(cv::shortestCoordinates("reflex vertex 3 (0.10000000000000001, 2)"),
+            "reflex vertex 3 (0.1, 2)");
+  EXPECT_EQ(cv::shortestCoordinates("at (1.5, -2.0000000000000000, 3e-320) and (x, y)"),
+            "at (1.5, -2, 3e-320) and (x, y)");
+  EXPECT_EQ(cv::shortestCoordinates("(one) (1) (1, 2, 3, 4) (2,"), "(one) (1) (1, 2, 3, 4) (2,");
+}
+
+TEST(Format, ATypedNumberIsReadWholeOrRefused) {
+  EXPECT_EQ(cv::parseNumber("0.1"), 0.1);
+  EXPECT_EQ(cv::parseNumber(" -2.5e-3 "), -2.5e-3);
+  EXPECT_EQ(cv::parseNumber("1e9"), 1e9);
+  EXPECT_EQ(cv::parseNumber("0.30000000000000004"), 0.1 + 0.2);
+  EXPECT_EQ(cv::parseNumber("4.9e-324"), 4.9e-324);  // the smallest subnormal reads
+  EXPECT_EQ(cv::parseNumber("1.2,0.5"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("0.5x"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber(""), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("inf"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("nan"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("0x10"), std::nullopt);
+  EXPECT_EQ(cv::parseNumber("1e999"), std::nullopt);
 }
 
 TEST(Scene2D, CompareTimesEveryMethodAndTheyAgree) {

@@ -8,6 +8,7 @@
 #include "logic/teach/build_anim.hpp"
 #include "logic/dual/dual_view2d.hpp"
 #include "logic/dual/dual_view3d.hpp"
+#include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/draw/structure3d.hpp"
 
@@ -112,6 +113,7 @@ void SceneView::sync2d(const Model& model, Renderer& renderer, bool restyle) {
     if (!lines.enabled()) return buildOverlay2D(scene, pal, opt, out);
     out.clear();
     buildLines2D(lines, pal, opt.showLabels, out);
+    snapIndicator(scene, pal, out);
   });
 }
 
@@ -147,7 +149,7 @@ void SceneView::buildStructure(const Model& model, const View2DOptions& opt) {
   buildStructure2D(model.scene2d, pal, untinted, structure_);
   DrawList step;
   buildAnimation2D(model.scene2d, model.build.step, pal, step);
-  append(structure_, step);
+  appendBuildStep(structure_, step);
 }
 
 void SceneView::syncSplit(const Model& model, Renderer& renderer, const View2DOptions& opt,
@@ -214,7 +216,7 @@ void SceneView::sync3d(Model& model, Renderer& renderer, bool restyle) {
     if (model.build.active) {
       DrawList step;
       buildAnimation3D(scene, model.build.step, far, pal, step);
-      append(structure_, step);
+      appendBuildStep(structure_, step);
     }
     buildSeen_ = build;
     farFaces_ = far;

@@ -109,6 +109,7 @@ PointerInput pointerInput(bool hovering) {
   in.wheel = io.MouseWheel;
   in.captured = io.WantCaptureMouse;
   in.shift = io.KeyShift;
+  in.alt = io.KeyAlt;
   in.hovering = ImGui::IsMousePosValid() && hovering;
   return in;
 }

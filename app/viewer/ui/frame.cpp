@@ -78,10 +78,11 @@ void hints(const Model& model) {
   ImGui::PopStyleColor();
 }
 
-// a moment after a fit, a layout that leaves the scene other room (the legend took its
-// size) fits again
+// a layout that leaves the scene other room fits again: a moment after a fit (the legend
+// took its size), or while the view is as the last fit left it (a clicked point's Steps
+// window appeared, a pinned cell made the legend taller)
 void refitOnNewRoom(Model& model, const UiState& ui, glm::dvec2 window, double now) {
-  if (now >= ui.refitUntil) return;
+  if (now >= ui.refitUntil && !viewAsFitted(model, ui)) return;
   const ScreenRect room = fitRoom(model, ui, window);
   const glm::dvec2 d =
       glm::abs(room.lo - ui.fittedScene.lo) + glm::abs(room.hi - ui.fittedScene.hi);

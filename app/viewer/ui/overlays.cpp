@@ -9,6 +9,7 @@
 
 #include "logic/view/label_layout.hpp"
 #include "ui/frame.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -51,9 +52,12 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   } else if (ImGui::IsWindowHovered() && !ui.exporting) {
     ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
   }
-  if ((std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f) &&
-      now < ui.refitUntil)
-    model.requestFit();  // fitted a moment ago for another size: fit again
+  const bool resized =
+      std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f;
+  // fitted a moment ago for another size: fit again; and rows added (a cell pinned) over a
+  // view left as fitted: fit beside the taller legend, which would cover the scene
+  const bool grew = size.y > ui.legendSize[1] + 2.0f && ui.legendSize[1] > 0.0f;
+  if (resized && (now < ui.refitUntil || (grew && viewAsFitted(model, ui)))) model.requestFit();
   ui.legendSize[0] = size.x;
   ui.legendSize[1] = size.y;
   // where it is, for the labels to keep off
@@ -107,7 +111,8 @@ void toast(Model& model, UiState& ui, ScreenRect area, double now) {
     if (!ui.toast.empty()) std::cerr << "convexloc-viewer: " << ui.toast << "\n";
   }
   const Palette& pal = paletteFor(model.settings.theme);
-  float y = 10.0f;
+  // below a slide's card: a message never hides the slide's title
+  float y = 10.0f + model.settings.slideCardHeight;
   auto banner = [&](const char* id, const std::string& text, Rgba colour, bool closable,
                     double& until) {
     if (text.empty() || now > until) return;

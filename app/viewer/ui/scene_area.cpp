@@ -2,12 +2,35 @@
 #include "ui/scene_area.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 #include <imgui.h>
 
 #include "ui/slide_frame.hpp"
 
 namespace convexloc::viewer {
+
+namespace {
+
+// the camera's state, to tell whether it moved since the fit
+void viewNow(const Model& model, double (&v)[6]) {
+  if (model.dim == Dim::Two) {
+    const glm::dvec2 c = model.camera2d.centre();
+    v[0] = c.x, v[1] = c.y, v[2] = model.camera2d.scale(), v[3] = v[4] = v[5] = 0.0;
+    return;
+  }
+  const Camera3D& cam = model.camera3d;
+  v[0] = cam.target().x, v[1] = cam.target().y, v[2] = cam.target().z;
+  v[3] = cam.distance(), v[4] = cam.yaw(), v[5] = cam.pitch();
+}
+
+}  // namespace
+
+bool viewAsFitted(const Model& model, const UiState& ui) {
+  double v[6];
+  viewNow(model, v);
+  return std::equal(std::begin(v), std::end(v), std::begin(ui.fittedView));
+}
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
   if (!model.settings.showUi) return 0.0f;
@@ -38,6 +61,7 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   const ScreenRect room = fitRoom(model, ui, window);
   model.fit(room);
   ui.fittedScene = room;
+  viewNow(model, ui.fittedView);
   ui.refitUntil = now + 1.5;
 }
 

@@ -27,5 +27,7 @@ ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window);
 // the caption, the legend and the Steps window); for `now` + 1.5 s a change of the
 // layout's room (the legend took its size) fits again
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now);
+// true while the camera is as the last fitScene left it (not panned, zoomed or turned since)
+bool viewAsFitted(const Model& model, const UiState& ui);
 
 }  // namespace convexloc::viewer

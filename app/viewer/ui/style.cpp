@@ -3,9 +3,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+
+#include "logic/base/glyphs.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -117,11 +120,18 @@ void loadFont(float pixels, bool recreateTexture) {
     ImFontConfig cfg;
     cfg.OversampleH = 2;
     cfg.OversampleV = 2;
-    // Latin-1, punctuation, super- and subscripts, arrows, mathematical operators
-    static const ImWchar ranges[] = {0x0020, 0x00FF, 0x2000, 0x209F, 0x2190, 0x21FF,
-                                     0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
-    // at the exact size (not rounded): a slide's text keeps its width at any page scale
-    if (io.Fonts->AddFontFromFileTTF(path, pixels, &cfg, ranges)) {
+    // at the exact size (not rounded): a slide's text keeps its width at any page scale;
+    // the ranges the captions' glyphs are checked against (logic/base/glyphs.hpp)
+    static const std::vector<ImWchar> ranges = [] {
+      std::vector<ImWchar> r;
+      for (const GlyphRange& g : fontGlyphRanges()) {
+        r.push_back(static_cast<ImWchar>(g.first));
+        r.push_back(static_cast<ImWchar>(g.last));
+      }
+      r.push_back(0);
+      return r;
+    }();
+    if (io.Fonts->AddFontFromFileTTF(path, pixels, &cfg, ranges.data())) {
       loaded = true;
       break;
     }

@@ -43,6 +43,9 @@ struct UiState {
   std::size_t compareSeen = 0;         // the comparison rows the Shape panel was last folded for
   double refitUntil = 0.0;  // until then a change of the layout's scene room refits the scene
   ScreenRect fittedScene;   // the room the camera was last fitted into
+  // the camera as the last fit left it (2D: centre, scale; 3D: target, distance, yaw,
+  // pitch): while it stays so, a new room (a Steps window, a taller legend) refits it
+  double fittedView[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   // the slide's layout this frame (ui/slide_frame): what the window's boxes and the SVG draw
   SlideLayout layout;
   TextBox splitHeadings[2];  // the split view's headings this frame (none: no lines)
@@ -89,8 +92,9 @@ struct UiState {
   SlideShow show;
   bool showNotes = false;       // the speaker notes' window (N)
   bool notesOwnWindow = false;  // they have a window of their own (else one inside this)
-  // a slide moved to by a key shows no hovered cell until the pointer moves
-  bool pointerStill = false;
+  // a slide moved to by a key, and the viewer just started, show no hovered cell until the
+  // pointer moves
+  bool pointerStill = true;
   SpraySettings sprayFollowed{~std::size_t{0}, 0, false};
 };
 

@@ -44,25 +44,10 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
   Scene2D& scene = model.scene2d;
   if (ignored(in)) {
     if (scene.hoverPoint()) scene.hover(std::nullopt);
+    scene.setSnapMark(std::nullopt);
     return;
   }
-  if (gesture_ == Gesture::None) {
-    if (in.wheel != 0.0) cam.zoomAt(in.pos, std::pow(kWheelZoom, in.wheel));
-    const auto v = scene.polygon().vertices();
-    const bool lines = model.lines2d.enabled();
-    const bool handles = !lines && model.settings.view2d.showHandles && v.size() <= kMaxHandles;
-    const std::ptrdiff_t grab =
-        in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
-    if (grab >= 0) {
-      scene.beginDrag(static_cast<std::size_t>(grab));
-      gesture_ = Gesture::DragVertex;
-    } else if (lines && in.pressed[0]) {
-      gesture_ = Gesture::DrawLine;
-      pressAt_ = in.pos;
-    } else {
-      startGesture(in);
-    }
-  }
+  if (gesture_ == Gesture::None) begin2d(in, model);
   switch (gesture_) {
     case Gesture::Pending: {
       const PressOutcome outcome = followPress(in, Gesture::Pan);
@@ -74,41 +59,109 @@ void Interaction::update2d(const PointerInput& in, Model& model) {
       cam.pan(in.delta);
       endWhenReleased(in);
       break;
-    case Gesture::DragVertex:
-      if (in.delta != glm::dvec2(0.0)) scene.dragTo(toVec2(cam.toWorld(in.pos)));
-      if (!in.down[0]) {
-        scene.endDrag();
-        gesture_ = Gesture::None;
-      }
-      break;
+    case Gesture::DragVertex: dragVertex(in, model); break;
     case Gesture::DrawLine: drawLine(in, model); break;
     case Gesture::None:
     case Gesture::Orbit: break;
   }
+  hover2d(in, model);
+}
+
+void Interaction::begin2d(const PointerInput& in, Model& model) {
+  Camera2D& cam = model.camera2d;
+  Scene2D& scene = model.scene2d;
+  if (in.wheel != 0.0) cam.zoomAt(in.pos, std::pow(kWheelZoom, in.wheel));
+  const auto v = scene.polygon().vertices();
+  const bool lines = model.lines2d.enabled();
+  const bool handles = !lines && model.settings.view2d.showHandles && v.size() <= kMaxHandles;
+  const std::ptrdiff_t grab =
+      in.pressed[0] && handles ? pickVertex(v, cam, in.pos, kGrabRadius) : -1;
+  if (grab >= 0) {
+    scene.beginDrag(static_cast<std::size_t>(grab));
+    gesture_ = Gesture::DragVertex;
+    pressAt_ = in.pos;
+    vertexMoved_ = false;
+  } else if (lines && in.pressed[0]) {
+    gesture_ = Gesture::DrawLine;
+    pressAt_ = in.pos;
+    lineStart_ = snapAt(in, model, std::nullopt, true).point;
+  } else {
+    startGesture(in);
+  }
+}
+
+void Interaction::dragVertex(const PointerInput& in, Model& model) {
+  Scene2D& scene = model.scene2d;
+  if (!scene.drag()) {
+    gesture_ = Gesture::None;
+    return;
+  }
+  vertexMoved_ = vertexMoved_ || glm::length(in.pos - pressAt_) > kClickSlop;
+  const std::size_t vertex = scene.drag()->vertex;
+  if (vertexMoved_ && (in.delta != glm::dvec2(0.0) || in.alt != lastAlt_))
+    scene.dragTo(snapAt(in, model, vertex, true).point);
+  lastAlt_ = in.alt;
+  if (in.down[0]) return;
+  scene.endDrag();
+  gesture_ = Gesture::None;
+  // a click on a vertex: the point placed on it, its very doubles (on the boundary)
+  if (!vertexMoved_) scene.place(scene.polygon().vertex(vertex));
+}
+
+void Interaction::hover2d(const PointerInput& in, Model& model) {
+  Scene2D& scene = model.scene2d;
+  const Camera2D& cam = model.camera2d;
+  const bool free = gesture_ == Gesture::None || gesture_ == Gesture::Pending;
   if (model.lines2d.enabled()) {
     if (scene.hoverPoint()) scene.hover(std::nullopt);
-  } else if (gesture_ == Gesture::None || gesture_ == Gesture::Pending)
+    if (free) scene.setSnapMark(snapAt(in, model, std::nullopt, true));
+  } else if (free) {
     scene.hover(toVec2(cam.toWorld(in.pos)));
-  else if (gesture_ == Gesture::Pan && scene.hoverPoint())
-    scene.hover(std::nullopt);
+    scene.setSnapMark(clickTarget(in, model, true));
+  } else if (gesture_ == Gesture::Pan) {
+    if (scene.hoverPoint()) scene.hover(std::nullopt);
+  }
+  if (gesture_ == Gesture::Pan) scene.setSnapMark(std::nullopt);
+  if (gesture_ == Gesture::DragVertex && scene.drag())
+    scene.setSnapMark(vertexMoved_ ? snapAt(in, model, scene.drag()->vertex, true) : Snap{});
+}
+
+Snap Interaction::snapAt(const PointerInput& in, const Model& model,
+                         std::optional<std::size_t> skip, bool grid) const {
+  const Camera2D& cam = model.camera2d;
+  const Vec2 w = toVec2(cam.toWorld(in.pos));
+  if (in.alt) return {w, SnapKind::None, 0, {}};
+  const Scene2D& scene = model.scene2d;
+  const double gridStep = grid ? niceGridStep(kGridPixels * cam.worldPerPixel()) : 0.0;
+  const SnapTargets targets{scene.polygon().vertices(), scene.centre(), gridStep, skip};
+  return snapPoint(w, targets, kSnapRadius * cam.worldPerPixel());
+}
+
+Snap Interaction::clickTarget(const PointerInput& in, const Model& model, bool markOnly) const {
+  const Snap shape = snapAt(in, model, std::nullopt, false);
+  if (shape.kind != SnapKind::None) return shape;
+  const Snap grid = snapAt(in, model, std::nullopt, true);
+  // the indicator needs no search of the spray where nothing snaps
+  if (markOnly && grid.kind == SnapKind::None) return grid;
+  const Scene2D& scene = model.scene2d;
+  const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(), model.settings.visibleMask,
+                                       model.camera2d, in.pos, kPickRadius);
+  if (hit >= 0) return {scene.points()[static_cast<std::size_t>(hit)], SnapKind::None, 0, {}};
+  return grid;
 }
 
 void Interaction::drawLine(const PointerInput& in, Model& model) {
-  // a press without a drag leaves the line as it was
-  if (glm::length(in.pos - pressAt_) > kClickSlop)
-    model.lines2d.setLine(toVec2(model.camera2d.toWorld(pressAt_)),
-                          toVec2(model.camera2d.toWorld(in.pos)));
+  // a press without a drag leaves the line as it was; both ends snap
+  const Snap end = snapAt(in, model, std::nullopt, true);
+  model.scene2d.setSnapMark(end);
+  if (glm::length(in.pos - pressAt_) > kClickSlop) model.lines2d.setLine(lineStart_, end.point);
   if (!in.down[0]) gesture_ = Gesture::None;
 }
 
 void Interaction::click2d(const PointerInput& in, Model& model) {
-  // on a sprayed point, that very point (its exact doubles); else the cursor
-  Scene2D& scene = model.scene2d;
-  const Camera2D& cam = model.camera2d;
-  const std::ptrdiff_t hit = pickPoint(scene.points(), scene.classes(), model.settings.visibleMask,
-                                       cam, in.pos, kPickRadius);
-  scene.place(hit >= 0 ? scene.points()[static_cast<std::size_t>(hit)]
-                       : toVec2(cam.toWorld(in.pos)));
+  // a snap (a vertex, an edge, the centre), a sprayed point (its exact doubles), a grid
+  // point, or the cursor
+  model.scene2d.place(clickTarget(in, model, false).point);
 }
 
 void Interaction::update3d(const PointerInput& in, Model& model) {

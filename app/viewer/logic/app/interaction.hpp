@@ -19,6 +19,7 @@ struct PointerInput {
   double wheel = 0.0;     // notches, positive away from the user
   bool captured = false;  // ImGui wants the mouse (io.WantCaptureMouse)
   bool shift = false;     // a Shift key is down
+  bool alt = false;       // an Alt key is down: placed freely, no snapping
   bool hovering = true;   // the cursor is over the window
 };
 
@@ -31,6 +32,10 @@ class Interaction {
   static constexpr double kPickRadius = 5.0;
   // zoom factor per wheel notch
   static constexpr double kWheelZoom = 1.2;
+  // how close (pixels) a position must be to a vertex, an edge, the centre or a grid point
+  // to snap to it, and the grid's least spacing (pixels)
+  static constexpr double kSnapRadius = 8.0;
+  static constexpr double kGridPixels = 80.0;
 
   void update(const PointerInput& in, Model& model);
 
@@ -44,6 +49,20 @@ class Interaction {
   void update2d(const PointerInput& in, Model& model);
   void update3d(const PointerInput& in, Model& model);
   void click2d(const PointerInput& in, Model& model);
+  // a press: a vertex grabbed, a line begun, or a click or pan pending
+  void begin2d(const PointerInput& in, Model& model);
+  // a grabbed vertex follows the snapped pointer; released without moving, the point is
+  // placed on the vertex
+  void dragVertex(const PointerInput& in, Model& model);
+  // the hovered cell and the snap indicator after the gesture
+  void hover2d(const PointerInput& in, Model& model);
+  // the pointer's world position snapped (none with Alt held); `skip` is no target
+  Snap snapAt(const PointerInput& in, const Model& model, std::optional<std::size_t> skip,
+              bool grid) const;
+  // where a click would place the point: a snap, else a sprayed point under the cursor
+  // (kind None, its exact doubles), else a grid point, else the cursor; `markOnly`: for the
+  // indicator, which skips the spray's search where no grid point is near
+  Snap clickTarget(const PointerInput& in, const Model& model, bool markOnly) const;
   void click3d(const PointerInput& in, Model& model);
   // the Lines mode: a left drag places the line from the press to the cursor
   void drawLine(const PointerInput& in, Model& model);
@@ -57,6 +76,9 @@ class Interaction {
   void endWhenReleased(const PointerInput& in);
   Gesture gesture_ = Gesture::None;
   glm::dvec2 pressAt_{0.0};
+  Vec2 lineStart_{};          // the snapped start of a line being drawn
+  bool vertexMoved_ = false;  // the grabbed vertex went past the click slop
+  bool lastAlt_ = false;      // Alt was down in the last frame (its change moves the vertex)
 };
 
 }  // namespace convexloc::viewer

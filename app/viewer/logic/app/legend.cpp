@@ -125,6 +125,15 @@ Legend legend2D(const Model& model) {
                          "crowded cell (bisection)"));
   if (opt.showStructure) structureRows(scene, pal, opt, g);
   if (opt.showBox) g.rows.push_back(line(pal.box, true, 1.2f, "bounding box"));
+  if (const std::size_t n = scene.droppedPoints().size())
+    g.rows.push_back({Swatch::Disc,
+                      pal.background,
+                      pal.textMuted,
+                      1.0f,
+                      std::to_string(n) + " input point" + (n == 1 ? "" : "s") +
+                          " dropped (repeated or collinear)",
+                      {},
+                      {}});
   // the paper's rule (Fig. 5): the smallest y-gap and what it costs, beside convexloc's
   if (opt.showGap) g.rows.push_back(line(pal.negative, true, 1.6f, yGapCostText(scene)));
   return g;

@@ -7,6 +7,7 @@
 #include "convexloc/generate2d.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/mesh_reader.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/scene/presets.hpp"
 #include "logic/teach/scaling_record.hpp"
 
@@ -400,6 +401,10 @@ void Model::fit(ScreenRect area) {
         box = {{std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)},
                {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
     }
+    // a zoom inset beside the polygon (tiny edges) is fitted in view too
+    if (const auto inset = tinyEdgesInset(scene2d.polygon()); inset && !lines2d.enabled())
+      box = {{std::min(box.lo.x, inset->frame.lo.x), std::min(box.lo.y, inset->frame.lo.y)},
+             {std::max(box.hi.x, inset->frame.hi.x), std::max(box.hi.y, inset->frame.hi.y)}};
     camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : box, area);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
@@ -422,7 +427,11 @@ void Model::fit(ScreenRect area) {
   if (planes3d.enabled()) {
     planes3d.sync(s);
     planes3d.placeDual(camera3d.right());
-    b = planes3d.both();
+    // the polyhedron and its dual side by side: fitted by their corners, filling the area
+    const DualPlace3D& at = planes3d.place();
+    const Bounds3 boxes[] = {planes3d.box(),
+                             {at.middle - glm::dvec3(at.scale), at.middle + glm::dvec3(at.scale)}};
+    return camera3d.fitCorners(boxes, area);
   }
   camera3d.fit(b, area);
 }

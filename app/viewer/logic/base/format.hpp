@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -30,6 +31,13 @@ std::string grouped(std::size_t n);
 // without spaces ("0.43", "-1.5e+07"), 0 for |v| < 1e-12 * scale (display only: the centre
 // (8.28e-21, 0, 0) of a cube of size 2 reads (0, 0, 0)) and for -0.
 std::string compact(double v, double scale = 0.0);
+// A message with its coordinates in the shortest digits that read back as the same doubles:
+// core names a vertex "(0.30000000000000004, 0.59999999999999998)", which reads here
+// "(0.30000000000000004, 0.6)". Only parenthesised lists of two or three numbers change.
+std::string shortestCoordinates(std::string_view message);
+// A typed number: the whole of `text` (spaces around allowed) read as the nearest double
+// ("0.1", "-2.5e-3", "1e9"); none for anything else, an overflow or a non-finite value.
+std::optional<double> parseNumber(std::string_view text);
 // "(x,y)" and "(x,y,z)" with compact(), no spaces
 std::string compact(Vec2 p, double scale = 0.0);
 std::string compact(Vec3 p, double scale = 0.0);

@@ -7,7 +7,10 @@
 #include <string>
 
 #include "logic/base/format.hpp"
+#include "logic/draw/radii_arc.hpp"
+#include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/y_gap.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/narration/steps.hpp"
 #include "logic/view/camera2d.hpp"
 
@@ -210,29 +213,33 @@ void hoveredCell(const Scene2D& scene, const Palette& pal, const View2DOptions& 
   }
 }
 
-// a circle around c of radius r (for the radii)
-void circle(glm::dvec2 c, double r, Rgba colour, float width, DrawList& out) {
-  constexpr int kSides = 96;
-  for (int k = 0; k < kSides; ++k) {
-    const double a0 = 2.0 * std::numbers::pi * k / kSides,
-                 a1 = 2.0 * std::numbers::pi * (k + 1) / kSides;
-    out.segment(at2(c + r * glm::dvec2(std::cos(a0), std::sin(a0))),
-                at2(c + r * glm::dvec2(std::cos(a1), std::sin(a1))), colour, width, 6.0f);
-  }
+// a dashed arc (or circle) through `points`
+void dashedPath(const std::vector<glm::dvec2>& points, Rgba colour, float width, DrawList& out) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k)
+    out.segment(at2(points[k]), at2(points[k + 1]), colour, width, 6.0f);
 }
 
 // polar: the cell's two radii around the centre x_T (inside within r_in, outside beyond
-// r_out), labelled when `current`
-void radiiCircles(const Trace2D& t, const Palette& pal, bool current, bool labels, DrawList& out) {
+// r_out), as arcs inside the cell's wedge (they hold for its points only), labelled at the
+// arcs' middles when `current`
+void radiiArcs(const Scene2D& scene, const Trace2D& t, const Palette& pal, bool current,
+               bool labels, DrawList& out) {
   const glm::dvec2 c = toGlm(t.apex);
+  const std::ptrdiff_t pos = cellPosition(scene, t.cell);
+  glm::dvec2 lo{0.0}, hi{0.0};
+  if (pos >= 0) {
+    const Cell2D& cell = scene.cells()[static_cast<std::size_t>(pos)];
+    lo = toGlm(cell.dirLo), hi = toGlm(cell.dirHi);
+  }
   const float w = current ? 2.0f : 1.0f;
   const float a = current ? 1.0f : 0.5f;
-  circle(c, t.innerRadius, withAlpha(pal.positive, a), w, out);
-  circle(c, t.outerRadius, withAlpha(pal.negative, a), w, out);
+  const auto inner = wedgeArc(c, t.innerRadius, lo, hi);
+  const auto outer = wedgeArc(c, t.outerRadius, lo, hi);
+  dashedPath(inner, withAlpha(pal.positive, a), w, out);
+  dashedPath(outer, withAlpha(pal.negative, a), w, out);
   if (current && labels) {
-    // r_in below the centre, r_out above it: the two circles may lie close
-    out.label(at2(c - glm::dvec2(0.0, t.innerRadius)), "r_in", pal.positive, {0.0f, -12.0f});
-    out.label(at2(c + glm::dvec2(0.0, t.outerRadius)), "r_out", pal.negative, {0.0f, -12.0f});
+    out.label(at2(inner[inner.size() / 2]), "r_in", pal.positive, {0.0f, 12.0f});
+    out.label(at2(outer[outer.size() / 2]), "r_out", pal.negative, {0.0f, -12.0f});
   }
 }
 
@@ -254,7 +261,7 @@ void probeTrace(const Scene2D& scene, const Probe& probe, const Palette& pal,
   const glm::dvec2 x = toGlm(probe.point);
   if (t.outsideBox) drawBox(poly.bounds(), pal.negative, 2.0f, out);
   // the radii, where they decided
-  if (t.byRadius) radiiCircles(t, pal, true, opt.showLabels, out);
+  if (t.byRadius) radiiArcs(scene, t, pal, true, opt.showLabels, out);
   // the cell the query chose
   const std::ptrdiff_t pos = cellPosition(scene, t.cell);
   if (pos >= 0) {
@@ -334,12 +341,16 @@ void stepOctant(const StepDraw& d, int octant, bool current) {
   const float w = current ? 2.5f : 1.25f;
   d.out.segment(at2(c), at2(toGlm(cells[octant * q].hitLo)), colour, w);
   d.out.segment(at2(c), at2(toGlm(cells[octant * q + q - 1].hitHi)), colour, w);
-  // the octant's number is the structure's own label (polarRays): not written a second time
+  // the structure names every octant already where it is drawn: named once
+  if (current && d.opt.showLabels && !d.opt.showStructure)
+    d.out.label(
+        at2(0.5 * (toGlm(cells[octant * q].hitLo) + toGlm(cells[octant * q + q - 1].hitHi))),
+        numbered("octant ", static_cast<std::uint64_t>(octant)), d.pal.hoverEdge);
 }
 
 // polar: the cell's two radii around the centre
 void stepRadii(const StepDraw& d, bool current) {
-  radiiCircles(d.t, d.pal, current, d.opt.showLabels, d.out);
+  radiiArcs(d.scene, d.t, d.pal, current, d.opt.showLabels, d.out);
 }
 
 // a ray from the apex through a vertex, by its sign
@@ -476,6 +487,11 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   if (opt.showCentre) markCentre(scene, pal, opt, out);
   vertexLabelsAndHandles(scene.polygon(), pal, opt, out);
   if (opt.showGap) drawYGap(scene, pal, out);
+  // degenerate cases that show: the input points normalisation dropped as hollow grey
+  // rings, tiny edges magnified beside the polygon, a far offset's digits over it
+  for (const Vec2 q : scene.droppedPoints())
+    out.marker(at2(toGlm(q)), pal.textMuted, 15.0f, MarkerShape::Ring);
+  drawDegenerateInsets(scene.polygon(), pal, out);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,
@@ -489,6 +505,7 @@ void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOption
       probeTrace(scene, *probe, pal, opt, out);
   }
   if (const auto& d = scene.drag()) dragMarker(scene, *d, pal, out);
+  snapIndicator(scene, pal, out);
 }
 
 }  // namespace convexloc::viewer

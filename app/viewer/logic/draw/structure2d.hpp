@@ -40,6 +40,7 @@ void buildOverlay2D(const Scene2D& scene, const Palette& palette, const View2DOp
                     DrawList& out);
 
 // the position in scene.cells() of the cell whose index is `index`, or -1
+
 std::ptrdiff_t cellPosition(const Scene2D& scene, std::int64_t index);
 
 // the part of the line through a and b inside the box, if any (drawing only)

@@ -6,6 +6,7 @@
 
 #include "logic/base/format.hpp"
 #include "logic/draw/cube_cells.hpp"
+#include "logic/draw/section_polygon.hpp"
 #include "logic/narration/steps.hpp"
 
 namespace convexloc::viewer {
@@ -231,7 +232,7 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
     for (int k = 0; k < 4; ++k) out.segment(r[k], r[(k + 1) % 4], pal.box, 1.25f, 6.0f);
     out.triangle(r[0], r[1], r[2], pal.slicePlane);
     out.triangle(r[0], r[2], r[3], pal.slicePlane);
-    buildSection(scene.section(), pal, out);
+    buildSection(scene.polyhedron(), scene.section(), pal, out);
   }
 }
 
@@ -248,15 +249,23 @@ void cubeEdges(glm::dvec3 ctr, double h, Rgba colour, float width, DrawList& out
   }
 }
 
-void buildSection(const Section& s, const Palette& pal, DrawList& out) {
+void buildSection(const ConvexPolyhedron& p, const Section& s, const Palette& pal, DrawList& out) {
+  // the inside as one polygon with straight sides, outlined
+  const std::vector<glm::dvec3> section = sectionPolygon(p, s.corner, s.du, s.dv);
+  const Rgba inside = withAlpha(colourOf(pal, Location::Inside), 0.6f);
+  for (std::size_t i = 1; i + 1 < section.size(); ++i)
+    out.triangle(section[0], section[i], section[i + 1], inside);
+  for (std::size_t i = 0; i < section.size(); ++i)
+    out.segment(section[i], section[(i + 1) % section.size()], colourOf(pal, Location::Inside),
+                2.0f);
+  // the samples core put exactly on the boundary, as squares in its colour
+  const Rgba boundary = withAlpha(colourOf(pal, Location::Boundary), 0.95f);
   for (std::uint32_t j = 0; j < s.n; ++j)
     for (std::uint32_t i = 0; i < s.n; ++i) {
-      const Location l = s.classes[static_cast<std::size_t>(j) * s.n + i];
-      if (l == Location::Outside) continue;
-      const Rgba c = withAlpha(colourOf(pal, l), l == Location::Inside ? 0.6f : 0.95f);
+      if (s.classes[static_cast<std::size_t>(j) * s.n + i] != Location::Boundary) continue;
       const glm::dvec3 a = s.corner + static_cast<double>(i) * s.du + static_cast<double>(j) * s.dv;
-      out.triangle(a, a + s.du, a + s.du + s.dv, c);
-      out.triangle(a, a + s.du + s.dv, a + s.dv, c);
+      out.triangle(a, a + s.du, a + s.du + s.dv, boundary);
+      out.triangle(a, a + s.du + s.dv, a + s.dv, boundary);
     }
 }
 

@@ -36,9 +36,11 @@ void buildStructure3D(const Scene3D& scene, const Palette& palette, const View3D
 // the 12 edges of the cube of half-side `half` around `centre` (the cube a cube map's cells
 // are drawn on)
 void cubeEdges(glm::dvec3 centre, double half, Rgba colour, float width, DrawList& out);
-// the section's samples core found inside or on the boundary, as squares in their class's
-// colour (the slicing plane's, and the Planes mode's)
-void buildSection(const Section& section, const Palette& palette, DrawList& out);
+// the section of `polyhedron` on the section's plane as one straight-sided polygon in the
+// inside colour, and the samples core found exactly on the boundary as squares (the slicing
+// plane's, and the Planes mode's)
+void buildSection(const ConvexPolyhedron& polyhedron, const Section& section,
+                  const Palette& palette, DrawList& out);
 
 // the cube faces (bit f for +x, -x, +y, -y, +z, -z) whose plane has `eye` on its inner side
 unsigned farCubeFaces(const Scene3D& scene, glm::dvec3 eye);

@@ -68,13 +68,14 @@ void dualCell(const CubemapLocator& cube, const DualPlace3D& at, const Cell3D& c
 }
 
 // the plane's patch and, where it meets the polyhedron, the section core classifies on it
-void planePatch(const PlaneProbe3D& p, const Palette& pal, DrawList& out) {
+void planePatch(const Planes3D& planes, const PlaneProbe3D& p, const Palette& pal, DrawList& out) {
   const auto& patch = p.patch;
   for (std::size_t i = 0; i < patch.size(); ++i)
     out.segment(patch[i], patch[(i + 1) % patch.size()], pal.box, 1.25f, 6.0f);
   for (std::size_t i = 1; i + 1 < patch.size(); ++i)
     out.triangle(patch[0], patch[i], patch[i + 1], pal.slicePlane);
-  if (p.dual.crossing != Crossing::Misses) buildSection(p.section, pal, out);
+  if (p.dual.crossing != Crossing::Misses && planes.polyhedron())
+    buildSection(*planes.polyhedron(), p.section, pal, out);
 }
 
 // the direction y and -y in the dual view, the ray from c* through y
@@ -160,7 +161,7 @@ void buildPlanes3D(const Planes3D& planes, const Palette& pal, bool labels, Draw
   if (labels) captions(planes, pal, overlay);
   const auto& p = planes.plane();
   if (!p) return;
-  planePatch(*p, pal, solid);
+  planePatch(planes, *p, pal, solid);
   const auto& cells = planes.dualCells();
   if (cube && p->cellDown >= 0 && static_cast<std::size_t>(p->cellDown) < cells.size())
     dualCell(*cube, at, cells[static_cast<std::size_t>(p->cellDown)], p->listedDown,

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "convexloc/text_reader.hpp"
+#include "logic/base/format.hpp"
 #include "logic/view/picking.hpp"
 
 namespace convexloc::viewer {
@@ -61,6 +62,7 @@ Scene2D::Scene2D() {
 
 bool Scene2D::adopt(ConvexPolygon polygon, std::string label, bool fresh) {
   if (!swapShape(std::move(polygon), std::move(label), fresh)) return false;
+  dropped_.clear();
   // a new shape gets a new spray (same count, seed and kind, in its box); an edited one
   // keeps its points, which rebuildLocator has classified again
   if (fresh && !points_.empty()) spray(spray_);
@@ -74,8 +76,15 @@ bool Scene2D::adoptShape(ConvexPolygon polygon, std::string label) {
 
 bool Scene2D::setShape(std::span<const Vec2> points, std::string label,
                        std::span<const std::size_t> lines, const std::string& source) {
-  return guarded(source,
-                 [&] { return adoptShape(ConvexPolygon(points, lines), std::move(label)); });
+  if (!guarded(source, [&] { return adoptShape(ConvexPolygon(points, lines), std::move(label)); }))
+    return false;
+  // the input points that are no vertex now, to be drawn as dropped
+  std::vector<bool> kept(points.size(), false);
+  for (const std::uint32_t i : shape_->sourceIndex())
+    if (i < kept.size()) kept[i] = true;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!kept[i]) dropped_.push_back(points[i]);
+  return true;
 }
 
 bool Scene2D::generate(PolygonKind kind, std::size_t n, std::uint64_t seed) {
@@ -126,6 +135,17 @@ void Scene2D::hover(std::optional<Vec2> p) {
   }
 }
 
+// === Snap indicator
+
+void Scene2D::setSnapMark(std::optional<Snap> s) {
+  if (s && s->kind == SnapKind::None) s.reset();
+  const bool same = s.has_value() == snapMark_.has_value() &&
+                    (!s || (s->kind == snapMark_->kind && s->point == snapMark_->point));
+  if (same) return;
+  snapMark_ = s;
+  ++versions_.overlay;
+}
+
 // === Drag
 
 void Scene2D::beginDrag(std::size_t i) {
@@ -165,7 +185,7 @@ bool Scene2D::dragTo(Vec2 p) {
     return true;
   } catch (const Error& e) {
     drag_->rejected = true;
-    drag_->message = countedFromZero(e.what());
+    drag_->message = shortestCoordinates(countedFromZero(e.what()));
   }
   return false;
 }

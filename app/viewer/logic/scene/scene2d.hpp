@@ -15,6 +15,7 @@
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
 #include "logic/scene/scene_common.hpp"
+#include "logic/view/snap.hpp"
 
 namespace convexloc::viewer {
 
@@ -64,6 +65,9 @@ class Scene2D : public SceneState<Traits2D> {
   // a generated polygon (core's generators); false and error() on a bad argument
   bool generate(PolygonKind kind, std::size_t n, std::uint64_t seed);
   const ConvexPolygon& polygon() const { return *shape_; }
+  // the input points of the last setShape that normalisation dropped (repeated, or on the
+  // segment between two vertices), none after a file, a generator's shape or a drag
+  std::span<const Vec2> droppedPoints() const { return dropped_; }
 
   // === Method
   // the resolution the locator actually uses (core's choice when 0 was asked): slabs
@@ -88,6 +92,10 @@ class Scene2D : public SceneState<Traits2D> {
   void endDrag();
   const std::optional<Drag>& drag() const { return drag_; }
 
+  // === Snap indicator: what the pointer's position snaps to (drawn over the scene), or none
+  void setSnapMark(std::optional<Snap> s);
+  const std::optional<Snap>& snapMark() const { return snapMark_; }
+
  private:
   void cellsChanged() override;
   bool adoptShape(ConvexPolygon polygon, std::string label) override;
@@ -97,6 +105,8 @@ class Scene2D : public SceneState<Traits2D> {
   std::ptrdiff_t hovered_ = -1;
   std::optional<Vec2> hoverPoint_;
   std::optional<Drag> drag_;
+  std::optional<Snap> snapMark_;
+  std::vector<Vec2> dropped_;
 };
 
 }  // namespace convexloc::viewer

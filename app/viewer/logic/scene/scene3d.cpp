@@ -60,12 +60,23 @@ bool Scene3D::setMesh(const MeshData& mesh, std::string label, const std::string
   return guarded(source, [&] { return adoptShape(ConvexPolyhedron(mesh), std::move(label)); });
 }
 
+std::string generatedLabel(PolyhedronKind kind, const ConvexPolyhedron& p, std::uint64_t seed) {
+  // the faces it has (planes, as every count the viewer shows), not the count asked for
+  std::string label = std::string(toString(kind)) + ", " + std::to_string(p.planeCount()) +
+                      (p.planeCount() == 1 ? " face" : " faces");
+  if (p.faceCount() != p.planeCount())
+    label += " (" + std::to_string(p.faceCount()) + " triangles)";
+  const bool random = kind == PolyhedronKind::SphereHull || kind == PolyhedronKind::CubeHull ||
+                      kind == PolyhedronKind::EllipsoidHull;
+  if (random) label += ", seed " + std::to_string(seed);
+  return label;
+}
+
 bool Scene3D::generate(PolyhedronKind kind, std::size_t n, std::uint64_t seed) {
   return guarded("", [&] {
-    const MeshData mesh = generatePolyhedron(kind, n, seed);
-    std::string label = std::string(toString(kind));
-    label += ", about " + std::to_string(n) + " faces, seed " + std::to_string(seed);
-    return setMesh(mesh, std::move(label));
+    ConvexPolyhedron p(generatePolyhedron(kind, n, seed));
+    std::string label = generatedLabel(kind, p, seed);
+    return adoptShape(std::move(p), std::move(label));
   });
 }
 

@@ -69,6 +69,10 @@ struct Traits3D
 // how many faces the cells of a 3D method list at the least (the base of the tint)
 inline constexpr std::size_t kBaseFacesPerCell = 1;
 
+// "dodecahedron, 12 faces (36 triangles)": a generated shape by its plane faces (the
+// triangles where they differ), with the seed where the kind is random
+std::string generatedLabel(PolyhedronKind kind, const ConvexPolyhedron& p, std::uint64_t seed);
+
 // The 3D scene: SceneState over a convex polyhedron, plus the slicing plane and its
 // section, and the hovered and the pinned cell.
 class Scene3D : public SceneState<Traits3D> {

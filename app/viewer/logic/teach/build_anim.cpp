@@ -147,4 +147,11 @@ std::size_t buildStepCount(const Scene3D& scene) {
   return scene.cells().empty() ? 0 : scene.polyhedron().planeCount();
 }
 
+void appendBuildStep(DrawList& structure, const DrawList& step) {
+  structure.fills.insert(structure.fills.end(), step.fills.begin(), step.fills.end());
+  structure.segments.insert(structure.segments.end(), step.segments.begin(), step.segments.end());
+  structure.markers.insert(structure.markers.end(), step.markers.begin(), step.markers.end());
+  structure.labels.insert(structure.labels.begin(), step.labels.begin(), step.labels.end());
+}
+
 }  // namespace convexloc::viewer

@@ -73,6 +73,10 @@ void buildAnimation2D(const Scene2D& scene, std::size_t step, const Palette& pal
 // cells crossed, the label "fK added: k of F faces". Nothing without cells.
 void buildAnimation3D(const Scene3D& scene, std::size_t step, unsigned farFaces,
                       const Palette& palette, DrawList& out);
+// Adds a build step's drawing to the structure's: its fills, lines and marks drawn over the
+// structure, its labels placed first ("e8 added" wins its spot before the vertex numbers,
+// which are placed in order and would crowd it out).
+void appendBuildStep(DrawList& structure, const DrawList& step);
 // the build animation's steps for a scene: its edges or faces, or 0 when its method has no cells
 std::size_t buildStepCount(const Scene2D& scene);
 std::size_t buildStepCount(const Scene3D& scene);

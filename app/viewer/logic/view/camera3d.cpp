@@ -74,6 +74,33 @@ void Camera3D::fit(const Bounds3& box, ScreenRect area) {
   areaShift_ = area.middle() - 0.5 * viewport_;
 }
 
+void Camera3D::fitCorners(std::span<const Bounds3> boxes, ScreenRect area) {
+  if (boxes.empty()) return;
+  Bounds3 all = boxes[0];
+  for (const Bounds3& b : boxes) all = {glm::min(all.lo, b.lo), glm::max(all.hi, b.hi)};
+  fit(all, area);  // the target, the area's shift and a distance that surely holds them
+  const glm::dvec2 size = area.size();
+  if (!(size.x > 0.0) || !(size.y > 0.0)) return;
+  const double tanY = std::tan(0.5 * fovY_) * size.y / viewport_.y;
+  const double tanX = std::tan(0.5 * fovY_) * size.x / viewport_.y;
+  const glm::dvec3 f = forward(), s = right(), u = up();
+  double needed = 0.0, nearest = 0.0;
+  for (int k = 0; k < 8 * static_cast<int>(boxes.size()); ++k) {
+    const Bounds3& box = boxes[static_cast<std::size_t>(k / 8)];
+    const glm::dvec3 corner{(k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y,
+                            (k & 4) ? box.hi.z : box.lo.z};
+    const glm::dvec3 c = corner - target_;
+    const double depth = glm::dot(c, f);  // beyond the target: positive
+    // the corner at depth distance + depth must project within the area's half-angles
+    needed = std::max(
+        {needed, std::abs(glm::dot(c, s)) / tanX - depth, std::abs(glm::dot(c, u)) / tanY - depth});
+    nearest = std::max(nearest, -depth);
+  }
+  // a margin, and the eye never among the corners
+  const double d = std::max(1.04 * needed, 1.5 * nearest);
+  if (d > 0.0 && d < distance_) distance_ = d;
+}
+
 glm::dmat4 Camera3D::viewFromLocal(glm::dvec3 origin) const {
   const glm::dvec3 f = forward(), s = right(), u = up();
   const glm::dvec3 e = eye() - origin;

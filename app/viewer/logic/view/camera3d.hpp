@@ -2,6 +2,8 @@
 // yaw about the world's z axis and tilted by pitch. Double precision throughout.
 #pragma once
 
+#include <span>
+
 #include <glm/glm.hpp>
 
 #include "logic/view/camera2d.hpp"
@@ -61,6 +63,10 @@ class Camera3D {
   void zoom(double factor);
   // looks at the box's middle from a distance at which its bounding sphere fills `area`
   void fit(const Bounds3& box, ScreenRect area);
+  // looks at the middle of the boxes' union from the nearest distance at which the corners
+  // of every box, seen as the camera is turned now, lie in `area` (the polyhedron and its
+  // dual beside it then fill a wide area, not their bounding sphere's square)
+  void fitCorners(std::span<const Bounds3> boxes, ScreenRect area);
 
   // window pixel of a world point
   Projected toScreen(glm::dvec3 world) const;

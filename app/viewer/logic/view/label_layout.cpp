@@ -21,8 +21,12 @@ constexpr double kGap = 5.0;
 constexpr double kRingStep = 9.0;
 // labels keep this many pixels apart
 constexpr double kPad = 3.0;
-// what a candidate one ring farther out costs, in line cells covered
-constexpr int kRingCost = 3;
+// what a candidate one ring farther out costs, in line cells covered: a label leaves its
+// anchor only for much freer room (a number two rings out reads as another vertex's)
+constexpr int kRingCost = 10;
+// what a candidate nearer to another marker than to its own anchor costs: it would read as
+// that marker's label
+constexpr int kStrayCost = 60;
 // what a cell under a window counts: more than a label's worth of line cells
 constexpr unsigned char kBlocked = 200;
 // the cells a SegmentGrid walks at most (well under a millisecond)
@@ -54,6 +58,20 @@ int conflicts(const LabelPlacement& c, const std::vector<LabelPlacement>& placed
   for (const PixelDisc& m : markers)
     if (boxCoversDisc(c, m) && (++n, stopAtFirst)) return n;
   return n;
+}
+
+// the gap between a placed box and a point
+double gapTo(const LabelPlacement& c, glm::dvec2 p) {
+  const glm::dvec2 lo = c.centre - 0.5 * c.size, hi = c.centre + 0.5 * c.size;
+  return glm::length(glm::clamp(p, lo, hi) - p);
+}
+
+// true when the candidate lies nearer to some marker than to its own anchor
+bool strays(const LabelPlacement& c, glm::dvec2 anchor, std::span<const PixelDisc> markers) {
+  const double own = gapTo(c, anchor);
+  for (const PixelDisc& m : markers)
+    if (gapTo(c, m.centre) + 0.5 < own) return true;
+  return false;
 }
 
 }  // namespace
@@ -151,7 +169,8 @@ std::vector<LabelPlacement> placeLabels(std::span<const LabelRequest> labels,
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       const LabelPlacement& c = candidates[k];
       if (conflicts(c, placed, markers, area, true) != 0) continue;
-      const int over = lines ? lines->covered(c) + kRingCost * rings[k] : 0;
+      const int over = (lines ? lines->covered(c) + kRingCost * rings[k] : 0) +
+                       (strays(c, l.anchor, markers) ? kStrayCost : 0);
       if (over < fewest) {
         fewest = over;
         placed[i] = c;

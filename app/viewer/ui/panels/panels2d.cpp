@@ -8,6 +8,7 @@
 
 #include "logic/dual/lines2d.hpp"
 #include "ui/panels/method_panels.hpp"
+#include "ui/panels/typed_coords.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/widgets.hpp"
 
@@ -127,6 +128,7 @@ bool inspectable2D(Model& model) {
 }
 
 constexpr const char* kHints2D[] = {"drag: pan, wheel: zoom, click: place a point",
+                                    "points snap to vertices, edges, x_T, a grid; Alt: free",
                                     "F fit, H hide panels, 1-5 method, Space spray",
                                     "L lines mode: drag to place a line", nullptr};
 
@@ -178,9 +180,9 @@ void inspector2D(Model& model, bool hints) {
 }  // namespace
 
 const ScenePanels& panels2D() {
-  static constexpr ScenePanels kPanels = {shapePanel2D,  methodPanel2D, nullptr,       nullptr,
-                                          pointsPanel2D, true,          viewOptions2D, legend2D,
-                                          inspector2D,   inspectable2D, kHints2D};
+  static constexpr ScenePanels kPanels = {
+      shapePanel2D,  methodPanel2D, "Coordinates", typedCoordinates2D, pointsPanel2D, true,
+      viewOptions2D, legend2D,      inspector2D,   inspectable2D,      kHints2D};
   return kPanels;
 }
 

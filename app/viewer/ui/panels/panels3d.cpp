@@ -9,7 +9,9 @@
 #include <imgui.h>
 
 #include "logic/dual/dual_view3d.hpp"
+#include "logic/view/snap.hpp"
 #include "ui/panels/method_panels.hpp"
+#include "ui/panels/typed_coords.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/widgets.hpp"
 
@@ -110,11 +112,14 @@ void planesControls(Model& model) {
                                "offset %.4g");
   moved |= angleSlider("##planeAzimuth", "azimuth %.1f deg", s.azimuth, -180.0, 180.0);
   moved |= angleSlider("##planeElevation", "elevation %.1f deg", s.elevation, -90.0, 90.0);
+  // typed, or stepped exactly on a grid of about a twentieth of the reach
+  moved |= steppedField("##planeOffsetTyped", s.offset, niceGridStep(reach / 20.0));
   if (ImGui::SmallButton("Through the centre")) {
     s.offset = 0.0;
     moved = true;
   }
   if (moved) planes.setSliders(s);
+  typedPlane3D(model);
   ImGui::TextDisabled("method:");
   for (const PlaneMethod m : kAllPlaneMethods) {
     ImGui::SameLine();
@@ -181,6 +186,7 @@ void slicePanel3D(Model& model) {
   if (ImGui::SliderScalar("##offset", ImGuiDataType_Double, &s.offset, &lo, &hi, "%.6g"))
     changed = true;
   if (changed) scene.setSlice(s);
+  typedSliceOffset(model);
   ImGui::Checkbox("show the plane and its section", &model.settings.view3d.showSlice);
   ImGui::TextDisabled("click on the plane to place a point");
 }

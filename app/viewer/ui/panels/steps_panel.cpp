@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "logic/view/label_layout.hpp"
+#include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
