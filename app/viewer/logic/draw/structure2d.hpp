@@ -9,6 +9,7 @@
 
 #include "logic/base/colour.hpp"
 #include "logic/base/draw_list.hpp"
+#include "logic/draw/clip2d.hpp"
 #include "logic/scene/scene2d.hpp"
 
 namespace convexloc::viewer {
@@ -43,10 +44,5 @@ void buildOverlay2D(const Scene2D& scene, const Palette& palette, const View2DOp
 
 std::ptrdiff_t cellPosition(const Scene2D& scene, std::int64_t index);
 
-// the part of the line through a and b inside the box, if any (drawing only)
-bool clipLineToBox(glm::dvec2 a, glm::dvec2 b, const Box2& box, glm::dvec2& p, glm::dvec2& q);
-
-// the box grown by `fraction` of its size on each side
-Box2 grow(const Box2& b, double fraction);
 
 }  // namespace convexloc::viewer

@@ -177,13 +177,15 @@ void inspector2D(Model& model, bool hints) {
   splitInspector(model);  // the split view's right half
 }
 
+// the 2D scene's panels, in the window's order
+constexpr ScenePanels kPanels2D = {shapePanel2D,  methodPanel2D, "Coordinates", typedCoordinates2D,
+                                   pointsPanel2D, true,          viewOptions2D, legend2D,
+                                   inspector2D,   inspectable2D, kHints2D};
+
 }  // namespace
 
 const ScenePanels& panels2D() {
-  static constexpr ScenePanels kPanels = {
-      shapePanel2D,  methodPanel2D, "Coordinates", typedCoordinates2D, pointsPanel2D, true,
-      viewOptions2D, legend2D,      inspector2D,   inspectable2D,      kHints2D};
-  return kPanels;
+  return kPanels2D;
 }
 
 }  // namespace convexloc::viewer
