@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "convexloc/detail/chars.hpp"
 #include "convexloc/error.hpp"
 
 namespace convexloc::viewer {
@@ -36,7 +37,7 @@ void sampleLines(const char* dim, const std::vector<SeriesOf<Method>>& series, s
 
 // a finite double, whole
 bool readDouble(const std::string& s, double& out) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+  const auto r = detail::doubleFromChars(s.data(), s.data() + s.size(), out);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(out);
 }
 
