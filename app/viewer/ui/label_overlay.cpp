@@ -67,7 +67,18 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
     return std::nullopt;
   const Scene3D& scene = model.scene3d();
   const auto& cells = scene.cells();
-  const std::optional<CubeInset> inset = cubeMapInset(cells);
+  // the patch, found again only when the cells change (a scan of every cell)
+  static struct {
+    const void* cells = nullptr;
+    std::uint64_t structure = ~0ull;
+    std::optional<CubeInset> inset;
+  } found;
+  if (found.cells != &cells || found.structure != scene.versions().structure) {
+    found.inset = cubeMapInset(cells);
+    found.cells = &cells;
+    found.structure = scene.versions().structure;
+  }
+  const std::optional<CubeInset>& inset = found.inset;
   const auto centre = scene.centre();
   if (!inset || !centre) return std::nullopt;
   // the cube on screen: the box of its eight corners

@@ -13,7 +13,7 @@ namespace {
 // a leaf at most this fraction of a base cell wide is too small to see: the inset shows it
 constexpr double kRefinedShare = 1.0 / 16.0;
 // the patch is this many smallest leaves wide at the least
-constexpr double kLeavesAcross = 4.0;
+constexpr double kLeavesAcross = 16.0;
 
 double sideOf(const Cell3D& c) {
   return c.s1 - c.s0;
@@ -103,7 +103,7 @@ std::optional<PixelBox> placeCubeInset(PixelBox area, PixelBox avoid,
   constexpr double kMargin = 12.0, kMin = 120.0;
   const PixelBox kept{avoid.lo - kMargin, avoid.hi + kMargin};
   const double height = area.hi.y - area.lo.y;
-  for (double side = 0.4 * height; side >= kMin; side *= 0.9)
+  for (double side = 0.4 * height; side >= kMin; side *= 0.95)
     for (int corner = 0; corner < 4; ++corner) {
       // upper right, upper left, lower right, lower left: the frame with its text's room
       const bool right = corner % 2 == 0, upper = corner < 2;

@@ -35,7 +35,7 @@ struct CubeInset {
 };
 
 // The inset where some leaf is at most 1/16 of a base cell wide: the patch around the
-// smallest leaves (on the cube face of the first of them) about 4 of them wide, its side a
+// smallest leaves (on the cube face of the first of them) at least 16 of them wide, its side a
 // cube face's side over 1, 2 or 5 times a power of ten; none for cells not refined that far.
 std::optional<CubeInset> cubeMapInset(std::span<const Cell3D> cells);
 
