@@ -53,7 +53,8 @@ TEST(CubeInset, TinyFacesShowsItsRefinedLeavesMagnified) {
   std::size_t meeting = 0, deep = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const Cell3D& c = cells[k];
-    const bool listed = std::find(inset->cells.begin(), inset->cells.end(), k) != inset->cells.end();
+    const bool listed =
+        std::find(inset->cells.begin(), inset->cells.end(), k) != inset->cells.end();
     EXPECT_EQ(listed, meets(*inset, c)) << "cell " << k;
     meeting += meets(*inset, c);
     deep += listed && sideOf(c) < base / 64.0;
@@ -117,8 +118,9 @@ TEST(CubeInset, DrawnInItsFrameWithTitleZoomAndLeader) {
 TEST(CubeInset, PlacedOffTheCubeAndTheLegend) {
   const cv::PixelBox area{{0.0, 100.0}, {1600.0, 900.0}};
   const cv::PixelBox cube{{400.0, 150.0}, {1000.0, 850.0}};
+  const glm::dvec2 corners[] = {cube.lo, {cube.hi.x, cube.lo.y}, cube.hi, {cube.lo.x, cube.hi.y}};
   const cv::PixelBox legend[] = {{{1300.0, 600.0}, {1590.0, 890.0}}};
-  const auto frame = cv::placeCubeInset(area, cube, legend, {250.0, 30.0});
+  const auto frame = cv::placeCubeInset(area, corners, legend, {250.0, 30.0});
   ASSERT_TRUE(frame);
   EXPECT_NEAR(frame->hi.x - frame->lo.x, frame->hi.y - frame->lo.y, 1e-9);
   EXPECT_GE(frame->hi.x - frame->lo.x, 120.0);
@@ -126,8 +128,17 @@ TEST(CubeInset, PlacedOffTheCubeAndTheLegend) {
   EXPECT_FALSE(overlap(outer, cube));
   EXPECT_FALSE(overlap(outer, legend[0]));
   EXPECT_GT(frame->lo.x, cube.hi.x);  // the upper right corner had room
+  // a diamond filling the area's box: the corners beside its sides are free
+  const glm::dvec2 diamond[] = {{800.0, 100.0}, {1600.0, 500.0}, {800.0, 900.0}, {0.0, 500.0}};
+  const auto beside = cv::placeCubeInset(area, diamond, {}, {150.0, 20.0});
+  ASSERT_TRUE(beside);
+  // upper right, clear of the side from (800, 100) to (1600, 500) by the margin
+  EXPECT_GT(beside->lo.x, 800.0);
+  const glm::dvec2 far{beside->lo.x, beside->hi.y + 20.0};  // the outer box's nearest corner
+  const glm::dvec2 n = glm::normalize(glm::dvec2(-400.0, 800.0));
+  EXPECT_LE(glm::dot(far - glm::dvec2(800.0, 100.0), n), -12.0 + 1e-9);
   // nowhere free: no inset
-  const cv::PixelBox everything{{0.0, 0.0}, {1600.0, 900.0}};
+  const glm::dvec2 everything[] = {{0.0, 0.0}, {1600.0, 0.0}, {1600.0, 900.0}, {0.0, 900.0}};
   EXPECT_FALSE(cv::placeCubeInset(area, everything, {}, {250.0, 30.0}));
 }
 

@@ -81,24 +81,21 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
   const std::optional<CubeInset>& inset = found.inset;
   const auto centre = scene.centre();
   if (!inset || !centre) return std::nullopt;
-  // the cube on screen: the box of its eight corners
+  // the cube on screen: its eight corners
   const ScreenProjection project = sceneProjection(model);
   const double h = scene.cubeHalfSize();
-  PixelBox cube{glm::dvec2(INFINITY), glm::dvec2(-INFINITY)};
+  std::vector<glm::dvec2> cube;
   for (int k = 0; k < 8; ++k) {
-    const glm::dvec3 corner = toGlm(*centre) + h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1,
-                                                               k & 4 ? 1 : -1);
-    if (const auto p = project(corner)) {
-      cube.lo = glm::min(cube.lo, glm::dvec2(*p));
-      cube.hi = glm::max(cube.hi, glm::dvec2(*p));
-    }
+    const glm::dvec3 corner =
+        toGlm(*centre) + h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    if (const auto p = project(corner)) cube.emplace_back(*p);
   }
   const glm::dvec2 vp = model.camera3d.viewport();
   const ScreenRect area = sceneArea(model, ui, vp);
-  if (!(cube.lo.x <= cube.hi.x)) return std::nullopt;
+  if (cube.size() < 8) return std::nullopt;  // a corner behind the eye
   const double room = 1.6 * measureText("Ag").y;
-  const double wide = std::max(measureText(cubeInsetTitle(*inset)).x,
-                               measureText(cubeInsetZoomText(*inset)).x);
+  const double wide =
+      std::max(measureText(cubeInsetTitle(*inset)).x, measureText(cubeInsetZoomText(*inset)).x);
   const std::vector<PixelBox> keepOff = labelKeepOffs(ui);
   const auto frame = placeCubeInset({area.lo, area.hi}, cube, keepOff, {wide + 8.0, room});
   if (!frame) return std::nullopt;
@@ -113,7 +110,9 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
 }
 
 void paintScreenList(const DrawList& list, ImDrawList* dl, const Palette& pal) {
-  const auto v = [](glm::dvec3 p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); };
+  const auto v = [](glm::dvec3 p) {
+    return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y));
+  };
   // the fills without anti-aliasing: a fringe would draw each triangle's diagonal
   const ImDrawListFlags flags = dl->Flags;
   dl->Flags &= ~ImDrawListFlags_AntiAliasedFill;

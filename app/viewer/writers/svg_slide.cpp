@@ -148,8 +148,8 @@ void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) 
   }
   for (const Label& l : list.labels)
     out += "  <text x=\"" + num(l.p.x) + "\" y=\"" + num(l.p.y) +
-           "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
-           num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
+           "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(s.fontPixels) +
+           "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
            paint("fill", readableOn(l.colour, s.background, s.text)) + ">" + xmlEscape(l.text) +
            "</text>\n";
   out += "</g>\n";

@@ -23,6 +23,31 @@ bool overlaps(const PixelBox& a, const PixelBox& b) {
   return a.lo.x < b.hi.x && b.lo.x < a.hi.x && a.lo.y < b.hi.y && b.lo.y < a.hi.y;
 }
 
+// Whether the box keeps `gap` off the convex hull of `points`: some axis (x, y, or normal to
+// the line through two of the points, which includes the hull's edges) parts them by it.
+bool keepsOff(const PixelBox& box, std::span<const glm::dvec2> points, double gap) {
+  if (points.empty()) return true;
+  const glm::dvec2 corners[4] = {box.lo, {box.hi.x, box.lo.y}, box.hi, {box.lo.x, box.hi.y}};
+  const auto parted = [&](glm::dvec2 axis) {
+    const double length = glm::length(axis);
+    if (!(length > 0.0)) return false;
+    axis /= length;
+    double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
+    for (const glm::dvec2& c : corners)
+      a0 = std::min(a0, glm::dot(c, axis)), a1 = std::max(a1, glm::dot(c, axis));
+    for (const glm::dvec2& p : points)
+      b0 = std::min(b0, glm::dot(p, axis)), b1 = std::max(b1, glm::dot(p, axis));
+    return a1 + gap <= b0 || b1 + gap <= a0;
+  };
+  if (parted({1.0, 0.0}) || parted({0.0, 1.0})) return true;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = i + 1; j < points.size(); ++j) {
+      const glm::dvec2 d = points[j] - points[i];
+      if (parted({-d.y, d.x})) return true;
+    }
+  return false;
+}
+
 // "1", "-0.5", "0.9999": a coordinate in few digits
 std::string shortNumber(double v) {
   char text[32];
@@ -40,8 +65,9 @@ std::optional<CubeInset> cubeMapInset(std::span<const Cell3D> cells) {
   if (cells.empty()) return std::nullopt;
   CubeInset inset;
   inset.baseSide = sideOf(cells.front()) * std::ldexp(1.0, cells.front().level);
-  const auto smallest = std::min_element(
-      cells.begin(), cells.end(), [](const Cell3D& a, const Cell3D& b) { return sideOf(a) < sideOf(b); });
+  const auto smallest =
+      std::min_element(cells.begin(), cells.end(),
+                       [](const Cell3D& a, const Cell3D& b) { return sideOf(a) < sideOf(b); });
   inset.smallestSide = sideOf(*smallest);
   if (!(inset.smallestSide > 0.0) || inset.smallestSide > kRefinedShare * inset.baseSide)
     return std::nullopt;
@@ -98,10 +124,9 @@ glm::dvec3 cubeInsetAnchor(const CubeInset& inset, std::span<const Cell3D> cells
          (m.y - wide->t0) / (wide->t1 - wide->t0) * (c3 - c0);
 }
 
-std::optional<PixelBox> placeCubeInset(PixelBox area, PixelBox avoid,
+std::optional<PixelBox> placeCubeInset(PixelBox area, std::span<const glm::dvec2> avoid,
                                        std::span<const PixelBox> keepOff, glm::dvec2 text) {
   constexpr double kMargin = 12.0, kMin = 120.0;
-  const PixelBox kept{avoid.lo - kMargin, avoid.hi + kMargin};
   const double height = area.hi.y - area.lo.y;
   for (double side = 0.4 * height; side >= kMin; side *= 0.95)
     for (int corner = 0; corner < 4; ++corner) {
@@ -112,7 +137,8 @@ std::optional<PixelBox> placeCubeInset(PixelBox area, PixelBox avoid,
       outer.lo.x = right ? area.hi.x - kMargin - size.x : area.lo.x + kMargin;
       outer.lo.y = upper ? area.lo.y + kMargin : area.hi.y - kMargin - size.y;
       outer.hi = outer.lo + size;
-      if (outer.lo.x < area.lo.x || outer.lo.y < area.lo.y || overlaps(outer, kept)) continue;
+      if (outer.lo.x < area.lo.x || outer.lo.y < area.lo.y || !keepsOff(outer, avoid, kMargin))
+        continue;
       if (std::any_of(keepOff.begin(), keepOff.end(),
                       [&](const PixelBox& k) { return !k.empty() && overlaps(outer, k); }))
         continue;

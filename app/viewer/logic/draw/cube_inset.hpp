@@ -26,8 +26,8 @@ struct CubeInset {
   int cubeFace = 0;
   glm::dvec2 lo{0.0};  // the patch: a square of side `side` from lo, inside [-1, 1]^2
   double side = 2.0;
-  double baseSide = 2.0;      // a base cell's side (2 / G)
-  double smallestSide = 2.0;  // the smallest leaf's side
+  double baseSide = 2.0;           // a base cell's side (2 / G)
+  double smallestSide = 2.0;       // the smallest leaf's side
   std::vector<std::size_t> cells;  // positions in cells() of the cells meeting the patch
   int mantissa = 1;                // the magnification, a cube face's side over the patch's:
   int exponent = 0;                // mantissa * 10^exponent, mantissa 1, 2 or 5
@@ -49,10 +49,11 @@ glm::dvec3 cubeInsetAnchor(const CubeInset& inset, std::span<const Cell3D> cells
 
 // A square frame for the inset in window pixels, `text.y` free above and below it for the
 // title and the zoom, their width `text.x` centred over it: the largest (up to 40% of the
-// area's height, at least 120 pixels) in a corner of `area` that keeps 12 pixels off `avoid`
-// (the cube on screen) and meets none of `keepOff` (the legend, the slide's boxes), the
-// upper right corner first at each size. None where none fits.
-std::optional<PixelBox> placeCubeInset(PixelBox area, PixelBox avoid,
+// area's height, at least 120 pixels) in a corner of `area` that keeps 12 pixels off the
+// convex hull of `avoid` (the cube's corners on screen) and meets none of `keepOff` (the
+// legend, the slide's boxes), the upper right corner first at each size. None where none
+// fits.
+std::optional<PixelBox> placeCubeInset(PixelBox area, std::span<const glm::dvec2> avoid,
                                        std::span<const PixelBox> keepOff, glm::dvec2 text);
 
 // The inset in window pixels (points (x, y, 0), t upward): the frame's background and
