@@ -10,6 +10,7 @@
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
 #include "logic/draw/cube_inset.hpp"
+#include "writers/svg_writer.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Cell3D;
@@ -113,6 +114,35 @@ TEST(CubeInset, DrawnInItsFrameWithTitleZoomAndLeader) {
   EXPECT_EQ(outside, 1u + 8u);
   EXPECT_GE(out.segments.size(), 4u * inset->cells.size() + 4u + 9u);
   for (const cv::FillVertex& v : out.fills) EXPECT_TRUE(in(v.p));
+}
+
+TEST(CubeInset, TheSvgWritesItInWindowPixelsOverTheScene) {
+  cv::Model m;
+  ASSERT_TRUE(m.applyPreset("tiny-faces")) << m.error();
+  const auto& cells = m.scene3d().cells();
+  const auto inset = cv::cubeMapInset(cells);
+  ASSERT_TRUE(inset);
+  cv::DrawList list;
+  cv::drawCubeInset(*inset, cells, cv::paletteFor(cv::Theme::Light),
+                    {{600.0, 100.0}, {900.0, 400.0}}, 30.0, std::nullopt, list);
+  cv::SvgScene s;
+  s.size = {1000.0, 600.0};
+  // a projection far off the window: the inset must not go through it
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p + glm::dvec3(5000.0); };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.screen = {&list};
+  const std::string svg = cv::sceneSvg(s);
+  const std::size_t group = svg.find("<g class=\"inset\"");
+  ASSERT_NE(group, std::string::npos);
+  EXPECT_NE(svg.find(">" + cv::cubeInsetTitle(*inset) + "</text>", group), std::string::npos);
+  EXPECT_NE(svg.find("zoom \u00D7", group), std::string::npos);
+  // the frame's top left corner, as given
+  EXPECT_NE(svg.find("x1=\"600.00\" y1=\"100.00\"", group), std::string::npos);
+  std::size_t polygons = 0;
+  for (std::size_t at = svg.find("<polygon points", group); at != std::string::npos;
+       at = svg.find("<polygon points", at + 1))
+    ++polygons;
+  EXPECT_EQ(polygons, list.fills.size() / 3);
 }
 
 TEST(CubeInset, PlacedOffTheCubeAndTheLegend) {
