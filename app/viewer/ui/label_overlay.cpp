@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "logic/draw/cube_inset.hpp"
 #include "logic/view/scene_labels.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/scene_area.hpp"
@@ -60,9 +61,92 @@ std::vector<PixelBox> labelKeepOffs(const UiState& ui) {
   return boxes;
 }
 
+std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) {
+  if (model.dim != Dim::Three || !model.hasScene3d() || model.planes3d.enabled() ||
+      !model.settings.view3d.showCube)
+    return std::nullopt;
+  const Scene3D& scene = model.scene3d();
+  const auto& cells = scene.cells();
+  // the patch, found again only when the cells change (a scan of every cell)
+  static struct {
+    const void* cells = nullptr;
+    std::uint64_t structure = ~0ull;
+    std::optional<CubeInset> inset;
+  } found;
+  if (found.cells != &cells || found.structure != scene.versions().structure) {
+    found.inset = cubeMapInset(cells);
+    found.cells = &cells;
+    found.structure = scene.versions().structure;
+  }
+  const std::optional<CubeInset>& inset = found.inset;
+  const auto centre = scene.centre();
+  if (!inset || !centre) return std::nullopt;
+  // the cube on screen: its eight corners
+  const ScreenProjection project = sceneProjection(model);
+  const double h = scene.cubeHalfSize();
+  std::vector<glm::dvec2> cube;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 corner =
+        toGlm(*centre) + h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+    if (const auto p = project(corner)) cube.emplace_back(*p);
+  }
+  const glm::dvec2 vp = model.camera3d.viewport();
+  const ScreenRect area = sceneArea(model, ui, vp);
+  if (cube.size() < 8) return std::nullopt;  // a corner behind the eye
+  const double room = 1.6 * measureText("Ag").y;
+  const double wide =
+      std::max(measureText(cubeInsetTitle(*inset)).x, measureText(cubeInsetZoomText(*inset)).x);
+  const std::vector<PixelBox> keepOff = labelKeepOffs(ui);
+  const auto frame = placeCubeInset({area.lo, area.hi}, cube, keepOff, {wide + 8.0, room});
+  if (!frame) return std::nullopt;
+  ScreenInset out;
+  out.box = {frame->lo - glm::dvec2(0.0, room), frame->hi + glm::dvec2(0.0, room)};
+  std::optional<glm::dvec2> anchor;
+  if (const auto a = project(cubeInsetAnchor(*inset, cells))) anchor = glm::dvec2(*a);
+  drawCubeInset(*inset, cells, paletteFor(model.settings.theme), *frame, room, anchor, out.list);
+  // lines as wide as the scene's are drawn
+  for (Segment& g : out.list.segments) g.width *= static_cast<float>(model.settings.drawScale());
+  return out;
+}
+
+void paintScreenList(const DrawList& list, ImDrawList* dl, const Palette& pal) {
+  const auto v = [](glm::dvec3 p) {
+    return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y));
+  };
+  // the fills without anti-aliasing: a fringe would draw each triangle's diagonal
+  const ImDrawListFlags flags = dl->Flags;
+  dl->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  for (std::size_t t = 0; t + 2 < list.fills.size(); t += 3)
+    dl->AddTriangleFilled(v(list.fills[t].p), v(list.fills[t + 1].p), v(list.fills[t + 2].p),
+                          packAbgr(list.fills[t].colour));
+  dl->Flags = flags;
+  for (const Segment& g : list.segments) {
+    const double length = glm::length(g.b - g.a);
+    if (g.dash <= 0.0f || !(length > 0.0)) {
+      dl->AddLine(v(g.a), v(g.b), packAbgr(g.colour), g.width);
+      continue;
+    }
+    // dashes `dash` long, gaps as long
+    for (double d = 0.0; d < length; d += 2.0 * g.dash)
+      dl->AddLine(v(g.a + (d / length) * (g.b - g.a)),
+                  v(g.a + (std::min(d + g.dash, length) / length) * (g.b - g.a)),
+                  packAbgr(g.colour), g.width);
+  }
+  for (const Label& l : list.labels) {
+    const ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
+    const ImVec2 at(std::round(static_cast<float>(l.p.x) - 0.5f * size.x),
+                    std::round(static_cast<float>(l.p.y) - 0.5f * size.y));
+    dl->AddText(at, packAbgr(readableOn(l.colour, pal.background, pal.text)), l.text.c_str());
+  }
+}
+
 void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
-  const std::vector<PixelBox> windows = labelKeepOffs(ui);
+  std::vector<PixelBox> windows = labelKeepOffs(ui);
+  if (const auto inset = cubeInsetOver(model, ui)) {
+    paintScreenList(inset->list, dl, paletteFor(model.settings.theme));
+    windows.push_back(inset->box);
+  }
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
   const ScreenRect area = sceneArea(model, ui, vp);

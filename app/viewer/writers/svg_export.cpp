@@ -144,6 +144,12 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
       s.legendCorner = area.hi - glm::dvec2(10.0);
     }
   }
+  // the cube map's zoom inset, where the window draws it; the labels keep off it
+  const std::optional<ScreenInset> inset = cubeInsetOver(model, ui);
+  if (inset) {
+    s.screen.push_back(&inset->list);
+    s.keepOff.push_back(inset->box);
+  }
   if (model.dim == Dim::Two)
     scene2d(model, view, ui, s);
   else

@@ -133,6 +133,28 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
 
 }  // namespace
 
+void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) {
+  out += "<g class=\"inset\" stroke-linecap=\"butt\">\n";
+  const auto pt = [](glm::dvec3 p) { return num(p.x) + "," + num(p.y); };
+  for (std::size_t t = 0; t + 2 < list.fills.size(); t += 3)
+    out += "  <polygon points=\"" + pt(list.fills[t].p) + " " + pt(list.fills[t + 1].p) + " " +
+           pt(list.fills[t + 2].p) + "\"" + paint("fill", list.fills[t].colour) + "/>\n";
+  for (const Segment& g : list.segments) {
+    out += "  <line x1=\"" + num(g.a.x) + "\" y1=\"" + num(g.a.y) + "\" x2=\"" + num(g.b.x) +
+           "\" y2=\"" + num(g.b.y) + "\"" + paint("stroke", g.colour) + " stroke-width=\"" +
+           num(g.width) + "\"";
+    if (g.dash > 0.0f) out += " stroke-dasharray=\"" + num(g.dash) + "\"";
+    out += "/>\n";
+  }
+  for (const Label& l : list.labels)
+    out += "  <text x=\"" + num(l.p.x) + "\" y=\"" + num(l.p.y) +
+           "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(s.fontPixels) +
+           "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
+           paint("fill", readableOn(l.colour, s.background, s.text)) + ">" + xmlEscape(l.text) +
+           "</text>\n";
+  out += "</g>\n";
+}
+
 void writeLetterbox(const SvgScene& s, std::string& out) {
   const ScreenRect& p = s.page;
   if (p.hi.x <= p.lo.x || (p.lo.x <= 0.5 && p.lo.y <= 0.5)) return;

@@ -24,6 +24,9 @@ namespace convexloc::viewer {
 // the bars beside `scene.page` (none when the page is empty or fills the picture)
 void writeLetterbox(const SvgScene& scene, std::string& out);
 
+// a draw list in window pixels, unprojected, as a group: fills, segments (widths as given),
+// labels centred at their points
+void writeScreenList(const SvgScene& scene, const DrawList& list, std::string& out);
 // the layout's title card, caption and Steps window, each a group of a box and its lines
 void writeSlideBoxes(const SvgScene& scene, std::string& out);
 

@@ -441,6 +441,7 @@ std::string sceneSvg(const SvgScene& s) {
     writeLabels(s, out);
   }
   writeNote(s, out, visible, stride);
+  for (const DrawList* l : s.screen) writeScreenList(s, *l, out);
   writeLetterbox(s, out);
   writeSlideBoxes(s, out);
   if (s.legend) writeLegend(s, out);

@@ -89,6 +89,8 @@ struct SvgScene {
   PixelBox labelArea;             // the scene area: labels stay in it
   std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
   Rgba textMuted;                 // the legend's counts and subtitle
+  // drawn over the labels in window pixels, unprojected (the 3D cube map's zoom inset)
+  std::vector<const DrawList*> screen;
 };
 
 // the whole SVG document
