@@ -345,6 +345,25 @@ TEST(Lecture, AShowUiSlideShowsThePanelsForItselfAlone) {
   EXPECT_FALSE(m.settings.showUi);
 }
 
+// a show opened at a later slide (--slide K, the web page's link to a slide) has the first
+// slide's look all the same
+TEST(Lecture, AShowOpenedAtALaterSlideHasTheLecturesLook) {
+  const cv::ParsedLecture p = cv::parseLecture(
+      "slide A\ntheme light\nfont-scale 2\nhide-ui\nslide B\nmethod wedge\nslide C\n",
+      "t.lecture");
+  ASSERT_TRUE(p.clean()) << joined(p);
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  ASSERT_EQ(show.go(m, 1), "");
+  EXPECT_EQ(show.current, 1u);
+  EXPECT_EQ(m.settings.theme, cv::Theme::Light);
+  EXPECT_EQ(m.settings.fontScale, 2.0f);
+  EXPECT_FALSE(m.settings.showUi);
+  ASSERT_EQ(show.go(m, 2), "");
+  EXPECT_EQ(m.settings.theme, cv::Theme::Light);
+}
+
 TEST(Lecture, ALaterSlidesTextSizeIsItsOwn) {
   const cv::ParsedLecture p = cv::parseLecture(
       "slide A\nfont-scale 2\ntheme light\nslide B\nfont-scale 1.25\nslide C\n", "t.lecture");

@@ -353,6 +353,8 @@ std::string SlideShow::go(Model& model, std::ptrdiff_t k) {
   }
   const std::ptrdiff_t last = static_cast<std::ptrdiff_t>(lecture.slides.size()) - 1;
   current = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, last));
+  if (!lookTaken && current > 0) showSlide(model, lecture, 0);  // the lecture's look
+  lookTaken = true;
   if (current > 0 && std::any_of(std::begin(kLookKeys), std::end(kLookKeys),
                                  [this](std::string_view key) { return slide().gives(key); }))
     lookBefore = Look{model.settings.theme, model.settings.fontScale, model.settings.showUi,

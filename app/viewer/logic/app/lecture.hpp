@@ -104,6 +104,9 @@ struct SlideShow {
   Lecture lecture;
   std::size_t current = 0;
   std::optional<Look> lookBefore;
+  // the first slide's look applied: a show that opens at a later slide (--slide K, a link to
+  // a slide, an export whose first slide is bad) takes it first
+  bool lookTaken = false;
   // the slides whose problems the lecturer dismissed (index; the lecture's own: slides' size)
   std::vector<bool> dismissed;
   bool blank = false;  // the screen blanked (B), as PowerPoint does

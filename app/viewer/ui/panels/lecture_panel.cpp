@@ -87,6 +87,7 @@ bool startLecture(Model& model, UiState& ui, const Options& options, bool headle
   }
   for (const std::string& p : parsed.problems) std::cerr << "convexloc-viewer: " << p << "\n";
   ui.show.lecture = std::move(parsed.lecture);
+  ui.show.lookTaken = false;
   ui.show.dismissed.clear();
   // --export writes the good slides; a window shows the first, its problems over it
   const std::size_t first = options.exportDir.empty() ? 0 : ui.show.goodFrom(0);
