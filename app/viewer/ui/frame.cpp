@@ -83,7 +83,7 @@ void hints(const Model& model) {
 // window appeared, a pinned cell made the legend taller)
 void refitOnNewRoom(Model& model, const UiState& ui, glm::dvec2 window, double now) {
   if (now >= ui.refitUntil && !viewAsFitted(model, ui)) return;
-  const ScreenRect room = fitRoom(model, ui, window);
+  const ScreenRect room = fitRoom(model, ui, window, &ui.layout);
   const glm::dvec2 d =
       glm::abs(room.lo - ui.fittedScene.lo) + glm::abs(room.hi - ui.fittedScene.hi);
   if (d.x + d.y > 2.0) model.requestFit();

@@ -46,9 +46,10 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
   return std::min(330.0f * fs, static_cast<float>(0.26 * window.x));
 }
 
-ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window) {
+ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
+                   const SlideLayout* thisFrame) {
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
-  if (!split) return frameLayout(model, ui, window).scene;
+  if (!split) return thisFrame ? thisFrame->scene : frameLayout(model, ui, window).scene;
   // the split view's halves share the whole area (its Steps window stays over it), below
   // the halves' headings (logic/teach/slide_layout's splitHeading: 2.2 body heights high)
   ScreenRect room = frameLayout(model, ui, window, false).scene;

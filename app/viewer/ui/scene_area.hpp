@@ -20,8 +20,10 @@ ScreenRect pageArea(const Model& model, const UiState& ui, glm::dvec2 window);
 ScreenRect sceneArea(const Model& model, const UiState& ui, glm::dvec2 window);
 
 // the room the camera fits the shape into: the slide layout's (ui/slide_frame), or in the
-// split view the whole area below the halves' headings
-ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window);
+// split view the whole area below the halves' headings; `thisFrame`, when given, is the
+// layout already made for this frame and window (not laid out again)
+ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
+                   const SlideLayout* thisFrame = nullptr);
 
 // fits the camera to the shape in the slide layout's room for the scene (beside the card,
 // the caption, the legend and the Steps window); for `now` + 1.5 s a change of the
