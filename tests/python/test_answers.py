@@ -96,7 +96,8 @@ def test_2d_trace_agrees_with_locate(method):
     for p, code in zip(points, codes):
         trace = locator.trace(p)
         assert trace["result"] == code
-        assert trace["location"] == convexloc.NAMES[code]
+        assert trace["location"] is convexloc.Location(code)  # the value locate gives
+        assert trace["location_name"] == convexloc.NAMES[code]
         assert trace["method"] == method
 
 

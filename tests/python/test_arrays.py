@@ -96,7 +96,7 @@ def test_wrong_shape_is_value_error(polar, bad, pattern):
     (np.array([["a", "b"]]), r"strings"),
     (np.array([[True, False]]), r"boolean"),
     (np.array([[1 + 2j, 0]]), r"complex"),
-    ([[object(), 1.0]], r"Python objects"),
+    ([[object(), 1.0]], r"points\[0, 0\] = <object object at .*> \(dtype object\)"),
     (None, r"Python objects"),
     ({"x": 1}, r"Python objects"),
 ])

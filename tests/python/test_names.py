@@ -64,13 +64,13 @@ def test_every_public_callable_has_a_signature():
     (convexloc.Polygon, "(vertices)"),
     (convexloc.Polyhedron, "(vertices, faces)"),
     (convexloc.Polygon.hull, "(points)"),
-    (convexloc.PolarLocator.locate, "(self, points, *, workers=-1, threads=None)"),
-    (convexloc.CubemapLocator.locate_xyz, "(self, x, y, z, *, workers=-1, threads=None)"),
+    (convexloc.PolarLocator.locate, "(self, points, *, workers=1, threads=None)"),
+    (convexloc.CubemapLocator.locate_xyz, "(self, x, y, z, *, workers=1, threads=None)"),
     (convexloc.SlabLocator.trace, "(self, point, *, radii=True)"),
-    (convexloc.covers, "(polygon, points, *, workers=-1, threads=None)"),
-    (convexloc.hull_contains, "(cloud, points, *, workers=-1, threads=None, boundary=None)"),
+    (convexloc.covers, "(polygon, points, *, workers=1, threads=None)"),
+    (convexloc.hull_contains, "(cloud, points, *, workers=1, threads=None, boundary=None)"),
     (convexloc.read_polygon, "(path)"),
-    (convexloc.locate_chunks, "(source, locator, *, chunk=1048576, out=None, progress=None, workers=-1)"),
+    (convexloc.locate_chunks, "(source, locator, *, chunk=1048576, out=None, progress=None, workers=1)"),
 ])
 def test_signatures_read_as_written(target, expected):
     assert _without_annotations(target) == expected

@@ -14,7 +14,7 @@ def test_polygon_normalises():
     p = convexloc.Polygon(clockwise)
     assert len(p) == 4 and p.was_clockwise and p.dropped_count == 1
     assert p.vertices.shape == (4, 2) and p.vertices.dtype == np.float64
-    assert p.bounds == ((0.0, 0.0), (1.0, 1.0))
+    assert p.bounds == (0.0, 0.0, 1.0, 1.0)  # Shapely's order
     assert p.area == pytest.approx(1.0)
     assert p.source_index.dtype == np.int64
     assert "4 vertices" in repr(p)
@@ -49,7 +49,7 @@ def test_polyhedron_from_faces():
         assert box.face_count == 12 and box.vertex_count == 8
         assert box.volume == pytest.approx(1.0) and box.area == pytest.approx(6.0)
         assert box.triangles.shape == (12, 3) and box.neighbours.shape == (12, 3)
-        assert box.bounds == ((0.0, 0.0, 0.0), (1.0, 1.0, 1.0))
+        assert box.bounds == (0.0, 0.0, 0.0, 1.0, 1.0, 1.0)
         assert len(box.centre) == 3
     # mixed face sizes: a ragged list
     pyramid = convexloc.Polyhedron([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.5, 0.5, 1]],

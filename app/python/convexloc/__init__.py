@@ -87,6 +87,7 @@ read_polygon = _signed(_core.read_polygon)
 read_polyhedron = _signed(_core.read_polyhedron)
 
 from . import types  # noqa: E402
+from .render import figure, figure_svg, plot, svg  # noqa: E402  (matplotlib: only when called)
 from .chunks import iter_locate, locate_chunks  # noqa: E402  (it uses the tables above)
 from .types import (  # noqa: E402
     Cell2D,
@@ -99,6 +100,16 @@ from .types import (  # noqa: E402
     UniformStep,
 )
 
+
+def _repr_svg_(self):
+    """The notebook's picture of a shape or locator: convexloc.svg(self)."""
+    return svg(self)
+
+
+for _cls in (Polygon, Polyhedron, *LOCATORS_2D.values(), *LOCATORS_3D.values()):
+    _cls._repr_svg_ = _repr_svg_
+del _cls
+
 __all__ = [
     "Location", "BOUNDARY", "INSIDE", "OUTSIDE", "NAMES", "LOCATORS_2D", "LOCATORS_3D",
     "Error", "FileError", "GeometryError", "ParseError", "UsageError",
@@ -108,4 +119,5 @@ __all__ = [
     "iter_locate", "locate_chunks",
     "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
     "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
+    "plot", "figure", "svg", "figure_svg",
 ]

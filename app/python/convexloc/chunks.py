@@ -10,7 +10,7 @@ from __future__ import annotations
 import itertools
 import os
 import warnings
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any, Optional, Union
 
 import numpy as np
@@ -29,8 +29,19 @@ Codes = npt.NDArray[np.int8]
 Floats = npt.NDArray[np.float64]
 
 
+def geo_polygon(value: Any) -> Any:
+    """`value` as a Polygon when it is a geometry (an object with __geo_interface__, such as a
+    Shapely polygon, or a GeoJSON mapping); anything else as it is."""
+    if isinstance(value, (Polygon, Polyhedron)):
+        return value
+    if hasattr(value, "__geo_interface__") or isinstance(value, Mapping):
+        return Polygon(value)
+    return value
+
+
 def _locator(shape_or_locator: Any) -> Any:
     """A locator as given, or the O(1) one of a shape (polar, cubemap)."""
+    shape_or_locator = geo_polygon(shape_or_locator)
     if isinstance(shape_or_locator, Polygon):
         return LOCATORS_2D["polar"](shape_or_locator)
     if isinstance(shape_or_locator, Polyhedron):
@@ -117,9 +128,10 @@ def _chunks(source: Source, chunk: int, dims: int) -> tuple[Iterator[Any], Optio
 
 
 def iter_locate(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
-                progress: Optional[Progress] = None, workers: int = -1) -> Iterator[Codes]:
+                progress: Optional[Progress] = None, workers: int = 1) -> Iterator[Codes]:
     """Yields the int8 codes of each chunk of `source` in turn (see the module's docstring),
-    located by `locator` (a locator, or a Polygon / Polyhedron for its O(1) locator).
+    located by `locator` (a locator, or a Polygon / Polyhedron for its O(1) locator; a Shapely
+    polygon or a GeoJSON mapping is made a Polygon).
     progress(done, total) is called after each chunk: points located so far, and the total
     when the source knows it (an array, a .npy file), else None."""
     if chunk < 1:
@@ -138,7 +150,7 @@ def iter_locate(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
 
 def locate_chunks(source: Source, locator: Any, *, chunk: int = DEFAULT_CHUNK,
                   out: Optional[Codes] = None, progress: Optional[Progress] = None,
-                  workers: int = -1) -> Codes:
+                  workers: int = 1) -> Codes:
     """The int8 codes of every point of `source`, located chunk by chunk (see iter_locate):
     written into `out` when given (an int8 array of the points' count, e.g. a np.memmap, so
     that nothing grows with the input), else returned as a new array."""

@@ -33,6 +33,7 @@ asarray: Callable[..., Array] = _array.asarray
 map_blocks: Callable[..., Array] = _array.map_blocks
 
 from . import LOCATORS_2D, LOCATORS_3D, Polygon, Polyhedron
+from .chunks import geo_polygon
 
 __all__ = ["locate", "locate_dataframe", "build_counts"]
 
@@ -68,7 +69,9 @@ def _table(dims: int) -> dict[str, Any]:
 
 def spec_of(shape_or_locator: Any, method: str | None = None) -> LocatorSpec:
     """The spec of a Polygon or Polyhedron with a method name (None: polar or cubemap), or of
-    a locator (then method must be None or the locator's own)."""
+    a locator (then method must be None or the locator's own). A Shapely polygon or a GeoJSON
+    mapping is made a Polygon first."""
+    shape_or_locator = geo_polygon(shape_or_locator)
     if isinstance(shape_or_locator, (Polygon, Polyhedron)):
         dims = 2 if isinstance(shape_or_locator, Polygon) else 3
         table = _table(dims)

@@ -2,12 +2,15 @@
 dicts trace(), stats() and cells() return (every key is always present)."""
 
 import os
-from typing import TypedDict, Union
+from typing import Any, Mapping, Protocol, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["ArrayLike", "PathLike", "Codes", "Floats", "Indices", "Bools",
+from . import Location
+from ._core import Polygon
+
+__all__ = ["ArrayLike", "PathLike", "GeoInterface", "PolygonLike", "Codes", "Floats", "Indices", "Bools",
            "UniformStep", "PolarStep", "Trace2D", "Stats2D", "Cell2D",
            "Trace3D", "Stats3D", "Cell3D"]
 
@@ -15,6 +18,18 @@ __all__ = ["ArrayLike", "PathLike", "Codes", "Floats", "Indices", "Bools",
 ArrayLike = npt.ArrayLike
 #: a path: str or os.PathLike
 PathLike = Union[str, "os.PathLike[str]"]
+
+class GeoInterface(Protocol):
+    """Anything with a __geo_interface__ (Shapely geometries, GeoPandas rows, convexloc's shapes)."""
+
+    @property
+    def __geo_interface__(self) -> Mapping[str, Any]: ...
+
+
+#: what every function and class taking a polygon takes: a Polygon, an object with a Polygon
+#: __geo_interface__ (a Shapely polygon), a GeoJSON mapping (Polygon, Feature, one-part
+#: MultiPolygon; z dropped), or the (N, 2) vertices
+PolygonLike = Union[Polygon, GeoInterface, Mapping[str, Any], ArrayLike]
 #: the int8 Location codes locate() returns
 Codes = npt.NDArray[np.int8]
 #: coordinates
@@ -48,7 +63,8 @@ class _TraceCommon(TypedDict):
 
     method: str
     result: int
-    location: str
+    location: Location      # the same value locate() gives, an IntEnum
+    location_name: str      # its name in words: "inside", "boundary" or "outside"
     crowded: bool
     at_centre: bool
     by_radius: bool

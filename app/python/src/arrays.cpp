@@ -107,6 +107,24 @@ void requireLossless(const py::array& any, const char* what) {
                         "); convexloc does not round its input: pass float64 values");
 }
 
+// a Python float, or an int that a double holds exactly (ValueError naming `where` otherwise)
+double exactDouble(const py::handle& value, const std::string& where) {
+  if (PyFloat_Check(value.ptr())) return PyFloat_AsDouble(value.ptr());
+  const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!number) throw py::error_already_set();
+  const double d = PyLong_AsDouble(number.ptr());
+  if (d == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw py::value_error(where + " = " + std::string(py::str(number)) +
+                          " is beyond the largest float64; convexloc does not round its input");
+  }
+  if (py::int_(py::float_(d)).equal(number)) return d;
+  throw py::value_error(where + " = " + std::string(py::str(number)) +
+                        " is not exactly a float64 (the nearest is " +
+                        std::string(py::repr(py::float_(d))) +
+                        "); convexloc does not round its input: pass float64 values");
+}
+
 // TypeError for a masked array with any element masked (numpy.asarray would drop the mask)
 void refuseMasked(const py::object& values, const char* what) {
   const py::module_ ma = numpy().attr("ma");
@@ -115,6 +133,34 @@ void refuseMasked(const py::object& values, const char* what) {
   throw py::type_error(std::string(what) +
                        ": a masked array with masked elements (their values are not points); "
                        "keep the unmasked points or pass .filled(numpy.nan) (NaN is OUTSIDE)");
+}
+
+// "<NA>" for pandas' NA and None: a missing value, not a number
+bool missingValue(const py::handle& value) {
+  return value.is_none() || std::string(py::str(value.get_type().attr("__name__"))) == "NAType";
+}
+
+// An object array of Python numbers (what numpy makes of a list holding an int beyond int64,
+// or of a pandas nullable column) as float64, each value exactly a double; a missing value,
+// a non-number or an int no double holds is an error naming the element.
+py::array objectNumbers(const py::array& objects, const char* what) {
+  const std::vector<py::ssize_t> shape(objects.shape(), objects.shape() + objects.ndim());
+  py::array_t<double> out(shape);
+  double* to = out.mutable_data();
+  const py::object flat = objects.attr("flat");
+  py::ssize_t k = 0;
+  for (const py::handle value : py::iter(flat)) {
+    const std::string where = std::string(what) + elementText(shape, k);
+    if (missingValue(value))
+      throw py::type_error(where + " is a missing value (" + std::string(py::str(value)) +
+                           "): every point needs numbers; drop those rows (.dropna()) or pass "
+                           ".to_numpy(dtype=float, na_value=numpy.nan) (NaN is OUTSIDE)");
+    if (PyBool_Check(value.ptr()) || !(PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr())))
+      throw py::type_error(std::string(what) + " must be numbers (integer or float), got " +
+                           where + " = " + std::string(py::repr(value)) + " (dtype object)");
+    to[k++] = exactDouble(value, where);
+  }
+  return out;
 }
 
 }  // namespace
@@ -134,6 +180,7 @@ py::array numberArray(const py::object& values, const char* what) {
     if (!e.matches(PyExc_ValueError)) throw;
     throw py::value_error(std::string(what) + ": " + py::str(e.value()).cast<std::string>());
   }
+  if (any.dtype().kind() == 'O' && any.ndim() > 0) any = objectNumbers(any, what);
   requireNumbers(any, what);
   requireLossless(any, what);
   return any;
@@ -187,22 +234,18 @@ unsigned workerCount(const py::object& workers, const py::object& threads) {
   constexpr long long kMost = 4096;
   const long long cores = std::max(1u, std::thread::hardware_concurrency());
   if (!threads.is_none()) {
-    if (!(workers.is_none() ||
-          (py::isinstance<py::int_>(workers) && workers.cast<long long>() == -1)))
-      throw py::type_error("give workers= or its old name threads=, not both");
+    if (!workers.is_none()) throw py::type_error("give workers= or its old name threads=, not both");
     PyErr_WarnEx(PyExc_DeprecationWarning,
                  "threads= is now workers= (as scipy names it; -1 for every core)", 1);
     const long long t =
         integerArgument(threads, "threads", 0, kMost, "from 0 (every core) to 4096");
     return static_cast<unsigned>(t);
   }
-  const long long w = integerArgument(workers, "workers", -kMost, kMost,
-                                      "a thread count from 1 to 4096, or -1 for every core "
-                                      "(-2 every core but one, ...), not 0");
-  if (w == 0)
-    throw py::value_error(
-        "workers must be a thread count from 1 to 4096, or -1 for every core "
-        "(-2 every core but one, ...), not 0");
+  if (workers.is_none()) return 1;  // scipy's default: one thread
+  const char* meaning = "a thread count from 1 to 4096, or -1 for every core (-2 every core "
+                        "but one, ...)";
+  const long long w = integerArgument(workers, "workers", -kMost, kMost, meaning);
+  if (w == 0) throw py::value_error(std::string("workers must be ") + meaning + ", not 0");
   return static_cast<unsigned>(w > 0 ? w : std::max(1LL, cores + 1 + w));
 }
 

@@ -57,8 +57,9 @@ std::string shapeText(const std::vector<py::ssize_t>& shape);
 long long integerArgument(const py::object& value, const char* name, long long lo, long long hi,
                           const char* meaning);
 
-// the threads of a batch from workers= (as scipy: k > 0 threads, -1 every core, -k every core
-// but k - 1) or from its deprecated old name threads= (0: every core); 0 means every core
+// the threads of a batch from workers= (as scipy: None 1, k > 0 threads, -1 every core, -k
+// every core but k - 1) or from its deprecated old name threads= (0: every core); the result
+// 0 means every core
 unsigned workerCount(const py::object& workers, const py::object& threads);
 
 // the resolution argument of a locator, checked (0 chooses from the shape)

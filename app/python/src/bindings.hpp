@@ -29,8 +29,9 @@ void bindConveniences(py::module_& m);
 // === Shapes from Python values (shape_input.cpp)
 
 // a polygon from (N, 2) vertices or from an object with a Polygon __geo_interface__ (or such
-// a GeoJSON mapping): its exterior ring; GeometryError for holes
-ConvexPolygon polygonFrom(const py::object& vertices);
+// a GeoJSON mapping, a Feature, a one-part MultiPolygon): its exterior ring, z dropped;
+// GeometryError for holes and for several parts; `what` names the argument in errors
+ConvexPolygon polygonFrom(const py::object& vertices, const char* what = "vertices");
 // the polygon that is the exact convex hull of (M, 2) points (core's convexHull)
 ConvexPolygon polygonHull(const py::object& points);
 // GeometryError naming the count when fewer than 4 points cannot make a 3D hull

@@ -24,13 +24,10 @@ py::array_t<bool> insideOf(py::array_t<std::int8_t>& codes, bool boundary) {
   return out;
 }
 
-// the polygon itself, or the one its vertices make
+// the polygon itself, or the one Polygon() makes of it (vertices, a Shapely polygon, GeoJSON)
 const ConvexPolygon& polygonOf(const py::object& shape, std::optional<ConvexPolygon>& made) {
   if (py::isinstance<ConvexPolygon>(shape)) return shape.cast<const ConvexPolygon&>();
-  const py::array vertices = pointArray(shape, 2, "polygon");
-  const std::span<const Vec2> read = pointsOf<Vec2>(vertices);
-  py::gil_scoped_release released;
-  return made.emplace(read);
+  return made.emplace(polygonFrom(shape, "polygon"));
 }
 
 // the polyhedron itself, or the hull of the cloud
@@ -81,7 +78,7 @@ std::string containsDoc(bool covers, const char* dims, const char* shape, const 
          ", then locates the batch.";
 }
 
-// Defines `name`(shape, points, *, workers=-1): makes the shape when it is not one already
+// Defines `name`(shape, points, *, workers=1): makes the shape when it is not one already
 // (with `make`), then answers with Locator; `covers` says whether the boundary counts.
 template <class Locator, class Point, class Shape, class Make>
 void defineContains(py::module_& m, const char* name, bool covers, const char* shapeArg, Make make,
@@ -101,17 +98,17 @@ void defineContains(py::module_& m, const char* name, bool covers, const char* s
                const py::object& threads) {
           return body(shape, points, workers, threads, py::none());
         },
-        py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
+        py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = py::none(),
         py::arg("threads") = py::none(),
         signedDoc(name,
-                  keep("(" + std::string(shapeArg) + ", points, *, workers=-1, threads=None)"),
+                  keep("(" + std::string(shapeArg) + ", points, *, workers=1, threads=None)"),
                   doc));
   else
-    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = -1,
+    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = py::none(),
           py::arg("threads") = py::none(), py::arg("boundary") = py::none(),
           signedDoc(name,
                     keep("(" + std::string(shapeArg) +
-                         ", points, *, workers=-1, threads=None, boundary=None)"),
+                         ", points, *, workers=1, threads=None, boundary=None)"),
                     doc));
 }
 

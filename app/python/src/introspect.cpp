@@ -36,7 +36,9 @@ py::dict traceCommon(const Trace& t) {
   py::dict d;
   d["method"] = std::string(toString(t.method));
   d["result"] = static_cast<int>(t.result);
-  d["location"] = std::string(toString(t.result));
+  // the same convexloc.Location value locate's code names, and its name in words
+  d["location"] = py::module_::import("convexloc").attr("Location")(static_cast<int>(t.result));
+  d["location_name"] = std::string(toString(t.result));
   d["crowded"] = t.crowded;
   d["at_centre"] = t.atCentre;
   d["by_radius"] = t.byRadius;

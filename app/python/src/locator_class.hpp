@@ -52,13 +52,24 @@ struct Bound {
 };
 
 // the locator of `shape`, built without the GIL, with `resolution` where the method has one
-template <class Locator, class Method>
-Bound<Locator> buildBound(const py::object& shape, std::uint32_t resolution) {
+// `shape` as the Shape of the dimension: a polygon from anything Polygon() takes (a Shapely
+// polygon, a GeoJSON mapping, vertices), a polyhedron only as itself
+template <class Method>
+py::object shapeArgument(const py::object& shape) {
   using Shape = typename Dimension<Method>::Shape;
-  if (!py::isinstance<Shape>(shape))
-    throw py::type_error(std::string(Dimension<Method>::kShape) + " must be a convexloc." +
-                         (Dimension<Method>::kPlanar ? "Polygon" : "Polyhedron") + ", got " +
+  if (py::isinstance<Shape>(shape)) return shape;
+  if constexpr (Dimension<Method>::kPlanar) {
+    return py::cast(polygonFrom(shape, "polygon"));
+  } else {
+    throw py::type_error("polyhedron must be a convexloc.Polyhedron, got " +
                          std::string(py::str(shape.get_type().attr("__name__"))));
+  }
+}
+
+template <class Locator, class Method>
+Bound<Locator> buildBound(const py::object& shapeArg, std::uint32_t resolution) {
+  using Shape = typename Dimension<Method>::Shape;
+  const py::object shape = shapeArgument<Method>(shapeArg);
   const Shape& s = shape.cast<const Shape&>();
   std::optional<Locator> built;
   {
@@ -108,9 +119,9 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
 // the docstring of locate and of locate_xy / locate_xyz
 inline const char* locateDoc(int dims, bool columns) {
   const char* name = columns ? (dims == 2 ? "locate_xy" : "locate_xyz") : "locate";
-  const char* params = columns ? (dims == 2 ? "(self, x, y, *, workers=-1, threads=None)"
-                                            : "(self, x, y, z, *, workers=-1, threads=None)")
-                               : "(self, points, *, workers=-1, threads=None)";
+  const char* params = columns ? (dims == 2 ? "(self, x, y, *, workers=1, threads=None)"
+                                            : "(self, x, y, z, *, workers=1, threads=None)")
+                               : "(self, points, *, workers=1, threads=None)";
   const std::string what =
       columns ? std::string("Locates the points whose coordinates are the elements of x, y") +
                     (dims == 3 ? ", z" : "") +
@@ -122,9 +133,9 @@ inline const char* locateDoc(int dims, bool columns) {
       name, params,
       what +
           " Exact for the doubles given (NaN and infinite coordinates are OUTSIDE). Runs "
-          "without the GIL, on up to `workers` threads for large batches (-1: one per "
-          "core, as scipy's workers=; threads= is its deprecated old name, 0 meaning "
-          "every core).");
+          "without the GIL, on `workers` threads for large batches (scipy's workers=: 1 by "
+          "default, -1 one per core; threads= is its deprecated old name, 0 meaning every "
+          "core).");
 }
 
 // locate, and the same from separate coordinate arrays
@@ -132,7 +143,7 @@ template <class Locator, class Method>
 void defineLocate(py::class_<Bound<Locator>>& c) {
   using Point = typename Dimension<Method>::Point;
   constexpr int dims = kDims<Point>;
-  const auto workers = py::arg("workers") = -1;
+  const auto workers = py::arg("workers") = py::none();
   const auto threads = py::arg("threads") = py::none();
   c.def(
       "locate",

@@ -22,35 +22,69 @@ namespace {
   throw FileFailure(ErrorKind::Geometry, "", 0, problem);
 }
 
-// the exterior ring of a GeoJSON-like Polygon mapping, without its closing repeat
-py::object exteriorRing(const py::object& geo) {
+// position `k` of a ring as (x, y): a z (or any further coordinate) is dropped, as Shapely's
+// 2D predicates ignore it
+py::tuple planarPosition(const py::handle& position, std::size_t k) {
+  const py::sequence coordinates = py::reinterpret_borrow<py::sequence>(position);
+  if (coordinates.size() < 2)
+    geometryError("the exterior ring's position " + std::to_string(k) + " has " +
+                  std::to_string(coordinates.size()) + " coordinate(s), not x and y");
+  return py::make_tuple(coordinates[0], coordinates[1]);
+}
+
+// the one polygon of a GeoJSON-like geometry mapping: a Polygon, a Feature's, or the only part
+// of a MultiPolygon; anything else is refused with what it is
+py::object polygonCoordinates(const py::object& geo) {
   const py::object kind = geo.attr("get")("type");
-  if (kind.is_none() || std::string(py::str(kind)) != "Polygon")
-    throw py::type_error("a Polygon needs a polygon's __geo_interface__, got type " +
-                         std::string(py::repr(kind)));
-  const py::list rings(geo.attr("get")("coordinates", py::list()));
-  if (rings.empty()) geometryError("the polygon's __geo_interface__ has no exterior ring");
+  const std::string type = kind.is_none() ? std::string("None") : std::string(py::str(kind));
+  if (type == "Feature") return polygonCoordinates(geo.attr("get")("geometry", py::dict()));
+  const py::object coordinates = geo.attr("get")("coordinates", py::list());
+  if (type == "Polygon") return coordinates;
+  if (type == "MultiPolygon") {
+    const py::list parts(coordinates);
+    if (parts.size() == 1) return parts[0];
+    geometryError("a MultiPolygon of " + std::to_string(parts.size()) +
+                  " parts: a convex polygon is one part; take its parts one by one "
+                  "(shapely: list(geometry.geoms))");
+  }
+  if (type == "FeatureCollection")
+    throw py::type_error(
+        "a FeatureCollection (a whole GeoSeries or GeoDataFrame?) is many shapes: pass one "
+        "polygon (series.iloc[k]) or build one locator per footprint");
+  throw py::type_error("a Polygon needs a polygon geometry (GeoJSON type 'Polygon'), got type " +
+                       std::string(py::repr(kind)));
+}
+
+// the exterior ring of a GeoJSON-like Polygon mapping as (x, y) positions, without its closing
+// repeat; holes are refused
+py::object exteriorRing(const py::object& geo) {
+  const py::list rings(polygonCoordinates(geo));
+  if (rings.empty()) geometryError("the polygon's geometry has no exterior ring");
   if (rings.size() > 1)
     geometryError("the polygon has " + std::to_string(rings.size() - 1) +
                   " interior ring(s): a convex polygon has no holes");
-  py::list ring(rings[0]);
-  if (ring.size() > 1 && py::bool_(ring[0].equal(ring[ring.size() - 1]))) {
-    py::list open;
-    for (std::size_t k = 0; k + 1 < ring.size(); ++k) open.append(ring[k]);
-    ring = open;
-  }
+  py::list ring;
+  std::size_t k = 0;
+  for (const py::handle position : py::iter(rings[0])) ring.append(planarPosition(position, k++));
+  if (ring.size() > 1 && py::bool_(ring[0].equal(ring[ring.size() - 1])))
+    ring.attr("pop")();
   return ring;
 }
 
 }  // namespace
 
-ConvexPolygon polygonFrom(const py::object& vertices) {
+ConvexPolygon polygonFrom(const py::object& vertices, const char* what) {
+  if (py::isinstance<ConvexPolyhedron>(vertices))
+    throw py::type_error(std::string(what) +
+                         " must be a polygon (a convexloc.Polygon, an object with "
+                         "__geo_interface__, a GeoJSON mapping or (N, 2) vertices), got a "
+                         "Polyhedron");
   py::object source = vertices;
   if (py::hasattr(vertices, "__geo_interface__"))
     source = exteriorRing(vertices.attr("__geo_interface__"));
   else if (py::isinstance<py::dict>(vertices))
     source = exteriorRing(vertices);
-  const py::array points = pointArray(source, 2, "vertices");
+  const py::array points = pointArray(source, 2, what);
   const std::span<const Vec2> read = pointsOf<Vec2>(points);
   py::gil_scoped_release released;
   return ConvexPolygon(read);

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,8 +18,9 @@ namespace convexloc::python {
 
 namespace {
 
-// the version of the pickled state, first in the tuple
-constexpr int kStateVersion = 1;
+// the version of the pickled state, first in the tuple (1: index histories as int64; 2: as
+// uint32, which holds every index a shape has; both load)
+constexpr int kStateVersion = 2;
 
 // === Canonical forms: equal shapes have equal canonical forms
 
@@ -138,16 +140,29 @@ std::vector<Point> pointsFromState(const py::handle& item) {
 
 // the tuple's items after checking its length and version
 py::tuple stateItems(const py::tuple& state, std::size_t size, const char* cls) {
-  if (state.size() != size || state[0].cast<int>() != kStateVersion)
+  const int version = state.size() == size ? state[0].cast<int>() : -1;
+  if (version != 1 && version != kStateVersion)
     throw py::value_error(std::string("cannot unpickle this ") + cls +
                           ": it was pickled by another version of convexloc");
   return state;
 }
 
-// the restored history goes into the new instance's __dict__
-py::dict historyDict(const py::handle& history) {
+// an index array of a history as it travels: uint32 (half of int64's bytes)
+py::object compactIndices(const py::object& indices) {
+  return indices.attr("astype")("uint32");
+}
+
+// the restored history goes into the new instance's __dict__, its index arrays (`slots`) as
+// the read-only int64 arrays the properties give
+py::dict historyDict(const py::handle& saved, std::initializer_list<std::size_t> slots) {
+  py::list history = py::reinterpret_borrow<py::object>(saved);
+  for (const std::size_t slot : slots) {
+    py::object indices = history[slot].attr("astype")("int64");
+    indices.attr("setflags")(py::arg("write") = false);
+    history[slot] = indices;
+  }
   py::dict d;
-  d["_history"] = history;
+  d["_history"] = py::tuple(history);
   return d;
 }
 
@@ -186,13 +201,14 @@ void defineShapeProtocols(py::class_<ConvexPolygon>& c) {
   defineProtocols(
       c, "Polygon", 3,
       [](const py::object& self, const ConvexPolygon& p) {
-        const py::tuple history = py::make_tuple(
-            self.attr("source_index"), self.attr("dropped_count"), self.attr("was_clockwise"));
+        const py::tuple history = py::make_tuple(compactIndices(self.attr("source_index")),
+                                                 self.attr("dropped_count"),
+                                                 self.attr("was_clockwise"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec2>(p.vertices()), history);
       },
       [](const py::tuple& items) {
         const std::vector<Vec2> vertices = pointsFromState<Vec2>(items[1]);
-        return std::make_pair(ConvexPolygon(vertices), historyDict(items[2]));
+        return std::make_pair(ConvexPolygon(vertices), historyDict(items[2], {0}));
       });
 }
 
@@ -203,8 +219,9 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
         py::array_t<std::uint32_t> triangles(
             {static_cast<py::ssize_t>(p.faceCount()), py::ssize_t{3}});
         std::copy_n(p.triangles().data()->data(), 3 * p.faceCount(), triangles.mutable_data());
-        const py::tuple history = py::make_tuple(
-            self.attr("source_face"), self.attr("source_vertex"), self.attr("was_inverted"));
+        const py::tuple history = py::make_tuple(compactIndices(self.attr("source_face")),
+                                                 compactIndices(self.attr("source_vertex")),
+                                                 self.attr("was_inverted"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec3>(p.vertices()), triangles,
                               history);
       },
@@ -220,7 +237,7 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
           py::gil_scoped_release released;
           made.emplace(mesh);
         }
-        return std::make_pair(std::move(*made), historyDict(items[3]));
+        return std::make_pair(std::move(*made), historyDict(items[3], {0, 1}));
       });
 }
 

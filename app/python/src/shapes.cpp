@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -179,21 +180,66 @@ constexpr const char* kPolyhedronDoc =
     "equal when they have the same vertices and the same triangles, in any order; "
     "pickle, copy and deepcopy keep the exact doubles.";
 
-// the read-only property `bounds`: the exact box as ((lo...), (hi...))
+// the read-only property `bounds`: the exact box as Shapely orders it, (lo..., hi...)
 template <class Shape>
 void boundsProperty(py::class_<Shape>& c, const char* doc) {
   c.def_property_readonly(
       "bounds",
       [](const Shape& s) {
-        return py::make_tuple(toPython(s.bounds().lo), toPython(s.bounds().hi));
+        const py::tuple lo = toPython(s.bounds().lo);
+        const py::tuple hi = toPython(s.bounds().hi);
+        return py::tuple(lo + hi);
       },
       doc);
+}
+
+// a closed GeoJSON ring of `points`: (x, y[, z]) tuples, the first repeated at the end
+template <class Point>
+py::tuple closedRing(std::span<const Point> points) {
+  py::tuple ring(points.size() + 1);
+  for (std::size_t k = 0; k <= points.size(); ++k)
+    ring[k] = toPython(points[k % points.size()]);
+  return ring;
+}
+
+// __geo_interface__: the polygon as a GeoJSON Polygon (its ring counter-clockwise, as RFC
+// 7946 wants an exterior ring), the polyhedron as a MultiPolygon of its triangles with z
+void geoInterface(py::class_<ConvexPolygon>& c) {
+  c.def_property_readonly(
+      "__geo_interface__",
+      [](const ConvexPolygon& p) {
+        py::dict geo;
+        geo["type"] = "Polygon";
+        geo["coordinates"] = py::make_tuple(closedRing(p.vertices()));
+        return geo;
+      },
+      "a GeoJSON Polygon mapping (shapely.geometry.shape and GeoPandas read it)");
+}
+
+void geoInterface(py::class_<ConvexPolyhedron>& c) {
+  c.def_property_readonly(
+      "__geo_interface__",
+      [](const ConvexPolyhedron& p) {
+        const std::span<const Vec3> v = p.vertices();
+        py::tuple parts(p.faceCount());
+        std::size_t k = 0;
+        for (const auto& t : p.triangles()) {
+          const std::array<Vec3, 3> corners{v[t[0]], v[t[1]], v[t[2]]};
+          parts[k++] = py::make_tuple(closedRing(std::span<const Vec3>(corners)));
+        }
+        py::dict geo;
+        geo["type"] = "MultiPolygon";
+        geo["coordinates"] = parts;
+        return geo;
+      },
+      "a GeoJSON MultiPolygon mapping of the triangles, with z (counter-clockwise from outside)");
 }
 
 void bindPolygon(py::module_& m) {
   using P = ConvexPolygon;
   py::class_<P> c(m, "Polygon", kPolygonDoc, py::dynamic_attr());
-  c.def(py::init(&polygonFrom), py::arg("vertices"),
+  c.def(py::init([](const py::object& vertices) { return polygonFrom(vertices); }),
+        py::arg("vertices"),
         signedDoc("__init__", "(self, vertices)",
                   "Validates the (N, 2) vertices (either orientation), or the exterior ring of "
                   "an object with a Polygon __geo_interface__ (a Shapely polygon; holes are a "
@@ -208,7 +254,8 @@ void bindPolygon(py::module_& m) {
   arrayProperty(c, "vertices", &P::vertices,
                 "(N, 2) float64, read-only: the vertices, counter-clockwise");
   indexHistory(c, "source_index", 0, &P::sourceIndex, "int64: each vertex's index in the input");
-  boundsProperty(c, "((xmin, ymin), (xmax, ymax)), exact");
+  boundsProperty(c, "(minx, miny, maxx, maxy), exact: Shapely's order");
+  geoInterface(c);
   c.def("__len__", &P::size,
         signedDoc("__len__", "(self, /)", "the number of vertices (and of edges)"));
   c.def_property_readonly("area", &P::area, "the area (for display, not for decisions)");
@@ -262,7 +309,8 @@ void bindPolyhedron(py::module_& m) {
   arrayProperty(c, "neighbours", &P::neighbours, "(F, 3) int64: [t, k] is across edge k of t");
   indexHistory(c, "source_face", 0, &P::sourceFace, "int64: each triangle's input face");
   indexHistory(c, "source_vertex", 1, &P::sourceVertex, "int64: each vertex's index in the input");
-  boundsProperty(c, "((xmin, ymin, zmin), (xmax, ymax, zmax)), exact");
+  boundsProperty(c, "(minx, miny, minz, maxx, maxy, maxz), exact: Shapely's order, with z");
+  geoInterface(c);
   c.def_property_readonly(
       "centre", [](const P& p) { return centreToPython(p.centre()); },
       "(x, y, z) strictly inside, or None for a sliver thinner than doubles");
