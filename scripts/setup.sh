@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what convexloc needs from Debian's packages (only what is missing), then
 # configures and builds one build folder.
-# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench]
+# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench | --python]
 #   (default)   build/       Release, g++: the tools, the viewer, the tests
 #   --sanitize  build-asan/  g++ -O1 with AddressSanitizer + UBSan: everything but the bench
 #   --fuzz      build-fuzz/  clang-14 -O1 with libFuzzer + ASan + UBSan: the core and the
@@ -10,10 +10,16 @@
 #   --bench     build-bench/ Release, g++: convexloc-bench with GEOS and CGAL beside it
 #                            (also installs libgeos-dev, libcgal-dev, gnuplot-nox, and
 #                            python3-shapely, python3-scipy for tests/bench/python_peers.py)
-# Every variant installs emscripten, dpkg-dev, fonts-dejavu-core (scripts/web.sh builds the web
+#   --python    only what the Python package needs to build (a compiler, CMake, pybind11,
+#               numpy, Boost's headers, venv and pip), then nothing else: install it with
+#               `python3 -m venv --system-site-packages .venv && .venv/bin/pip install
+#               --no-build-isolation .` (docs/python.md)
+# Every other variant installs emscripten, dpkg-dev, fonts-dejavu-core (scripts/web.sh builds the web
 # page with them) and chromium, python3-websocket (tests/web drives the page in a browser).
 # Every variant installs pybind11-dev, python3-numpy and python3-pytest (and, for the Python
-# module's Dask path and its type checks, python3-dask, python3-distributed, python3-pandas and
+# module's Dask path, its pictures, geo interop, packaging and type checks, python3-dask,
+# python3-distributed, python3-pandas, python3-matplotlib, python3-shapely, python3-geopandas,
+# python3-venv, python3-setuptools, python3-wheel, python3-pip, python3-build and
 # python3-mypy): the plain and bench
 # builds make the Python module (build*/python; the sanitized and fuzz builds leave it out).
 set -euo pipefail
@@ -27,7 +33,8 @@ for arg in "$@"; do
     --sanitize) variant=sanitize ;;
     --fuzz) variant=fuzz ;;
     --bench) variant=bench ;;
-    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench]" >&2; exit 2 ;;
+    --python) variant=python ;;
+    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench | --python]" >&2; exit 2 ;;
   esac
 done
 
@@ -36,9 +43,16 @@ packages=(cmake ninja-build g++ pkg-config libgmp-dev libboost-dev libcli11-dev
           xvfb xauth xdotool libgl1-mesa-dri clang-14 libclang-rt-14-dev
           python3-dev pybind11-dev python3-numpy python3-pytest
           python3-dask python3-distributed python3-pandas python3-mypy
+          python3-shapely python3-matplotlib python3-geopandas
+          python3-venv python3-setuptools python3-wheel python3-pip python3-build
           emscripten dpkg-dev fonts-dejavu-core chromium python3-websocket)
 if [[ $variant == bench ]]; then
-  packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-shapely python3-scipy)
+  packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-scipy)
+fi
+# the Python package alone (GMP is optional: without it core's exact numbers are Boost's)
+if [[ $variant == python ]]; then
+  packages=(g++ make cmake python3-dev pybind11-dev python3-numpy libboost-dev
+            python3-venv python3-setuptools python3-wheel python3-pip)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -52,6 +66,12 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 else
   echo "convexloc: all Debian packages present"
+fi
+
+if [[ $variant == python ]]; then
+  echo "convexloc: ready for: python3 -m venv --system-site-packages .venv &&" \
+       ".venv/bin/pip install --no-build-isolation ."
+  exit 0
 fi
 
 if [[ -n "${CI:-}" ]]; then werror=ON; fi

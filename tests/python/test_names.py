@@ -107,8 +107,10 @@ def test_polygon_from_geo_interface():
                                                 [[1, 1], [2, 1], [1, 2], [1, 1]]]}
     with pytest.raises(convexloc.GeometryError, match="1 interior ring.*no holes"):
         convexloc.Polygon(holed)
-    with pytest.raises(TypeError, match="got type 'MultiPolygon'"):
+    with pytest.raises(convexloc.GeometryError, match="a MultiPolygon of 0 parts"):
         convexloc.Polygon({"type": "MultiPolygon", "coordinates": []})
+    with pytest.raises(TypeError, match="got type 'Point'"):
+        convexloc.Polygon({"type": "Point", "coordinates": [0, 0]})
     with pytest.raises(convexloc.GeometryError, match="not convex"):
         convexloc.Polygon({"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [1, 1], [0, 4]]]})
 
@@ -177,6 +179,9 @@ def test_argument_errors_name_the_numbers_given(square):
         convexloc.UniformLocator(square, -1)
     with pytest.raises(TypeError, match="resolution must be an integer, got 2.5"):
         convexloc.PolarLocator(square, 2.5)
-    with pytest.raises(TypeError, match=r"polygon must be a convexloc.Polygon, got list"):
-        convexloc.PolarLocator([[0, 0], [1, 0], [0, 1]])
+    # anything Polygon() takes, vertices too; what is no polygon says what a polygon can be
+    assert convexloc.PolarLocator([[0, 0], [1, 0], [0, 1]]).shape == convexloc.Polygon(
+        [[0, 0], [1, 0], [0, 1]])
+    with pytest.raises(TypeError, match=r"polygon must be numbers .*got a boolean array"):
+        convexloc.PolarLocator([[True, False]])
     assert convexloc.PolarLocator(square, np.int64(3)).slabs_per_octant == 3

@@ -92,7 +92,9 @@ from .chunks import iter_locate, locate_chunks  # noqa: E402  (it uses the table
 from .types import (  # noqa: E402
     Cell2D,
     Cell3D,
+    GeoInterface,
     PolarStep,
+    PolygonLike,
     Stats2D,
     Stats3D,
     Trace2D,
@@ -117,7 +119,7 @@ __all__ = [
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
     "iter_locate", "locate_chunks",
-    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
+    "GeoInterface", "PolygonLike", "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
     "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
     "plot", "figure", "svg", "figure_svg",
 ]

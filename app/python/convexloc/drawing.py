@@ -104,7 +104,7 @@ def _cell_counts_legend(scene: Scene, counts: Sequence[int], what: str) -> None:
 
 
 def _cells_2d(scene: Scene, locator: Any) -> list[Any]:
-    cells = locator.cells()
+    cells: list[Any] = locator.cells()
     counts = [len(c["edges"]) for c in cells]
     scene.polygons([c["outline"] for c in cells], [count_fill(k) for k in counts],
                    stroke="#8c8c8c", width=0.5)
@@ -156,20 +156,21 @@ def _trace_2d(scene: Scene, locator: Any, cells: list[Any], trace: Any) -> None:
 # === 3D: the cube map as a net, a polyhedron seen obliquely
 
 # where each cube face (+x, -x, +y, -y, +z, -z) lies on the net: a cross whose strip runs -y,
-# +x, +y, -x around z, with +z above and -z below the -y face; (normalised x, y, z) -> net
+# +x, +y, -x around z, with +z above and -z below the -y face; each maps normalised (x, y, z)
+# on its face to the net by (which coordinate and its sign) across, the same up, and offsets
 _NET = {
-    0: lambda u: (u[..., 1] + 2, u[..., 2]),
-    1: lambda u: (-u[..., 1] + 6, u[..., 2]),
-    2: lambda u: (-u[..., 0] + 4, u[..., 2]),
-    3: lambda u: (u[..., 0], u[..., 2]),
-    4: lambda u: (u[..., 0], u[..., 1] + 2),
-    5: lambda u: (u[..., 0], -u[..., 1] - 2),
+    0: ((1, 1), (2, 1), (2, 0)),
+    1: ((1, -1), (2, 1), (6, 0)),
+    2: ((0, -1), (2, 1), (4, 0)),
+    3: ((0, 1), (2, 1), (0, 0)),
+    4: ((0, 1), (1, 1), (0, 2)),
+    5: ((0, 1), (1, -1), (0, -2)),
 }
 
 
 def _on_net(face: int, u: Floats) -> Floats:
-    x, y = _NET[face](u)
-    return np.stack([x, y], axis=-1)
+    (a, sa), (b, sb), (dx, dy) = _NET[face]
+    return np.stack([sa * u[..., a] + dx, sb * u[..., b] + dy], axis=-1)
 
 
 def _directions_on_net(centre: Any, points: Floats) -> tuple[Floats, npt.NDArray[np.int64]]:
@@ -187,7 +188,7 @@ def _directions_on_net(centre: Any, points: Floats) -> tuple[Floats, npt.NDArray
 
 
 def _net(scene: Scene, locator: Any) -> list[Any]:
-    cells = locator.cells()
+    cells: list[Any] = locator.cells()
     if not cells:
         return cells
     centre, half = np.asarray(locator.centre), locator.cube_half_size
@@ -276,9 +277,11 @@ def scene(thing: Any, points: Any = None, trace: Any = None) -> Scene:
     Polygon), with `points` classified and `trace` (a point, or a dict from trace()) drawn."""
     thing = geo_polygon(thing)
     dims = _dims(thing)
-    locator = thing
-    if isinstance(thing, (Polygon, Polyhedron)):
-        locator = (LOCATORS_2D["polar"] if dims == 2 else LOCATORS_3D["cubemap"])(thing)
+    locator: Any = thing
+    if isinstance(thing, Polygon):
+        locator = LOCATORS_2D["polar"](thing)
+    elif isinstance(thing, Polyhedron):
+        locator = LOCATORS_3D["cubemap"](thing)
     shape = locator.shape
     made = Scene(title=f"{locator.method} over {_describe(shape)}")
     if trace is not None and not isinstance(trace, dict):

@@ -16,11 +16,13 @@ __all__ = ["plot", "figure", "svg", "figure_svg", "draw", "to_svg"]
 
 def draw(made: Scene, ax: Any = None) -> Any:
     """The Scene on matplotlib Axes `ax` (a new figure's when None); returns the Axes."""
-    import matplotlib.pyplot as plt
-    from matplotlib.collections import PolyCollection
+    # matplotlib: optional, and Debian's ships no type information
+    import matplotlib.pyplot as plt  # type: ignore[import]
+    from matplotlib.collections import PolyCollection  # type: ignore[import]
 
+    fresh = ax is None
     if ax is None:
-        _, ax = plt.subplots(figsize=(6.4, 5.6))
+        _, ax = plt.subplots(figsize=(7.2, 5.2))
     for item in made.items:
         if item.kind == "polygons":
             ax.add_collection(PolyCollection(item.points, facecolors=item.fills,
@@ -43,13 +45,15 @@ def draw(made: Scene, ax: Any = None) -> Any:
     ax.set_ylim(y0 - pad, y1 + pad)
     ax.set_aspect("equal")
     ax.set_title(made.title, fontsize=9, wrap=True)
-    from matplotlib.patches import Patch
+    from matplotlib.patches import Patch  # type: ignore[import]
 
     handles = [Patch(facecolor=c, edgecolor="#8c8c8c", label=t) for c, t in made.legend]
     dots, labels = ax.get_legend_handles_labels()
     if handles or dots:
         ax.legend(handles=handles + dots, labels=[t for _, t in made.legend] + labels,
                   fontsize=7, loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    if fresh:
+        ax.figure.tight_layout()  # the legend beside the axes stays inside the figure
     return ax
 
 

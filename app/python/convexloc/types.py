@@ -7,8 +7,7 @@ from typing import Any, Mapping, Protocol, TypedDict, Union
 import numpy as np
 import numpy.typing as npt
 
-from . import Location
-from ._core import Polygon
+from . import Location, Polygon
 
 __all__ = ["ArrayLike", "PathLike", "GeoInterface", "PolygonLike", "Codes", "Floats", "Indices", "Bools",
            "UniformStep", "PolarStep", "Trace2D", "Stats2D", "Cell2D",
