@@ -45,7 +45,7 @@ def test_pip_install_wheel_and_uninstall():
     run([python, "-m", "pip", "install", "--no-build-isolation", "--no-index", "--no-deps", copy],
         elsewhere, env)
     check = ("import importlib.metadata, convexloc\n"
-             "print(importlib.metadata.version('convexloc'), convexloc.__file__)\n"
+             "print(importlib.metadata.version('convexloc'))\nprint(convexloc.__file__)\n"
              "print(convexloc.covers({'type': 'Polygon', 'coordinates': "
              "[[[0, 0], [1, 0], [0, 1], [0, 0]]]}, [[0.5, 0.5], [0.6, 0.6]]).tolist())")
     version, where, answer = run([python, "-c", check], elsewhere, env).split("\n")[:3]

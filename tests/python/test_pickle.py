@@ -128,3 +128,23 @@ def test_a_foreign_state_is_refused():
     polygon = convexloc.Polygon.__new__(convexloc.Polygon)
     with pytest.raises(ValueError, match="pickled by another version"):
         polygon.__setstate__((99, np.zeros((3, 2)), ()))
+
+
+def test_index_histories_travel_as_uint32_and_come_back_int64():
+    cloud = np.random.default_rng(5).normal(size=(200, 3))
+    hull = convexloc.Polyhedron.hull(cloud)
+    version, vertices, triangles, history = hull.__getstate__()
+    assert version == 2 and triangles.dtype == np.uint32
+    assert history[0].dtype == np.uint32 and history[1].dtype == np.uint32
+    assert history[0].nbytes == 4 * hull.face_count
+    back = pickle.loads(pickle.dumps(hull))
+    for name in ("source_face", "source_vertex"):
+        restored, original = getattr(back, name), getattr(hull, name)
+        assert restored.dtype == np.int64 and not restored.flags.writeable
+        np.testing.assert_array_equal(restored, original)
+    # a state of the first version (int64 histories) still loads
+    old = (1, vertices, triangles, (hull.source_face, hull.source_vertex, hull.was_inverted))
+    again = convexloc.Polyhedron.__new__(convexloc.Polyhedron)
+    again.__setstate__(old)
+    assert again == hull and again.source_face.dtype == np.int64
+    np.testing.assert_array_equal(again.source_vertex, hull.source_vertex)

@@ -108,7 +108,7 @@ def _cells_2d(scene: Scene, locator: Any) -> list[Any]:
     counts = [len(c["edges"]) for c in cells]
     scene.polygons([c["outline"] for c in cells], [count_fill(k) for k in counts],
                    stroke="#8c8c8c", width=0.5)
-    if 0 < len(cells) <= 64:  # the edge count written in each cell, where it can be read
+    if 0 < len(cells) <= 40:  # the edge count written in each cell, where it can be read
         for cell, k in zip(cells, counts):
             scene.write(np.asarray(cell["outline"]).mean(axis=0), str(k), size=7)
     _cell_counts_legend(scene, counts, "edges")

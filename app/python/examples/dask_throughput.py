@@ -50,7 +50,11 @@ def make_shape(dims: int) -> Union[convexloc.Polygon, convexloc.Polyhedron]:
 
 def one_process(shape: Union[convexloc.Polygon, convexloc.Polyhedron], chunks: int, size: int,
                 dims: int) -> Counts:
-    locator = (convexloc.PolarLocator if dims == 2 else convexloc.CubemapLocator)(shape)
+    locator: Union[convexloc.PolarLocator, convexloc.CubemapLocator]
+    if isinstance(shape, convexloc.Polygon):
+        locator = convexloc.PolarLocator(shape)
+    else:
+        locator = convexloc.CubemapLocator(shape)
     total = np.zeros(4, dtype=np.int64)
     for i in range(chunks):
         total += counts_of(locator.locate(chunk(i, size, dims), workers=1))[0]

@@ -156,8 +156,8 @@ py::array objectNumbers(const py::array& objects, const char* what) {
                            "): every point needs numbers; drop those rows (.dropna()) or pass "
                            ".to_numpy(dtype=float, na_value=numpy.nan) (NaN is OUTSIDE)");
     if (PyBool_Check(value.ptr()) || !(PyFloat_Check(value.ptr()) || PyIndex_Check(value.ptr())))
-      throw py::type_error(std::string(what) + " must be numbers (integer or float), got " +
-                           where + " = " + std::string(py::repr(value)) + " (dtype object)");
+      throw py::type_error(std::string(what) + " must be numbers (integer or float), got " + where +
+                           " = " + std::string(py::repr(value)) + " (dtype object)");
     to[k++] = exactDouble(value, where);
   }
   return out;
@@ -234,7 +234,8 @@ unsigned workerCount(const py::object& workers, const py::object& threads) {
   constexpr long long kMost = 4096;
   const long long cores = std::max(1u, std::thread::hardware_concurrency());
   if (!threads.is_none()) {
-    if (!workers.is_none()) throw py::type_error("give workers= or its old name threads=, not both");
+    if (!workers.is_none())
+      throw py::type_error("give workers= or its old name threads=, not both");
     PyErr_WarnEx(PyExc_DeprecationWarning,
                  "threads= is now workers= (as scipy names it; -1 for every core)", 1);
     const long long t =
@@ -242,8 +243,9 @@ unsigned workerCount(const py::object& workers, const py::object& threads) {
     return static_cast<unsigned>(t);
   }
   if (workers.is_none()) return 1;  // scipy's default: one thread
-  const char* meaning = "a thread count from 1 to 4096, or -1 for every core (-2 every core "
-                        "but one, ...)";
+  const char* meaning =
+      "a thread count from 1 to 4096, or -1 for every core (-2 every core "
+      "but one, ...)";
   const long long w = integerArgument(workers, "workers", -kMost, kMost, meaning);
   if (w == 0) throw py::value_error(std::string("workers must be ") + meaning + ", not 0");
   return static_cast<unsigned>(w > 0 ? w : std::max(1LL, cores + 1 + w));

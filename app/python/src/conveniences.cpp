@@ -100,12 +100,12 @@ void defineContains(py::module_& m, const char* name, bool covers, const char* s
         },
         py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = py::none(),
         py::arg("threads") = py::none(),
-        signedDoc(name,
-                  keep("(" + std::string(shapeArg) + ", points, *, workers=1, threads=None)"),
+        signedDoc(name, keep("(" + std::string(shapeArg) + ", points, *, workers=1, threads=None)"),
                   doc));
   else
-    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(), py::arg("workers") = py::none(),
-          py::arg("threads") = py::none(), py::arg("boundary") = py::none(),
+    m.def(name, body, py::arg(shapeArg), py::arg("points"), py::kw_only(),
+          py::arg("workers") = py::none(), py::arg("threads") = py::none(),
+          py::arg("boundary") = py::none(),
           signedDoc(name,
                     keep("(" + std::string(shapeArg) +
                          ", points, *, workers=1, threads=None, boundary=None)"),

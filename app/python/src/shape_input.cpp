@@ -66,8 +66,7 @@ py::object exteriorRing(const py::object& geo) {
   py::list ring;
   std::size_t k = 0;
   for (const py::handle position : py::iter(rings[0])) ring.append(planarPosition(position, k++));
-  if (ring.size() > 1 && py::bool_(ring[0].equal(ring[ring.size() - 1])))
-    ring.attr("pop")();
+  if (ring.size() > 1 && py::bool_(ring[0].equal(ring[ring.size() - 1]))) ring.attr("pop")();
   return ring;
 }
 

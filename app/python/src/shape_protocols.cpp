@@ -201,9 +201,9 @@ void defineShapeProtocols(py::class_<ConvexPolygon>& c) {
   defineProtocols(
       c, "Polygon", 3,
       [](const py::object& self, const ConvexPolygon& p) {
-        const py::tuple history = py::make_tuple(compactIndices(self.attr("source_index")),
-                                                 self.attr("dropped_count"),
-                                                 self.attr("was_clockwise"));
+        const py::tuple history =
+            py::make_tuple(compactIndices(self.attr("source_index")), self.attr("dropped_count"),
+                           self.attr("was_clockwise"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec2>(p.vertices()), history);
       },
       [](const py::tuple& items) {
@@ -219,9 +219,9 @@ void defineShapeProtocols(py::class_<ConvexPolyhedron>& c) {
         py::array_t<std::uint32_t> triangles(
             {static_cast<py::ssize_t>(p.faceCount()), py::ssize_t{3}});
         std::copy_n(p.triangles().data()->data(), 3 * p.faceCount(), triangles.mutable_data());
-        const py::tuple history = py::make_tuple(compactIndices(self.attr("source_face")),
-                                                 compactIndices(self.attr("source_vertex")),
-                                                 self.attr("was_inverted"));
+        const py::tuple history =
+            py::make_tuple(compactIndices(self.attr("source_face")),
+                           compactIndices(self.attr("source_vertex")), self.attr("was_inverted"));
         return py::make_tuple(kStateVersion, coordinateArray<Vec3>(p.vertices()), triangles,
                               history);
       },

@@ -197,8 +197,7 @@ void boundsProperty(py::class_<Shape>& c, const char* doc) {
 template <class Point>
 py::tuple closedRing(std::span<const Point> points) {
   py::tuple ring(points.size() + 1);
-  for (std::size_t k = 0; k <= points.size(); ++k)
-    ring[k] = toPython(points[k % points.size()]);
+  for (std::size_t k = 0; k <= points.size(); ++k) ring[k] = toPython(points[k % points.size()]);
   return ring;
 }
 
