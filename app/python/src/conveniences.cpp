@@ -118,8 +118,11 @@ void bindConveniences(py::module_& m) {
   for (const bool covers : {false, true}) {
     defineContains<PolarLocator, Vec2, ConvexPolygon>(
         m, covers ? "covers" : "contains", covers, "polygon", &polygonOf,
-        containsDoc(covers, "2", "the convex polygon (a Polygon, or its (N, 2) vertices)",
-                    "PolarLocator"));
+        containsDoc(
+            covers, "2",
+            "the convex polygon (a Polygon, anything Polygon() takes: a Shapely polygon, GeoJSON, "
+            "(N, 2) vertices)",
+            "PolarLocator"));
     defineContains<CubemapLocator, Vec3, ConvexPolyhedron>(
         m, covers ? "hull_covers" : "hull_contains", covers, "cloud", &hullOf,
         containsDoc(covers, "3", "the convex hull of the (K, 3) cloud (or a Polyhedron)",

@@ -82,6 +82,14 @@ Bound<Locator> buildBound(const py::object& shapeArg, std::uint32_t resolution) 
   return Bound<Locator>{std::move(*built), shape, resolution};
 }
 
+// what the constructor's docstring says of the shape it takes
+template <class Method>
+constexpr const char* shapeNote() {
+  return Dimension<Method>::kPlanar ? " (the polygon: anything Polygon() takes, a Shapely "
+                                      "polygon or a GeoJSON mapping among them)"
+                                    : "";
+}
+
 // the constructor (from the shape, and a resolution where the method has one) and pickling
 template <class Locator, class Method>
 void defineInit(py::class_<Bound<Locator>>& c, Method method) {
@@ -92,7 +100,8 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
     const std::string params =
         std::string("(self, ") + Dimension<Method>::kShape + ", resolution=0)";
     const char* doc = signedDoc("__init__", keep(params),
-                                "Builds the locator. resolution: " + std::string(info.resolution) +
+                                "Builds the locator" + std::string(shapeNote<Method>()) +
+                                    ". resolution: " + std::string(info.resolution) +
                                     " (0 chooses from the shape).");
     c.def(py::init([](const py::object& s, const py::object& resolution) {
             return buildBound<Locator, Method>(s, resolutionOf(resolution));
@@ -101,7 +110,8 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
   } else {
     const std::string params = std::string("(self, ") + Dimension<Method>::kShape + ")";
     c.def(py::init([](const py::object& s) { return buildBound<Locator, Method>(s, 0); }), shape,
-          signedDoc("__init__", keep(params), "Builds the locator."));
+          signedDoc("__init__", keep(params),
+                    "Builds the locator" + std::string(shapeNote<Method>()) + "."));
   }
   c.def(py::pickle([](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
                    [](const py::tuple& state) {

@@ -241,9 +241,11 @@ void bindPolygon(py::module_& m) {
         py::arg("vertices"),
         signedDoc("__init__", "(self, vertices)",
                   "Validates the (N, 2) vertices (either orientation), or the exterior ring of "
-                  "an object with a Polygon __geo_interface__ (a Shapely polygon; holes are a "
-                  "GeometryError). Raises GeometryError naming the witness: not convex, fewer "
-                  "than 3 distinct vertices, a non-finite coordinate."));
+                  "a geometry: an object with a Polygon __geo_interface__ (a Shapely polygon) "
+                  "or a GeoJSON mapping (a Polygon, a Feature, a one-part MultiPolygon), any z "
+                  "dropped; holes and several parts are a GeometryError. Raises GeometryError "
+                  "naming the witness: not convex, fewer than 3 distinct vertices, a "
+                  "non-finite coordinate."));
   c.def_static("hull", &polygonHull, py::arg("points"),
                signedDoc("hull", "(points)",
                          "The exact convex hull of (M, 2) points as a Polygon: every point "
