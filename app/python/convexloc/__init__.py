@@ -119,7 +119,7 @@ __all__ = [
     "HalfplaneLocator", "WedgeLocator", "SlabLocator", "UniformLocator", "PolarLocator",
     "HalfspaceLocator", "WalkLocator", "CubemapLocator",
     "iter_locate", "locate_chunks",
-    "GeoInterface", "PolygonLike", "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
+    "Trace2D", "Stats2D", "Cell2D", "Trace3D", "Stats3D", "Cell3D", "UniformStep", "PolarStep",
     "contains", "covers", "hull_contains", "hull_covers", "set_vector_batches", "vector_batches",
     "plot", "figure", "svg", "figure_svg",
 ]
