@@ -32,6 +32,27 @@ py::tuple planarPosition(const py::handle& position, std::size_t k) {
   return py::make_tuple(coordinates[0], coordinates[1]);
 }
 
+// A ring whose positions all have the same 2 or more numbers as one numpy array: its x and y
+// columns without the closing repeat (the fast path for large rings); None otherwise
+py::object planarRows(const py::handle& ring) {
+  py::array rows;
+  try {
+    rows = py::module_::import("numpy").attr("asarray")(ring);
+  } catch (const py::error_already_set&) {
+    return py::none();  // ragged: the positions are read one by one
+  }
+  const char kind = rows.dtype().kind();
+  if (rows.ndim() != 2 || rows.shape(1) < 2 || (kind != 'f' && kind != 'i' && kind != 'u'))
+    return py::none();
+  const py::ssize_t count = rows.shape(0);
+  py::object xy = rows[py::make_tuple(py::slice(0, count, 1), py::slice(0, 2, 1))];
+  const py::object first = xy[py::int_(0)];
+  const py::object last = xy[py::int_(count - 1)];
+  if (count > 1 && py::bool_(first.attr("__eq__")(last).attr("all")()))
+    xy = xy[py::slice(0, count - 1, 1)];
+  return xy;
+}
+
 // the one polygon of a GeoJSON-like geometry mapping: a Polygon, a Feature's, or the only part
 // of a MultiPolygon; anything else is refused with what it is
 py::object polygonCoordinates(const py::object& geo) {
@@ -63,6 +84,7 @@ py::object exteriorRing(const py::object& geo) {
   if (rings.size() > 1)
     geometryError("the polygon has " + std::to_string(rings.size() - 1) +
                   " interior ring(s): a convex polygon has no holes");
+  if (py::object rows = planarRows(rings[0]); !rows.is_none()) return rows;
   py::list ring;
   std::size_t k = 0;
   for (const py::handle position : py::iter(rings[0])) ring.append(planarPosition(position, k++));
