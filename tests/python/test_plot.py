@@ -98,3 +98,9 @@ def test_svg_for_notebooks():
     polygons = [e for e in root.iter() if e.tag.endswith("polygon")]
     assert len(polygons) == cells + 2  # the cells, the box, the polygon
     assert ET.fromstring(convexloc.figure_svg(6)).tag.endswith("svg")
+
+
+def test_a_large_shape_shows_its_repr_in_a_notebook():
+    big = convexloc.Polygon(regular_polygon(convexloc.SVG_LIMIT + 1))
+    assert big._repr_svg_() is None and convexloc.PolarLocator(big)._repr_svg_() is None
+    assert convexloc.Polygon(regular_polygon(100))._repr_svg_().startswith("<svg")

@@ -103,9 +103,16 @@ from .types import (  # noqa: E402
 )
 
 
+#: the most edges (triangles) a notebook draws as SVG; a larger shape shows its repr
+SVG_LIMIT = 20_000
+
+
 def _repr_svg_(self):
-    """The notebook's picture of a shape or locator: convexloc.svg(self)."""
-    return svg(self)
+    """The notebook's picture of a shape or locator, convexloc.svg(self); None (the repr is
+    shown) for a shape of more than SVG_LIMIT edges or triangles."""
+    shape = self if isinstance(self, (Polygon, Polyhedron)) else self.shape
+    size = len(shape) if isinstance(shape, Polygon) else shape.face_count
+    return svg(self) if size <= SVG_LIMIT else None
 
 
 for _cls in (Polygon, Polyhedron, *LOCATORS_2D.values(), *LOCATORS_3D.values()):
