@@ -265,8 +265,10 @@ def _trace_3d(scene: Scene, locator: Any, cells: list[Any], trace: Any, on_net: 
     signs = ", ".join(f"{face}{'+' if s > 0 else '-' if s < 0 else '0'}"
                       for face, s in trace["faces"][:6])
     more = ", ..." if len(trace["faces"]) > 6 else ""
-    scene.title += (f"; query {tuple(float(c) for c in point[0])}: {trace['location_name']}, "
-                    f"faces tested [{signs}{more}]")
+    tests = f"faces tested [{signs}{more}]" if trace["faces"] else "no face test"
+    if trace["by_radius"]:
+        tests = "decided by the cell's radii"
+    scene.title += f"; query {tuple(float(c) for c in point[0])}: {trace['location_name']}, {tests}"
 
 
 # === The entry point

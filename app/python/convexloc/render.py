@@ -74,8 +74,10 @@ def to_svg(made: Scene, width: int = 480) -> str:
            f"<title>{escape(made.title)}</title>",
            '<rect width="100%" height="100%" fill="white"/>']
     if made.title:
-        out.append(f'<text x="{margin}" y="13" font-size="11" font-family="sans-serif">'
-                   f"{escape(made.title)}</text>")
+        # a sans-serif letter is about 0.55 of the font size wide: the title fits the width
+        size = min(11.0, (width - 2 * margin) / (0.55 * len(made.title)))
+        out.append(f'<text x="{margin}" y="13" font-size="{size:.1f}" '
+                   f'font-family="sans-serif">{escape(made.title)}</text>')
     for item in made.items:
         out += _svg_item(item, xy)
     for k, (colour, words) in enumerate(made.legend):
