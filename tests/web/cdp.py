@@ -20,10 +20,12 @@ import websocket
 
 
 class Server:
-    """Serves `root` on 127.0.0.1 at a free port, in a thread."""
+    """Serves `root` on 127.0.0.1 at a free port, in a thread; `extra` ({"own": DIR}) serves
+    DIR's files at /own/ too."""
 
-    def __init__(self, root):
+    def __init__(self, root, extra=None):
         handler = functools.partial(_QuietHandler, directory=root)
+        _QuietHandler.extra = dict(extra or {})
         self.httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
         self.url = "http://127.0.0.1:%d/" % self.httpd.server_address[1]
         self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
@@ -37,6 +39,14 @@ class Server:
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):
     extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map,
                       ".wasm": "application/wasm", ".js": "text/javascript"}
+
+    extra = {}
+
+    def translate_path(self, path):
+        first, _, rest = path.lstrip("/").partition("/")
+        if first in self.extra:
+            return os.path.join(self.extra[first], *rest.split("?")[0].split("/"))
+        return super().translate_path(path)
 
     def log_message(self, *args):
         pass
