@@ -28,6 +28,13 @@ def wheel_in(b, x, y, dy, mode):
                deltaY: %f, deltaMode: %d, bubbles: true, cancelable: true}))""" % (x, y, dy, mode))
 
 
+def calm(b):
+    """Waits out the first 1.5 s after the page's first frame, when a new layout may still
+    fit the scene again (ui/frame.cpp's refitOnNewRoom)."""
+    b.wait_for("performance.now() > Module.firstFrameMs + 1700")
+    b.settle(2)
+
+
 def settled(b, frames=3):
     b.settle(frames)
     return view(b)
@@ -120,14 +127,21 @@ def tap(b, x, y):
     b.settle(3)
 
 
-def phone(b):
+def phone(b, url=None):
+    """A new page on a 390x844 phone's screen at pixel ratio 2, with touch; then `url`
+    opened. (A new page each time: Chromium's touch emulation delivered no touches to a page
+    navigated to after touch gestures on the one before, and pinched the page instead.)"""
+    b.new_page()
     b.call("Emulation.setDeviceMetricsOverride", width=MOBILE[0], height=MOBILE[1],
            deviceScaleFactor=2, mobile=True)
     b.call("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
+    if url:
+        b.open(url)
+        calm(b)
 
 
 def desktop(b, width, height):
-    b.call("Emulation.setTouchEmulationEnabled", enabled=False)
+    b.new_page()
     b.call("Emulation.setDeviceMetricsOverride", width=width, height=height,
            deviceScaleFactor=1, mobile=False)
 
@@ -138,49 +152,80 @@ def scene_point(b):
 
 
 def test_touch(b, url, check):
-    phone(b)
-    b.open(url)
+    # (3D first, each page's pinch before its drag: Chromium's touch emulation delivered
+    # nothing to a 3D page opened after the 2D one's gestures)
+    phone(b, url + "?3d")
     x, y = scene_point(b)
-    before = settled(b)
-    drag(b, [(x, y)], [(x + 60, y + 40)])
-    after = view(b)
-    moved = [after["centre2d"][i] != before["centre2d"][i] for i in (0, 1)]
-    check(all(moved) and after["scale2d"] == before["scale2d"],
-          "a one-finger drag pans the 2D scene")
+    v0 = view(b)
+    drag(b, [(x - 60, y), (x + 60, y)], [(x - 30, y), (x + 30, y)])
+    v1 = view(b)
+    check(v1["distance"] > v0["distance"] * 1.3,
+          "a two-finger pinch zooms the 3D scene out (distance x%.2f)" % (v1["distance"] / v0["distance"]))
+    drag(b, [(x, y)], [(x + 80, y)])
+    v2 = view(b)
+    check(abs(v2["yaw"] - v1["yaw"]) > 0.1, "a one-finger drag orbits the 3D scene")
+
+    phone(b, url)
+    before = view(b)
     drag(b, [(x - 40, y), (x + 40, y)], [(x - 90, y), (x + 90, y)])
     pinched = view(b)
-    check(pinched["scale2d"] > after["scale2d"] * 1.5,
-          "a two-finger spread zooms the 2D scene in (x%.2f)" % (pinched["scale2d"] / after["scale2d"]))
+    check(pinched["scale2d"] > before["scale2d"] * 1.5,
+          "a two-finger spread zooms the 2D scene in (x%.2f)" % (pinched["scale2d"] / before["scale2d"]))
     check(b.evaluate("visualViewport.scale") == 1, "the page itself keeps its scale 1")
-
-    b.open(url + "?3d")
-    v0 = settled(b)
-    drag(b, [(x, y)], [(x + 80, y)])
-    v1 = view(b)
-    check(abs(v1["yaw"] - v0["yaw"]) > 0.1, "a one-finger drag orbits the 3D scene")
-    drag(b, [(x - 60, y), (x + 60, y)], [(x - 30, y), (x + 30, y)])
-    v2 = view(b)
-    check(v2["distance"] > v1["distance"] * 1.3,
-          "a two-finger pinch zooms the 3D scene out (distance x%.2f)" % (v2["distance"] / v1["distance"]))
-    check(b.evaluate("visualViewport.scale") == 1, "the page's scale is still 1")
+    drag(b, [(x, y)], [(x + 60, y + 40)])
+    after = view(b)
+    moved = [after["centre2d"][i] != pinched["centre2d"][i] for i in (0, 1)]
+    check(all(moved) and after["scale2d"] == pinched["scale2d"],
+          "a one-finger drag pans the 2D scene")
 
 
-def test_taps(b, url, check, buttons):
-    """Three taps on the 2D and 3D buttons, each acting on its own button (`buttons`: the
-    CSS positions of the 2D and the 3D button on the phone's page)."""
-    phone(b)
-    b.open(url)
-    b.settle(3)
+# the phone's buttons (CSS pixels): the drawer's in the lower left corner, the 2D and 3D
+# buttons at the drawer's top, the lecture's next slide at the bottom's middle
+PHONE_BUTTONS = {"panels": (40, 812), 2: (90, 44), 3: (260, 44), "next": (212, 812)}
+
+
+def test_taps(b, url, check):
+    """The drawer opened by its button, then three taps on the 3D, 2D and 3D buttons, each
+    acting on its own button (not where the last tap landed)."""
+    phone(b, url)
+    width = b.evaluate("Module.canvas.width") / 2
+    tap(b, *PHONE_BUTTONS["panels"])
+    check(view(b)["drawerOpen"], "a tap on Panels opens the drawer")
     got = []
     for which in (3, 2, 3):
-        tap(b, *buttons[which])
+        tap(b, *PHONE_BUTTONS[which])
         got.append(view(b)["dim"])
     check(got == [3, 2, 3], "three taps on 3D, 2D, 3D each act on their own button: %s" % got)
+    tap(b, *PHONE_BUTTONS["panels"])
+    x, y = scene_point(b)
+    drag(b, [(x, y)], [(x + 40, y)])
+    closed = view(b)
+    check(closed["dim"] == 3 and not closed["drawerOpen"] and width == MOBILE[0],
+          "the drawer closes again, the scene has the phone's whole width (%d CSS px)" % width)
+
+
+def test_phone_lecture(b, url, check):
+    phone(b, url + "?lecture=paper")
+    tap(b, *PHONE_BUTTONS["next"])
+    after_button = view(b)["slide"]
+    # a quick swipe to the left, high on the slide (no box there)
+    touch(b, "touchStart", [(300, 200)])
+    for x in (250, 180, 100):
+        touch(b, "touchMove", [(x, 205)])
+    touch(b, "touchEnd", [])
+    b.settle(4)
+    after_swipe = view(b)["slide"]
+    check(after_button == 1 and after_swipe == 2,
+          "on a phone the lecture's > button and a swipe to the left go on (slides %d, %d)" %
+          (after_button, after_swipe))
 
 
 # === Errors on the page
 
 BAD_LINKS = ["?figure=99", "?slide=-1", "?lecture=paper&slide=-1", "?spray=abc", "?bogus"]
+
+
+SHOWN = "(document.getElementById('problems') || {hidden: true}).hidden === false"
 
 
 def problem_text(b):
@@ -192,7 +237,7 @@ def test_bad_links(b, url, check):
     for link in BAD_LINKS:
         b.call("Page.navigate", url=url + link)
         try:
-            b.wait_for("!document.getElementById('problems').hidden", 5)
+            b.wait_for(SHOWN, 5)
             b.wait_for("typeof Module === 'object' && Module.framesDrawn >= 3", 20)
             text = problem_text(b)
         except AssertionError:
@@ -211,7 +256,7 @@ def test_no_webgl2(b, url, check):
     added = b.call("Page.addScriptToEvaluateOnNewDocument", source=NO_WEBGL2)
     try:
         b.call("Page.navigate", url=url)
-        b.wait_for("!document.getElementById('problems').hidden", 5)
+        b.wait_for(SHOWN, 5)
         text = problem_text(b)
     except AssertionError:
         text = ""

@@ -27,9 +27,6 @@ WIDTH, HEIGHT = 1280, 800
 # the scene's part of the window at 1280 x 800: between the left and the right panel
 SCENE = (345, 80, 945, 790)
 
-# the 3D and the 2D button on a 390x844 phone (CSS pixels)
-PHONE_BUTTONS = {2: (100, 60), 3: (290, 60)}
-
 failures = []
 
 
@@ -291,7 +288,8 @@ def main():
         device_tests.test_own_lecture(browser, server.url, check, lecture_folder)
         device_tests.test_panel_wheel(browser, server.url, check)
         device_tests.test_touch(browser, server.url, check)
-        device_tests.test_taps(browser, server.url, check, PHONE_BUTTONS)
+        device_tests.test_taps(browser, server.url, check)
+        device_tests.test_phone_lecture(browser, server.url, check)
         check(browser.errors == [], "no console errors: %s" % browser.errors[:5])
     finally:
         browser.close()

@@ -32,17 +32,18 @@ EM_JS(void, convexlocDownload, (const char* path, const char* name, const char* 
   FS.unlink(file);
   if (Module.onDownload) Module.onDownload(UTF8ToString(name), data.length);
 });
-EM_JS(void, convexlocProblem, (const char* text), {
+EM_JS(void, convexlocPageProblem, (const char* text), {
   if (Module.onProblem) Module.onProblem(UTF8ToString(text));
 });
 EM_JS(void, convexlocFrameDrawn, (bool overUi, int dim, double scale2d, double centreX,
                                   double centreY, double distance, double yaw, double pitch,
                                   double panelScroll, double panelScrollMax, int slide,
-                                  int slides), {
+                                  int slides, bool drawerOpen), {
   Module.pointerOverUi = overUi;
   Module.view = {dim: dim, scale2d: scale2d, centre2d: [centreX, centreY], distance: distance,
                  yaw: yaw, pitch: pitch, panelScroll: panelScroll,
-                 panelScrollMax: panelScrollMax, slide: slide, slides: slides};
+                 panelScrollMax: panelScrollMax, slide: slide, slides: slides,
+                 drawerOpen: drawerOpen};
   if (Module.onFrame) Module.onFrame();
 });
 // clang-format on
@@ -65,6 +66,7 @@ std::string asInUrl(std::span<const std::string_view> group) {
 
 // a message of the command line's parser in the page's words: no leading dashes
 std::string inPageWords(std::string text) {
+  if (const std::size_t at = text.find(" (see --help)"); at != std::string::npos) text.erase(at);
   for (std::size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at))
     text.erase(at, 2);
   return text;
@@ -118,7 +120,7 @@ void preparePage() {
 
 void showPageProblem(const std::string& text) {
   std::cerr << "convexloc-viewer: " << text << "\n";
-  convexlocProblem(text.c_str());
+  convexlocPageProblem(text.c_str());
 }
 
 void frameDrawn(const Model& model, std::ptrdiff_t slide, std::size_t slides) {
@@ -128,7 +130,7 @@ void frameDrawn(const Model& model, std::ptrdiff_t slide, std::size_t slides) {
   convexlocFrameDrawn(ImGui::GetIO().WantCaptureMouse, model.dim == Dim::Two ? 2 : 3, c2.scale(),
                       c2.centre().x, c2.centre().y, c3.distance(), c3.yaw(), c3.pitch(),
                       panel ? panel->Scroll.y : -1.0, panel ? panel->ScrollMax.y : -1.0,
-                      static_cast<int>(slide), static_cast<int>(slides));
+                      static_cast<int>(slide), static_cast<int>(slides), model.settings.drawerOpen);
 }
 
 void offerDownloads() {

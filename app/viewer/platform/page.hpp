@@ -30,8 +30,9 @@ void showPageProblem(const std::string& text);
 
 // Web page: tells the page's script a frame was drawn (it counts them; the first one takes
 // the loading note away), whether the pointer is over a panel, and the view's state for
-// its tests and its lecture buttons: the cameras, the left panel's scroll, the lecture's
-// `slide` (from 0; -1 without a lecture) of its `slides`. The desktop: nothing.
+// its tests and its swipes: the cameras, the left panel's scroll, the lecture's `slide`
+// (from 0; -1 without a lecture) of its `slides`, whether a phone's drawer is open. The
+// desktop: nothing.
 void frameDrawn(const Model& model, std::ptrdiff_t slide, std::size_t slides);
 
 // Web page: offers every PNG and SVG written into the working directory since the last call

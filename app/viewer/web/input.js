@@ -68,15 +68,27 @@
       if (touch.mode !== 'pending') return;
       mouse('mousedown', touch.start, 2);
       touch.mode = 'right';
+      touch.frame = Module.framesDrawn;
     }, LONG_PRESS_MS);
   }
 
-  // the button a finger holds goes up where the finger is
+  // `then` once the viewer has drawn a frame after frame `n`
+  function afterFrame(n, then) {
+    if (Module.framesDrawn > n) then();
+    else requestAnimationFrame(() => afterFrame(n, then));
+  }
+
+  // The button a finger holds goes up where the finger is: the pointer moves there in a
+  // frame after the press, the release in the next (a press, a move and a release in one
+  // frame would read as a click where the finger lifted).
   function release() {
     clearTimeout(touch.timer);
     if (touch.mode !== 'drag' && touch.mode !== 'right') return;
-    mouse('mousemove', touch.last);
-    mouse('mouseup', touch.last, touch.mode === 'drag' ? 0 : 2);
+    const p = touch.last, button = touch.mode === 'drag' ? 0 : 2;
+    afterFrame(touch.frame, () => {
+      mouse('mousemove', p);
+      afterFrame(Module.framesDrawn, () => mouse('mouseup', p, button));
+    });
   }
 
   function startPinch(list) {
@@ -131,10 +143,15 @@
       Module._convexloc_lecture_step(dx < 0 ? 1 : -1);
   }
 
-  // the last finger up: a finger that never went past the slop is a click at its spot
+  // The last finger up: a finger that never went past the slop is a click at its spot; one
+  // that went past it before the viewer drew a frame, a flick (a swipe, never a click).
   function end() {
     clearTimeout(touch.timer);
-    if (touch.mode === 'pending') {
+    const flick = Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y) > SLOP;
+    if (touch.mode === 'pending' && flick) {
+      touch.overUi = !!Module.pointerOverUi;
+      swipe(touch.last);
+    } else if (touch.mode === 'pending') {
       mouse('mousedown', touch.start, 0);
       mouse('mouseup', touch.start, 0);
     } else {
