@@ -242,6 +242,9 @@ int Viewer::start(const char* argv0) {
   }
   ui_ = startUi(model_, options_, gl, samples_);
   ui_.exporting = headless_;  // no tooltips in written files
+#ifdef __EMSCRIPTEN__
+  ui_.webPage = true;
+#endif
   if (!options_.lecture.empty()) {
     // a lecture's slides give their own text size: --font-scale zooms it
     model_.settings.textZoom = options_.fontScale;

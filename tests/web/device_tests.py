@@ -7,6 +7,7 @@ picker and by ?lecture=URL. The checks read the view's state the page keeps afte
 
 import os
 import tempfile
+import time
 
 MOBILE = (390, 844)
 
@@ -103,9 +104,11 @@ def test_panel_wheel(b, url, check):
 # === Touch on a phone
 
 
-def touch(b, kind, points):
+def touch(b, kind, points, at=None):
+    """Touch points (x, y) down, moved or (none) lifted; `at`: the event's time (s)."""
+    extra = {"timestamp": at} if at is not None else {}
     b.call("Input.dispatchTouchEvent", type=kind,
-           touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)])
+           touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)], **extra)
 
 
 def drag(b, points_from, points_to, steps=8):
@@ -208,11 +211,12 @@ def test_phone_lecture(b, url, check):
     phone(b, url + "?lecture=paper")
     tap(b, *PHONE_BUTTONS["next"])
     after_button = view(b)["slide"]
-    # a quick swipe to the left, high on the slide (no box there)
-    touch(b, "touchStart", [(300, 200)])
-    for x in (250, 180, 100):
-        touch(b, "touchMove", [(x, 205)])
-    touch(b, "touchEnd", [])
+    # a quick swipe to the left, high on the slide (no box there), 0.2 s from down to up
+    t = time.time()
+    touch(b, "touchStart", [(300, 200)], t)
+    for k, x in enumerate((250, 180, 100)):
+        touch(b, "touchMove", [(x, 205)], t + 0.05 * (k + 1))
+    touch(b, "touchEnd", [], t + 0.2)
     b.settle(4)
     after_swipe = view(b)["slide"]
     check(after_button == 1 and after_swipe == 2,

@@ -60,8 +60,8 @@
   }
 
   // the first finger: the pointer goes to it at once, the press waits for what it becomes
-  function begin(p) {
-    Object.assign(touch, {mode: 'pending', start: p, last: p, startMs: performance.now(),
+  function begin(p, ms) {
+    Object.assign(touch, {mode: 'pending', start: p, last: p, startMs: ms,
                           frame: Module.framesDrawn});
     mouse('mousemove', p);
     touch.timer = setTimeout(() => {
@@ -135,27 +135,28 @@
   }
 
   // a quick drag across the scene in a lecture: the next slide (to the left) or the previous
-  function swipe(p) {
+  // (`ms`: when the finger lifted, as the event's time stamp; a busy page handles it later)
+  function swipe(p, ms) {
     const dx = p.x - touch.start.x, dy = p.y - touch.start.y;
     const lecture = Module.view && Module.view.slides > 1;
-    if (lecture && !touch.overUi && performance.now() - touch.startMs < SWIPE_MS &&
+    if (lecture && !touch.overUi && ms - touch.startMs < SWIPE_MS &&
         Math.abs(dx) > SWIPE_PX && Math.abs(dx) > 2 * Math.abs(dy))
       Module._convexloc_lecture_step(dx < 0 ? 1 : -1);
   }
 
   // The last finger up: a finger that never went past the slop is a click at its spot; one
   // that went past it before the viewer drew a frame, a flick (a swipe, never a click).
-  function end() {
+  function end(ms) {
     clearTimeout(touch.timer);
     const flick = Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y) > SLOP;
     if (touch.mode === 'pending' && flick) {
       touch.overUi = !!Module.pointerOverUi;
-      swipe(touch.last);
+      swipe(touch.last, ms);
     } else if (touch.mode === 'pending') {
       mouse('mousedown', touch.start, 0);
       mouse('mouseup', touch.start, 0);
     } else {
-      if (touch.mode === 'drag') swipe(touch.last);
+      if (touch.mode === 'drag') swipe(touch.last, ms);
       release();
     }
     touch.mode = 'none';
@@ -168,7 +169,7 @@
     if (!ready()) return;
     const n = e.touches.length;
     if (e.type === 'touchstart') {
-      if (n === 1 && touch.mode === 'none') begin(pointOf(e.touches[0]));
+      if (n === 1 && touch.mode === 'none') begin(pointOf(e.touches[0]), e.timeStamp);
       else if (n >= 2 && touch.mode !== 'pinch' && touch.mode !== 'over') startPinch(e.touches);
     } else if (e.type === 'touchmove') {
       if (touch.mode === 'pinch' && n >= 2) pinch(pairOf(e.touches));
@@ -179,7 +180,7 @@
     } else if (touch.mode === 'pinch' || touch.mode === 'over') {
       touch.mode = n === 0 ? 'none' : 'over';
     } else if (n === 0) {
-      end();
+      end(e.timeStamp);
     }
   }
 
