@@ -5,7 +5,8 @@ checks what a student does: the page loads without console errors, the default s
 drawn where the shape is, a click places a point and its trace appears, PageDown moves a
 lecture on (to what ?slide=2 shows), a figure URL opens that figure at its step, a dropped
 OFF file and a file chosen in the picker are drawn, F12 and V give PNG and SVG downloads,
-and the canvas follows the window's size and its device pixel ratio.
+and the canvas follows the window's size and its device pixel ratio; then the wheel, touch,
+message box and own-lecture checks of device_tests.py.
 
 Usage: tests/web/web_page_test.py [SITE_DIR]   (default build-web/site); exit 1 on a failure.
 Prints the first frame's time and the frame rate with 10^5 sprayed points (figures for the
@@ -256,7 +257,7 @@ def test_sizes(site):
             packed = len(gzip.compress(f.read(), 9))
         print("      %-24s %8d bytes gzip -9" % (name, packed))
         total += packed
-    check(total < 8 * 1000 * 1000, "the page's files are %.2f MB compressed (under 8)" % (total / 1e6))
+    check(total < 2 * 1000 * 1000, "the page's files are %.2f MB compressed (under 2)" % (total / 1e6))
 
 
 def main():

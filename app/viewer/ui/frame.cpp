@@ -187,8 +187,10 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   if (rw > 0.0f) {
     rightPanel(model, window, rw);
   } else {
-    if (model.settings.showLegend) legendOverlay(model, ui, area, window, now);
-    if (s.showUi && !(s.drawer && s.drawerOpen) && panelsOf(model).inspectable(model))
+    // an open drawer covers the scene: nothing floats over it
+    const bool drawerOpen = s.drawer && s.drawerOpen;
+    if (s.showLegend && !drawerOpen) legendOverlay(model, ui, area, window, now);
+    if (s.showUi && !drawerOpen && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
   stepsWindow(model, ui, now);  // also with the panels hidden; the fit leaves it room

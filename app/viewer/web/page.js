@@ -115,6 +115,7 @@ var Module = {
   preRun: [() => convexlocFetchLectures()],
   onRuntimeInitialized: () => convexlocOpenWaiting(),
   onFrame: () => {
+    document.body.classList.toggle('drawer-open', !!(Module.view && Module.view.drawerOpen));
     if (++Module.framesDrawn > 1) return;
     Module.firstFrameMs = performance.now();
     document.getElementById('loading').remove();
