@@ -59,7 +59,8 @@ def test_wheel(b, url, check):
     check(abs(d4 / d0 - 1.0) < 1e-6, "a page down (deltaMode 2) is one notch (x%.3f)" % (d4 / d3))
     wheel(b, 640, 420, 5000)
     d5 = settled(b)["distance"]
-    check(1.0 < d5 / d4 <= 1.2 ** 3 + 1e-9, "a huge delta zooms at most 3 notches (x%.3f)" % (d5 / d4))
+    check(1.0 < d5 / d4 <= 1.2 ** 3 + 1e-9,
+          "a huge delta zooms at most 3 notches (x%.3f)" % (d5 / d4))
 
     b.open(url)
     s0 = settled(b)["scale2d"]
@@ -163,17 +164,30 @@ def test_touch(b, url, check):
     drag(b, [(x - 60, y), (x + 60, y)], [(x - 30, y), (x + 30, y)])
     v1 = view(b)
     check(v1["distance"] > v0["distance"] * 1.3,
-          "a two-finger pinch zooms the 3D scene out (distance x%.2f)" % (v1["distance"] / v0["distance"]))
+          "a two-finger pinch zooms the 3D scene out (distance x%.2f)" %
+          (v1["distance"] / v0["distance"]))
     drag(b, [(x, y)], [(x + 80, y)])
     v2 = view(b)
     check(abs(v2["yaw"] - v1["yaw"]) > 0.1, "a one-finger drag orbits the 3D scene")
+    # a long press is the right button: dragged on, it pans (as a right drag) and never orbits
+    touch(b, "touchStart", [(x, y)])
+    b.wait_for("performance.now() > %f" % (b.evaluate("performance.now()") + 700))
+    for k in range(1, 6):
+        touch(b, "touchMove", [(x + 12 * k, y + 8 * k)])
+        b.settle(1)
+    touch(b, "touchEnd", [])
+    b.settle(3)
+    v3 = view(b)
+    check(v3["yaw"] == v2["yaw"] and v3["pitch"] == v2["pitch"] and v3["target"] != v2["target"],
+          "a long press and a drag pan the 3D scene as a right drag does, no orbit")
 
     phone(b, url)
     before = view(b)
     drag(b, [(x - 40, y), (x + 40, y)], [(x - 90, y), (x + 90, y)])
     pinched = view(b)
     check(pinched["scale2d"] > before["scale2d"] * 1.5,
-          "a two-finger spread zooms the 2D scene in (x%.2f)" % (pinched["scale2d"] / before["scale2d"]))
+          "a two-finger spread zooms the 2D scene in (x%.2f)" %
+          (pinched["scale2d"] / before["scale2d"]))
     check(b.evaluate("visualViewport.scale") == 1, "the page itself keeps its scale 1")
     drag(b, [(x, y)], [(x + 60, y + 40)])
     after = view(b)

@@ -257,7 +257,8 @@ def test_sizes(site):
             packed = len(gzip.compress(f.read(), 9))
         print("      %-24s %8d bytes gzip -9" % (name, packed))
         total += packed
-    check(total < 2 * 1000 * 1000, "the page's files are %.2f MB compressed (under 2)" % (total / 1e6))
+    check(total < 2 * 1000 * 1000,
+          "the page's files are %.2f MB compressed (under 2)" % (total / 1e6))
 
 
 def main():

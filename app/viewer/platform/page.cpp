@@ -37,11 +37,13 @@ EM_JS(void, convexlocPageProblem, (const char* text), {
 });
 EM_JS(void, convexlocFrameDrawn, (bool overUi, int dim, double scale2d, double centreX,
                                   double centreY, double distance, double yaw, double pitch,
+                                  double targetX, double targetY, double targetZ,
                                   double panelScroll, double panelScrollMax, int slide,
                                   int slides, bool drawerOpen), {
   Module.pointerOverUi = overUi;
   Module.view = {dim: dim, scale2d: scale2d, centre2d: [centreX, centreY], distance: distance,
-                 yaw: yaw, pitch: pitch, panelScroll: panelScroll,
+                 yaw: yaw, pitch: pitch, target: [targetX, targetY, targetZ],
+                 panelScroll: panelScroll,
                  panelScrollMax: panelScrollMax, slide: slide, slides: slides,
                  drawerOpen: drawerOpen};
   if (Module.onFrame) Module.onFrame();
@@ -129,8 +131,9 @@ void frameDrawn(const Model& model, std::ptrdiff_t slide, std::size_t slides) {
   const Camera3D& c3 = model.camera3d;
   convexlocFrameDrawn(ImGui::GetIO().WantCaptureMouse, model.dim == Dim::Two ? 2 : 3, c2.scale(),
                       c2.centre().x, c2.centre().y, c3.distance(), c3.yaw(), c3.pitch(),
-                      panel ? panel->Scroll.y : -1.0, panel ? panel->ScrollMax.y : -1.0,
-                      static_cast<int>(slide), static_cast<int>(slides), model.settings.drawerOpen);
+                      c3.target().x, c3.target().y, c3.target().z, panel ? panel->Scroll.y : -1.0,
+                      panel ? panel->ScrollMax.y : -1.0, static_cast<int>(slide),
+                      static_cast<int>(slides), model.settings.drawerOpen);
 }
 
 void offerDownloads() {

@@ -42,7 +42,8 @@ async function convexlocWriteFiles(files, root) {
   const base = root + '/' + (++convexlocUploads);
   const lecture = files.find((f) => /\.lecture$/i.test(f.name));
   if (!lecture) {
-    for (const f of files) convexlocWrite(base + '/' + f.name, new Uint8Array(await f.arrayBuffer()));
+    for (const f of files)
+      convexlocWrite(base + '/' + f.name, new Uint8Array(await f.arrayBuffer()));
     return base + '/' + files[files.length - 1].name;
   }
   const text = await lecture.text();
@@ -55,7 +56,8 @@ async function convexlocWriteFiles(files, root) {
   for (const name of named) {
     const leaf = name.slice(name.lastIndexOf('/') + 1);
     const file = files.find((f) => f.name === leaf);
-    if (file) convexlocWrite(convexlocNormal(dir + '/' + name), new Uint8Array(await file.arrayBuffer()));
+    if (file)
+      convexlocWrite(convexlocNormal(dir + '/' + name), new Uint8Array(await file.arrayBuffer()));
     else if (!name.startsWith('/')) missing.push(name);
   }
   if (missing.length)
@@ -89,7 +91,8 @@ async function convexlocFetchLecture(remote) {
   for (const name of convexlocNamedFiles(new TextDecoder().decode(bytes))) {
     if (name.startsWith('/')) continue;
     try {
-      convexlocWrite(convexlocNormal(dir + '/' + name), await convexlocFetch(new URL(name, remote.url)));
+      const bytes = await convexlocFetch(new URL(name, remote.url));
+      convexlocWrite(convexlocNormal(dir + '/' + name), bytes);
     } catch (e) {
       convexlocProblem('The lecture ' + remote.url + ' names ' + name + ', which could not be ' +
                        'fetched (' + e.message + '): its slides show what they can without it.');

@@ -129,7 +129,8 @@
     const was = touch.last;
     touch.last = p;
     if (touch.mode === 'pending') return decide(p);
-    if (touch.mode === 'scroll') return Module._convexloc_scroll_pixels((p.y - was.y) * pixelRatio());
+    if (touch.mode === 'scroll')
+      return Module._convexloc_scroll_pixels((p.y - was.y) * pixelRatio());
     if (touch.mode === 'drag' && Module.framesDrawn === touch.frame) return;
     if (touch.mode === 'drag' || touch.mode === 'right') mouse('mousemove', p);
   }

@@ -71,7 +71,8 @@ function convexlocShowLoad() {
   const total = convexlocLoad.data[1] + convexlocLoad.wasm[1];
   if (total > 0) convexlocBar.value = Math.min(1, done / total);
   const ready = convexlocLoad.wasm[1] > 0 && convexlocLoad.wasm[0] >= convexlocLoad.wasm[1];
-  convexlocStatus.textContent = ready && done >= total ? 'Starting convexloc…' : 'Loading convexloc…';
+  convexlocStatus.textContent =
+      ready && done >= total ? 'Starting convexloc…' : 'Loading convexloc…';
 }
 
 // the .wasm fetched with its progress counted, then compiled (instead of Emscripten's fetch)
