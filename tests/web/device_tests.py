@@ -331,3 +331,22 @@ def test_own_lecture(b, url, check, folder):
     b.call("DOM.setFileInputFiles", nodeId=node["nodeId"], files=[
         os.path.join(folder, n) for n in ("mine.lecture", "shapes/triangle.txt", "octahedron.off")])
     plays(b, check, "the picker (three files at once)")
+
+
+def test_early_file(b, url, check, folder):
+    """A file chosen while the page still loads opens once the viewer has started."""
+    b.call("Page.navigate", url=url)
+    b.wait_for("document.getElementById('file') !== null", 10)
+    early = not b.evaluate("typeof Module === 'object' && !!Module.calledRun")
+    doc = b.call("DOM.getDocument")
+    node = b.call("DOM.querySelector", nodeId=doc["root"]["nodeId"], selector="#file")
+    b.call("DOM.setFileInputFiles", nodeId=node["nodeId"],
+           files=[os.path.join(folder, "octahedron.off")])
+    b.wait_for("typeof Module === 'object' && Module.framesDrawn >= 3", 30)
+    try:
+        b.wait_for("Module.view && Module.view.dim === 3", 10)
+        opened = True
+    except AssertionError:
+        opened = False
+    check(opened, "a file chosen %s opens in the viewer" %
+          ("while the page loads" if early else "(the page had already started)"))

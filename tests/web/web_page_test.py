@@ -288,6 +288,7 @@ def main():
         device_tests.test_bad_links(browser, server.url, check)
         device_tests.test_no_webgl2(browser, server.url, check)
         device_tests.test_own_lecture(browser, server.url, check, lecture_folder)
+        device_tests.test_early_file(browser, server.url, check, lecture_folder)
         device_tests.test_panel_wheel(browser, server.url, check)
         device_tests.test_touch(browser, server.url, check)
         device_tests.test_taps(browser, server.url, check)
