@@ -338,10 +338,15 @@ def test_early_file(b, url, check, folder):
     b.call("Page.navigate", url=url)
     b.wait_for("document.getElementById('file') !== null", 10)
     early = not b.evaluate("typeof Module === 'object' && !!Module.calledRun")
-    doc = b.call("DOM.getDocument")
-    node = b.call("DOM.querySelector", nodeId=doc["root"]["nodeId"], selector="#file")
-    b.call("DOM.setFileInputFiles", nodeId=node["nodeId"],
-           files=[os.path.join(folder, "octahedron.off")])
+    for attempt in range(5):  # the document may still be replaced while it loads
+        try:
+            doc = b.call("DOM.getDocument")
+            node = b.call("DOM.querySelector", nodeId=doc["root"]["nodeId"], selector="#file")
+            b.call("DOM.setFileInputFiles", nodeId=node["nodeId"],
+                   files=[os.path.join(folder, "octahedron.off")])
+            break
+        except RuntimeError:
+            time.sleep(0.1)
     b.wait_for("typeof Module === 'object' && Module.framesDrawn >= 3", 30)
     try:
         b.wait_for("Module.view && Module.view.dim === 3", 10)
