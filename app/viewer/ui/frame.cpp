@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "ui/overlays.hpp"
 #include "ui/panels/lecture_panel.hpp"
@@ -138,14 +139,17 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
   ImGui::End();
 }
 
-// a small window of buttons at `pos`, its corner `pivot` (0..1 each way) there
+// a small window of buttons at `pos`, its corner `pivot` (0..1 each way) there, over every
+// other window (a Steps window that came later too)
 bool beginButtons(const char* name, ImVec2 pos, ImVec2 pivot) {
   ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
   ImGui::SetNextWindowBgAlpha(0.85f);
-  return ImGui::Begin(name, nullptr,
-                      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                          ImGuiWindowFlags_NoFocusOnAppearing);
+  const bool open = ImGui::Begin(name, nullptr,
+                                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                     ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+  return open;
 }
 
 // A phone's buttons, big enough for a finger: the drawer's in the lower left corner and, in
