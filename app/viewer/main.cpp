@@ -251,6 +251,8 @@ int Viewer::start(const char* argv0) {
     model_.settings.fontScale = 1.0f;
   }
   if (!cv::startLecture(model_, ui_, options_, headless_)) return 1;
+  // the web page: what the link asked for and could not be shown, in the page's message box
+  if (ui_.webPage && !model_.error().empty()) cv::showPageProblem(model_.error());
   exporter_ = std::make_unique<cv::SlideExporter>(options_.exportDir);
   style_ = std::make_unique<cv::StyleKeeper>(model_.settings, window_.contentScale());
   const std::string shaderDir = shaderDirFor(options_, argv0);
