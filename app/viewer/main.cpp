@@ -107,9 +107,29 @@ cv::UiState startUi(cv::Model& model, const cv::Options& options, const cv::GlIn
   return ui;
 }
 
-// the files dropped on the window become the scene; true when there were any
+// A lecture dropped on the window or picked in the web page, at its first slide: the text
+// size the window had becomes the lecture's zoom, as --font-scale is at start.
+void openLecture(cv::Model& model, cv::UiState& ui, const std::string& path) {
+  if (ui.show.lecture.slides.empty()) {
+    model.settings.textZoom = model.settings.fontScale;
+    model.settings.fontScale = 1.0f;
+  }
+  cv::Options options;
+  options.lecture = path;
+  cv::startLecture(model, ui, options, false);
+}
+
+// the files dropped on the window become the scene, or the lecture among them (the others
+// are its shapes); true when there were any
 bool openDropped(cv::Model& model, cv::UiState& ui) {
   const std::vector<std::string> files = cv::takeDroppedFiles();
+  const auto lecture = std::find_if(files.begin(), files.end(), [](const std::string& f) {
+    return std::filesystem::path(f).extension() == ".lecture";
+  });
+  if (lecture != files.end()) {
+    openLecture(model, ui, *lecture);
+    return true;
+  }
   for (const std::string& path : files)
     if (model.open(path)) std::snprintf(ui.path, sizeof ui.path, "%s", path.c_str());
   return !files.empty();
@@ -222,12 +242,17 @@ int Viewer::start(const char* argv0) {
   }
   ui_ = startUi(model_, options_, gl, samples_);
   ui_.exporting = headless_;  // no tooltips in written files
+#ifdef __EMSCRIPTEN__
+  ui_.webPage = true;
+#endif
   if (!options_.lecture.empty()) {
     // a lecture's slides give their own text size: --font-scale zooms it
     model_.settings.textZoom = options_.fontScale;
     model_.settings.fontScale = 1.0f;
   }
   if (!cv::startLecture(model_, ui_, options_, headless_)) return 1;
+  // the web page: what the link asked for and could not be shown, in the page's message box
+  if (ui_.webPage && !model_.error().empty()) cv::showPageProblem(model_.error());
   exporter_ = std::make_unique<cv::SlideExporter>(options_.exportDir);
   style_ = std::make_unique<cv::StyleKeeper>(model_.settings, window_.contentScale());
   const std::string shaderDir = shaderDirFor(options_, argv0);
@@ -245,6 +270,7 @@ bool Viewer::frame() {
   stats_.begin();
   // the web page, idle: nothing new to draw, the picture on the page stays
   if (!window_.takeEvents(!headless_ && idle_.idle())) return true;
+  model_.settings.drawer = window_.narrow();
   // a slide's page scales with the window; outside the ImGui frame, a new text size on
   // screen (a new page scale, zoom or text size) makes the font again and refits the scene
   model_.settings.pageScale =
@@ -274,8 +300,8 @@ bool Viewer::frame() {
   window_.renderImGui();
 
   stats_.count();
-  const bool lastFrame = writeFrameFiles(options_, headless_, stats_, size, model_, view_, ui_,
-                                         *exporter_, exitCode_);
+  const bool lastFrame =
+      writeFrameFiles(options_, headless_, stats_, size, model_, view_, ui_, *exporter_, exitCode_);
   cv::offerDownloads();
   if (headless_) cv::finishGl();  // time what the GL really did
   window_.swapBuffers();
@@ -284,7 +310,8 @@ bool Viewer::frame() {
   ui_.reloadShaders = false;
   stats_.end();
   ui_.frameMs = stats_.smoothedMs();
-  cv::frameDrawn();
+  const std::size_t slides = ui_.show.lecture.slides.size();
+  cv::frameDrawn(model_, slides == 0 ? -1 : static_cast<std::ptrdiff_t>(ui_.show.current), slides);
   // --export: a lecture with problems wrote its good slides, and says so by its exit code
   if (lastFrame && exporter_->active() && !ui_.show.lecture.allProblems().empty()) exitCode_ = 1;
   if (lastFrame && headless_) printSummary();
@@ -295,16 +322,15 @@ void Viewer::printSummary() const {
   std::printf(
       "convexloc-viewer: %d frames at %dx%d, %zu points (%zu drawn in the last), %s, mean %.2f "
       "ms/frame after the first (%s)\n",
-      stats_.frames(), options_.width, options_.height, renderer_.pointCount(),
-      view_.pointsDrawn(), options_.animate ? "camera moving" : "camera still", stats_.meanMs(),
-      ui_.glInfo.c_str());
+      stats_.frames(), options_.width, options_.height, renderer_.pointCount(), view_.pointsDrawn(),
+      options_.animate ? "camera moving" : "camera still", stats_.meanMs(), ui_.glInfo.c_str());
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::vector<std::string_view> args(argv + 1, argv + argc);
-  const cv::ParsedOptions parsed = cv::parseOptions(args);
+  const cv::ParsedOptions parsed = cv::parsePageOptions(args);
   if (const int code = answerWithoutWindow(parsed); code >= 0) return code;
   const cv::Options& options = parsed.options;
   if (!cv::displayAvailable()) {

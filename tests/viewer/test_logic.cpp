@@ -289,6 +289,29 @@ TEST(Interaction, WheelZoomsAtTheCursor) {
   EXPECT_GT(m.camera2d.scale(), 1.4);
 }
 
+// a pinch zooms about its centre and pans even where ImGui has the mouse (over a panel)
+TEST(Interaction, PinchZoomsAboutItsCentreAndPansOverAPanel) {
+  cv::Model m = fittedModel();
+  cv::Interaction ia;
+  cv::PointerInput in = at({300.0, 600.0});
+  in.captured = true;
+  const glm::dvec2 before = m.camera2d.toWorld(in.pos);
+  const double scale = m.camera2d.scale();
+  in.zoom = 1.5;
+  ia.update(in, m);
+  const glm::dvec2 after = m.camera2d.toWorld(in.pos);
+  EXPECT_NEAR(after.x, before.x, 1e-9);
+  EXPECT_NEAR(after.y, before.y, 1e-9);
+  EXPECT_NEAR(m.camera2d.scale(), 1.5 * scale, 1e-9 * scale);
+  in.zoom = 1.0;
+  in.pan = {40.0, -10.0};
+  ia.update(in, m);
+  const glm::dvec2 moved = m.camera2d.toScreen(before);
+  EXPECT_NEAR(moved.x, in.pos.x + 40.0, 1e-6);
+  EXPECT_NEAR(moved.y, in.pos.y - 10.0, 1e-6);
+  EXPECT_FALSE(m.scene2d.probe());
+}
+
 TEST(Interaction, ClickPlacesDragPans) {
   cv::Model m = fittedModel();
   cv::Interaction ia;

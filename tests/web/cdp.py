@@ -20,10 +20,12 @@ import websocket
 
 
 class Server:
-    """Serves `root` on 127.0.0.1 at a free port, in a thread."""
+    """Serves `root` on 127.0.0.1 at a free port, in a thread; `extra` ({"own": DIR}) serves
+    DIR's files at /own/ too."""
 
-    def __init__(self, root):
+    def __init__(self, root, extra=None):
         handler = functools.partial(_QuietHandler, directory=root)
+        _QuietHandler.extra = dict(extra or {})
         self.httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
         self.url = "http://127.0.0.1:%d/" % self.httpd.server_address[1]
         self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
@@ -37,6 +39,14 @@ class Server:
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):
     extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map,
                       ".wasm": "application/wasm", ".js": "text/javascript"}
+
+    extra = {}
+
+    def translate_path(self, path):
+        first, _, rest = path.lstrip("/").partition("/")
+        if first in self.extra:
+            return os.path.join(self.extra[first], *rest.split("?")[0].split("/"))
+        return super().translate_path(path)
 
     def log_message(self, *args):
         pass
@@ -54,18 +64,32 @@ class Browser:
              "--no-first-run", "--no-default-browser-check", "--disable-extensions",
              "--hide-scrollbars", "about:blank"],
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        port = self._port()
-        with urllib.request.urlopen("http://127.0.0.1:%d/json/list" % port) as r:
+        self.port = self._port()
+        with urllib.request.urlopen("http://127.0.0.1:%d/json/list" % self.port) as r:
             targets = json.load(r)
-        page = next(t for t in targets if t["type"] == "page")
-        self.ws = websocket.create_connection(page["webSocketDebuggerUrl"], timeout=60)
         self.next_id = 0
         self.errors = []
         self.console = []
-        for domain in ("Page", "Runtime", "Log"):
-            self.call(domain + ".enable")
+        self._attach(next(t for t in targets if t["type"] == "page"))
         self.call("Emulation.setDeviceMetricsOverride", width=width, height=height,
                   deviceScaleFactor=1, mobile=False)
+
+    def _attach(self, page):
+        self.page_id = page["id"]
+        self.ws = websocket.create_connection(page["webSocketDebuggerUrl"], timeout=60)
+        for domain in ("Page", "Runtime", "Log"):
+            self.call(domain + ".enable")
+
+    def new_page(self):
+        """This page closed and a new blank one in its place (its emulation not set)."""
+        new = urllib.request.Request("http://127.0.0.1:%d/json/new?about:blank" % self.port,
+                                     method="PUT")
+        with urllib.request.urlopen(new) as r:
+            page = json.load(r)
+        old = self.page_id
+        self.ws.close()
+        self._attach(page)
+        urllib.request.urlopen("http://127.0.0.1:%d/json/close/%s" % (self.port, old)).close()
 
     def _port(self):
         path = os.path.join(self.profile, "DevToolsActivePort")

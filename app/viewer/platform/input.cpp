@@ -1,6 +1,9 @@
 // convexloc-viewer — GLFW callbacks and keys, turned into the viewer's input and actions.
 #include "platform/input.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -66,6 +69,13 @@ KeyQueue gKeys(kKeys);
 bool gPressedSince = false;  // a key went down since the last keyActions
 bool gHadPresses = false;    // the last keyActions took some: the frames go on a while
 
+// the page's pinches since the last pointerInput, and whether a gesture came this frame
+double gZoom = 1.0;
+glm::dvec2 gPan{0.0};
+bool gGestured = false;
+// the actions the page's own buttons and swipes asked for since the last keyActions
+std::vector<Action> gPageActions;
+
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
@@ -111,22 +121,62 @@ PointerInput pointerInput(bool hovering) {
   in.shift = io.KeyShift;
   in.alt = io.KeyAlt;
   in.hovering = ImGui::IsMousePosValid() && hovering;
+  in.zoom = gZoom;
+  in.pan = gPan;
+  gZoom = 1.0;
+  gPan = glm::dvec2(0.0);
   return in;
 }
 
 std::vector<Action> keyActions() {
   gHadPresses = gPressedSince;
   gPressedSince = false;
-  return gKeys.drain();
+  std::vector<Action> actions = gKeys.drain();
+  actions.insert(actions.end(), gPageActions.begin(), gPageActions.end());
+  gPageActions.clear();
+  return actions;
 }
 
 bool hadInput(bool dropped) {
   const ImGuiIO& io = ImGui::GetIO();
   bool input = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
-               dropped || gHadPresses;
+               dropped || gHadPresses || gGestured;
+  gGestured = false;
   for (bool b : io.MouseDown) input |= b;
   for (bool k : io.KeysDown) input |= k;
   return input;
 }
 
 }  // namespace convexloc::viewer
+
+extern "C" void convexloc_wheel(double x, double y, bool sceneZoom) {
+  using convexloc::viewer::gZoom;
+  convexloc::viewer::gGestured = true;
+  if (sceneZoom) {
+    gZoom *= std::pow(convexloc::viewer::Interaction::kWheelZoom, y);
+    return;
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  io.MouseWheelH += static_cast<float>(x);
+  io.MouseWheel += static_cast<float>(y);
+}
+
+extern "C" void convexloc_pinch(double factor, double dx, double dy) {
+  convexloc::viewer::gGestured = true;
+  if (factor > 0.0 && std::isfinite(factor)) convexloc::viewer::gZoom *= factor;
+  convexloc::viewer::gPan += glm::dvec2(dx, dy);
+}
+
+extern "C" void convexloc_scroll_pixels(double dy) {
+  convexloc::viewer::gGestured = true;
+  // ImGui scrolls a window by a step of five lines a notch (at most two thirds of it)
+  const float step = std::max(1.0f, std::floor(5.0f * ImGui::GetFontSize()));
+  ImGui::GetIO().MouseWheel += static_cast<float>(dy) / step;
+}
+
+extern "C" void convexloc_lecture_step(int direction) {
+  using convexloc::viewer::ActionKind;
+  convexloc::viewer::gGestured = true;
+  convexloc::viewer::gPageActions.push_back(
+      {direction > 0 ? ActionKind::NextSlide : ActionKind::PreviousSlide, 0});
+}

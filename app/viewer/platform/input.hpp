@@ -29,7 +29,7 @@ PointerInput pointerInput(bool hovering);
 // always; the others only when ImGui did not want the keyboard (see logic/app/key_queue.hpp).
 std::vector<Action> keyActions();
 
-// whether the mouse, a key or a drop came in this frame
+// whether the mouse, a key, a gesture or a drop came in this frame
 bool hadInput(bool dropped);
 
 // Counts the frames since the last input: past a few, the loop waits for events instead
@@ -44,3 +44,20 @@ class IdleCounter {
 };
 
 }  // namespace convexloc::viewer
+
+// The web page's wheel and touch gestures, which its script (input.js) has normalised: the
+// browser's units and sign made GLFW's, touches made mouse events or these. Each adds to
+// what the next pointerInput gives.
+extern "C" {
+// a wheel or a touchpad's scroll in notches, positive up and left (GLFW's sign); with
+// `sceneZoom` (a touchpad's pinch, a Ctrl+wheel), the scene zoomed by y notches at the
+// pointer, over a panel too
+void convexloc_wheel(double x, double y, bool sceneZoom);
+// two fingers: the scene zoomed by `factor` about the pointer and moved (dx, dy) pixels
+void convexloc_pinch(double factor, double dx, double dy);
+// a finger dragged over a panel: the panel under the pointer scrolled so that its content
+// follows the finger by `dy` pixels (down positive)
+void convexloc_scroll_pixels(double dy);
+// the page's lecture buttons and swipes: the next slide (`direction` > 0) or the previous
+void convexloc_lecture_step(int direction);
+}

@@ -15,6 +15,7 @@
 #endif
 
 #include "gl/context.hpp"
+#include "platform/page.hpp"
 #define GLFW_INCLUDE_NONE  // the GL declarations come from gl/ alone
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -67,13 +68,17 @@ EM_JS(bool, convexlocTakeInput, (), {
 });
 // clang-format on
 
+// a page narrower than this (CSS pixels) is a phone's: the panels go into a drawer
+constexpr double kNarrowPage = 700.0;
+
 // The canvas's size on the page in device pixels: the page's style sizes it, the window
 // (GLFW's, Emscripten's) follows, so a HiDPI screen gets every pixel it has. True when the
-// size changed.
-bool fitCanvas(GLFWwindow* window) {
+// size changed; `narrow` tells whether the page is a phone's.
+bool fitCanvas(GLFWwindow* window, bool& narrow) {
   double cssW = 0.0, cssH = 0.0;
   if (emscripten_get_element_css_size("#canvas", &cssW, &cssH) != EMSCRIPTEN_RESULT_SUCCESS)
     return false;
+  narrow = cssW < kNarrowPage;
   const double ratio = emscripten_get_device_pixel_ratio();
   const int w = std::max(1, static_cast<int>(cssW * ratio + 0.5));
   const int h = std::max(1, static_cast<int>(cssH * ratio + 0.5));
@@ -139,6 +144,12 @@ bool Window::open(const Options& options, bool headless) {
   contextHints();
   window_ = glfwCreateWindow(options.width, options.height, "convexloc-viewer", nullptr, nullptr);
   if (!window_) {
+#ifdef __EMSCRIPTEN__
+    showPageProblem(
+        "This browser gives the page no WebGL 2, which the viewer draws with. Try another "
+        "browser (a recent Firefox, Chrome, Edge or Safari), or turn the browser's hardware "
+        "acceleration on and open the page again.");
+#endif
     std::cerr << "convexloc-viewer: cannot open an OpenGL 3.3 core window\n";
     return false;
   }
@@ -154,7 +165,7 @@ bool Window::open(const Options& options, bool headless) {
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
 #ifdef __EMSCRIPTEN__
   ImGui_ImplOpenGL3_Init("#version 300 es");
-  fitCanvas(window_);
+  fitCanvas(window_, narrow_);
 #else
   ImGui_ImplOpenGL3_Init("#version 330 core");
 #endif
@@ -179,7 +190,7 @@ bool Window::shouldClose() const {
 bool Window::takeEvents(bool idle) {
 #ifdef __EMSCRIPTEN__
   // the browser delivers the events between frames; the page's size may have changed
-  const bool resized = fitCanvas(window_);
+  const bool resized = fitCanvas(window_, narrow_);
   const bool input = convexlocTakeInput();
   const double now = emscripten_get_now();
   if (idle && !resized && !input && now - lastDrawnMs_ < 250.0) return false;

@@ -60,12 +60,15 @@ class Window : NoCopy {
   float contentScale() const;
   // whether the cursor is over the window
   bool hovered() const;
+  // the web page on a narrow screen (a phone: under 700 CSS pixels wide); the desktop: false
+  bool narrow() const { return narrow_; }
 
  private:
   GLFWwindow* window_ = nullptr;
   bool glfwStarted_ = false;
   bool imguiStarted_ = false;
   double lastDrawnMs_ = 0.0;  // the web page: when takeEvents last asked for a frame
+  bool narrow_ = false;
 };
 
 }  // namespace convexloc::viewer

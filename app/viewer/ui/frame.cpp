@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "ui/overlays.hpp"
 #include "ui/panels/lecture_panel.hpp"
@@ -126,11 +127,48 @@ void floatingInspector(Model& model, const UiState& ui, ScreenRect area, glm::dv
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(area.hi.x) - iw - 8.0f, 8.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(iw, 0.0f), ImVec2(iw, std::max(ih, 120.0f)));
   ImGui::SetNextWindowBgAlpha(0.9f);
+  // a phone's: folded to its title bar at first, unfolded by a tap on it
+  const bool drawer = model.settings.drawer;
+  if (drawer) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
   ImGui::Begin("Inspector", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoFocusOnAppearing);
+                   (drawer ? 0 : ImGuiWindowFlags_NoCollapse) |
+                   ImGuiWindowFlags_NoFocusOnAppearing);
   panelsOf(model).inspector(model, false);
+  ImGui::End();
+}
+
+// a small window of buttons at `pos`, its corner `pivot` (0..1 each way) there, over every
+// other window (a Steps window that came later too)
+bool beginButtons(const char* name, ImVec2 pos, ImVec2 pivot) {
+  ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  const bool open = ImGui::Begin(name, nullptr,
+                                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                     ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+  return open;
+}
+
+// A phone's buttons, big enough for a finger: the drawer's in the lower left corner and, in
+// a lecture, the previous and next slide's at the bottom's middle.
+void phoneButtons(Model& model, UiState& ui, glm::dvec2 window) {
+  Settings& s = model.settings;
+  const float pad = 8.0f, h = 2.2f * ImGui::GetFontSize();
+  const float bottom = static_cast<float>(window.y) - pad;
+  if (beginButtons("##drawer", ImVec2(pad, bottom), ImVec2(0.0f, 1.0f)) &&
+      ImGui::Button(s.drawerOpen ? "Close panels" : "Panels", ImVec2(0.0f, h)))
+    s.drawerOpen = !s.drawerOpen;
+  ImGui::End();
+  if (ui.show.lecture.slides.size() < 2) return;
+  if (beginButtons("##slides", ImVec2(0.5f * static_cast<float>(window.x), bottom),
+                   ImVec2(0.5f, 1.0f))) {
+    if (ImGui::Button(" < ", ImVec2(0.0f, h))) moveSlide(ActionKind::PreviousSlide, model, ui);
+    ImGui::SameLine();
+    if (ImGui::Button(" > ", ImVec2(0.0f, h))) moveSlide(ActionKind::NextSlide, model, ui);
+  }
   ImGui::End();
 }
 
@@ -145,19 +183,23 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   refitOnNewRoom(model, ui, window, now);
   drawLetterbox(model, ui, window);
   const ScreenRect area = sceneArea(model, ui, window);
-  if (model.settings.showUi) leftPanel(model, renderer, ui, window);
+  const Settings& s = model.settings;
+  if (s.drawer ? s.drawerOpen : s.showUi) leftPanel(model, renderer, ui, window);
   const float rw = rightPanelWidth(model, window);
   captionBox(model, ui, area);
   std::fill(std::begin(ui.legendRect), std::end(ui.legendRect), 0.0f);  // until drawn again
   if (rw > 0.0f) {
     rightPanel(model, window, rw);
   } else {
-    if (model.settings.showLegend) legendOverlay(model, ui, area, window, now);
-    if (model.settings.showUi && panelsOf(model).inspectable(model))
+    // an open drawer covers the scene: nothing floats over it
+    const bool drawerOpen = s.drawer && s.drawerOpen;
+    if (s.showLegend && !drawerOpen) legendOverlay(model, ui, area, window, now);
+    if (s.showUi && !drawerOpen && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }
   stepsWindow(model, ui, now);  // also with the panels hidden; the fit leaves it room
   slideCard(model, ui, area);
+  if (s.drawer) phoneButtons(model, ui, window);
   toast(model, ui, area, now);
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
   // (no halves in 3D or the Lines mode: the pointer then goes where it is)

@@ -33,7 +33,12 @@ bool viewAsFitted(const Model& model, const UiState& ui) {
 }
 
 float leftPanelWidth(const Model& model, glm::dvec2 window) {
-  if (!model.settings.showUi) return 0.0f;
+  const Settings& s = model.settings;
+  // the drawer: nearly the window's width, over the scene
+  if (s.drawer)
+    return s.drawerOpen ? std::min(345.0f * s.uiScale(), static_cast<float>(0.92 * window.x))
+                        : 0.0f;
+  if (!s.showUi) return 0.0f;
   // as wide as the text needs at its scale, up to 45% of the window (longer lines wrap)
   const float cap = std::max(300.0f, static_cast<float>(0.45 * window.x));
   return std::min(345.0f * model.settings.uiScale(), cap);
@@ -68,7 +73,8 @@ void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
 
 ScreenRect pageArea(const Model& model, const UiState& ui, glm::dvec2 window) {
   const ScreenRect page = pageOf(model, ui, window).page;
-  return {{std::max(page.lo.x, static_cast<double>(leftPanelWidth(model, window))), page.lo.y},
+  const double left = model.settings.drawer ? 0.0 : leftPanelWidth(model, window);
+  return {{std::max(page.lo.x, left), page.lo.y},
           {std::min(page.hi.x, window.x - static_cast<double>(rightPanelWidth(model, window))),
            page.hi.y}};
 }

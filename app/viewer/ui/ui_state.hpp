@@ -37,6 +37,7 @@ struct UiState {
   bool legendMoved = false;       // the user dragged the legend: it stays where put
   bool legendDragging = false;    // a drag that began on the legend goes on
   bool exporting = false;         // files are being written: no tooltips, no hover
+  bool webPage = false;           // the viewer runs in a web page: files are downloads
   float legendPos[2] = {0.0f, 0.0f};
   float legendSize[2] = {0.0f, 0.0f};  // the floating legend's size in the last frame
   float captionHeight = 0.0f;          // the caption box's height in the last frame

@@ -48,10 +48,10 @@ endforeach()
 target_link_options(convexloc-viewer PRIVATE
   -sENVIRONMENT=web
   -sALLOW_MEMORY_GROWTH=1
-  -sEXPORTED_FUNCTIONS=_main,_convexloc_open_file
+  -sEXPORTED_FUNCTIONS=_main,_convexloc_open_file,_convexloc_wheel,_convexloc_pinch,_convexloc_scroll_pixels,_convexloc_lecture_step
   -sEXPORTED_RUNTIME_METHODS=FS,ccall)
 
 # the page around the canvas
-foreach(file index.html page.js)
+foreach(file index.html page.js files.js input.js)
   configure_file(${CMAKE_CURRENT_SOURCE_DIR}/web/${file} ${CONVEXLOC_SITE_DIR}/${file} COPYONLY)
 endforeach()

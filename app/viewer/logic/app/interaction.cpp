@@ -6,10 +6,22 @@
 namespace convexloc::viewer {
 
 void Interaction::update(const PointerInput& in, Model& model) {
+  pinch(in, model);
   if (model.dim == Dim::Two)
     update2d(in, model);
   else
     update3d(in, model);
+}
+
+void Interaction::pinch(const PointerInput& in, Model& model) {
+  if (in.zoom == 1.0 && in.pan == glm::dvec2(0.0)) return;
+  if (model.dim == Dim::Two) {
+    model.camera2d.pan(in.pan);
+    model.camera2d.zoomAt(in.pos, in.zoom);
+  } else {
+    model.camera3d.pan(in.pan);
+    model.camera3d.zoom(in.zoom);
+  }
 }
 
 bool Interaction::ignored(const PointerInput& in) const {

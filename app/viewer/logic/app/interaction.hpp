@@ -21,6 +21,10 @@ struct PointerInput {
   bool shift = false;     // a Shift key is down
   bool alt = false;       // an Alt key is down: placed freely, no snapping
   bool hovering = true;   // the cursor is over the window
+  // a pinch (two fingers on a touch screen, or a touchpad's): the scene zoomed by `zoom`
+  // about pos and moved by `pan` pixels, wherever the pointer is (1 and 0: none)
+  double zoom = 1.0;
+  glm::dvec2 pan{0.0};
 };
 
 class Interaction {
@@ -46,6 +50,8 @@ class Interaction {
   // what a left press has become
   enum class PressOutcome { Waiting, Dragged, Clicked };
 
+  // a pinch's zoom and pan, whatever ImGui wants and whatever gesture is under way
+  void pinch(const PointerInput& in, Model& model);
   void update2d(const PointerInput& in, Model& model);
   void update3d(const PointerInput& in, Model& model);
   void click2d(const PointerInput& in, Model& model);

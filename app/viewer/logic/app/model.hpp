@@ -59,6 +59,10 @@ struct Settings {
   float drawScale() const { return uiScale(); }
   // a lecture's slide card over the scene's top, in window pixels: the scene fits below it
   float slideCardHeight = 0.0f;
+  // a narrow window (a phone's page): the panels are a drawer over the scene, shown while
+  // `drawerOpen` (its button), and the scene keeps the whole width
+  bool drawer = false;
+  bool drawerOpen = false;
 };
 
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels

@@ -263,7 +263,11 @@ void lecturePanel(Model& model, UiState& ui) {
     slideList(model, ui);
     slideButtons(model, ui);
   } else {
-    ImGui::TextWrapped("%s", "Open a lecture with --lecture FILE (see docs/viewer.md).");
+    ImGui::TextWrapped("%s", ui.webPage
+                                 ? "Open a lecture: Open files... with the .lecture and "
+                                   "its shape files together, or a link "
+                                   "?lecture=URL (see docs/viewer.md)."
+                                 : "Open a lecture with --lecture FILE (see docs/viewer.md).");
   }
   figureGallery(model, ui);
 }

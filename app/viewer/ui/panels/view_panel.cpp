@@ -23,14 +23,18 @@ void presentControls(Model& model, UiState& ui) {
   if (ImGui::Checkbox("legend (G)", &legend)) perform({ActionKind::ToggleLegend, 0}, model, ui);
 }
 
-// Screenshot and SVG, and the directory they write to
+// Screenshot and SVG, and the directory they write to (the web page: downloads). A tooltip
+// never shows on the frame a picture is taken.
 void exportButtons(UiState& ui, float half) {
+  const char* where = ui.webPage ? "as a download" : "in the folder below";
   if (ImGui::Button("Screenshot", ImVec2(half, 0.0f))) ui.screenshotRequested = true;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: a PNG of the window, in the folder below");
+  const bool taking = ui.screenshotRequested || ui.svgRequested;
+  if (ImGui::IsItemHovered() && !taking) ImGui::SetTooltip("F12: a PNG of the window, %s", where);
   ImGui::SameLine();
   if (ImGui::Button("SVG", ImVec2(half, 0.0f))) ui.svgRequested = true;
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("V or Shift+F12: the scene as a vector figure, in the folder below");
+  if (ImGui::IsItemHovered() && !ui.screenshotRequested && !ui.svgRequested)
+    ImGui::SetTooltip("V or Shift+F12: the scene as a vector figure, %s", where);
+  if (ui.webPage) return;
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::InputTextWithHint("##exportdir", "save to: the working directory", ui.exportDirEdit,
                                sizeof ui.exportDirEdit))
