@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs what convexloc needs from Debian's packages (only what is missing), then
 # configures and builds one build folder.
-# Usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench | --python]
+# Usage: scripts/setup.sh [--werror] [--tests] [--sanitize | --fuzz | --bench | --python]
 #   (default)   build/       Release, g++: the tools, the viewer, the tests
+#   --tests     also installs what only the tests use (scripts/test.sh passes it): the web
+#               page's tool chain and browser, the fuzzing compiler, xdotool, rsvg-convert,
+#               mypy and the Python packaging and geo tools; the main job needs none of them
 #   --sanitize  build-asan/  g++ -O1 with AddressSanitizer + UBSan: everything but the bench
 #   --fuzz      build-fuzz/  clang-14 -O1 with libFuzzer + ASan + UBSan: the core and the
 #                            fuzz targets of tests/fuzz only (warnings are not errors here:
@@ -14,8 +17,8 @@
 #               numpy, Boost's headers, venv and pip), then nothing else: install it with
 #               `python3 -m venv --system-site-packages .venv && .venv/bin/pip install
 #               --no-build-isolation .` (docs/python.md)
-# Every other variant installs emscripten, dpkg-dev, fonts-dejavu-core (scripts/web.sh builds the web
-# page with them) and chromium, python3-websocket (tests/web drives the page in a browser).
+# With --tests every other variant installs emscripten, dpkg-dev, fonts-dejavu-core (scripts/web.sh
+# builds the web page with them) and chromium, python3-websocket (tests/web drives the page).
 # Every variant installs pybind11-dev, python3-numpy and python3-pytest (and, for the Python
 # module's Dask path, its pictures, geo interop, packaging and type checks, python3-dask,
 # python3-distributed, python3-pandas, python3-matplotlib, python3-shapely, python3-geopandas,
@@ -27,27 +30,36 @@ cd "$(dirname "$0")/.."
 
 werror=OFF
 variant=plain
+tests=no
 for arg in "$@"; do
   case $arg in
     --werror) werror=ON ;;
+    --tests) tests=yes ;;
     --sanitize) variant=sanitize ;;
     --fuzz) variant=fuzz ;;
     --bench) variant=bench ;;
     --python) variant=python ;;
-    *) echo "usage: scripts/setup.sh [--werror] [--sanitize | --fuzz | --bench | --python]" >&2; exit 2 ;;
+    *) echo "usage: scripts/setup.sh [--werror] [--tests] [--sanitize | --fuzz | --bench | --python]" >&2; exit 2 ;;
   esac
 done
 
+# the main job: the CLI, the viewer (Xvfb where there is no display), the Python module
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libboost-dev libcli11-dev
           libgtest-dev libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
-          xvfb xauth xdotool libgl1-mesa-dri clang-14 libclang-rt-14-dev
+          xvfb xauth libgl1-mesa-dri
           python3-dev pybind11-dev python3-numpy python3-pytest
-          python3-dask python3-distributed python3-pandas python3-mypy
-          python3-shapely python3-matplotlib python3-geopandas
-          python3-venv python3-setuptools python3-wheel python3-pip python3-build
-          emscripten dpkg-dev fonts-dejavu-core chromium python3-websocket)
+          python3-dask python3-distributed python3-pandas)
+if [[ $tests == yes ]]; then
+  packages+=(xdotool librsvg2-bin clang-14 libclang-rt-14-dev python3-mypy
+             python3-shapely python3-matplotlib python3-geopandas
+             python3-venv python3-setuptools python3-wheel python3-pip python3-build
+             emscripten dpkg-dev fonts-dejavu-core chromium python3-websocket)
+fi
+if [[ $variant == fuzz ]]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 if [[ $variant == bench ]]; then
-  packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-scipy)
+  packages+=(libgeos-dev libcgal-dev gnuplot-nox python3-shapely python3-scipy)
 fi
 # the Python package alone (GMP is optional: without it core's exact numbers are Boost's)
 if [[ $variant == python ]]; then
