@@ -66,7 +66,7 @@ ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
   } catch (const GeometryError& e) {
     // faces no longer exactly planar (coordinates rounded by an exporter) fail this way
     const std::string what = e.what();
-    if (what.rfind("not convex", 0) != 0) throw;
+    if (what.rfind("not convex", 0) != 0 || what.find("--hull") != std::string::npos) throw;
     throw GeometryError(what +
                             " (where rounded coordinates left faces not exactly planar, "
                             "--hull takes the convex hull of the vertices; hull=True in Python)",
