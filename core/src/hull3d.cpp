@@ -35,9 +35,10 @@
 //   A point on a triangle's plane does not see it: if it is in H it is dropped, not made a
 //   corner, so coplanar points end inside or on the boundary. A point inserted while it was
 //   outside, and left by later points on an edge or inside a face, keeps its triangles (all
-//   nondegenerate, coplanar neighbours allowed). ConvexPolyhedron validates the triangles
-//   exactly once more, and buildCone throws std::logic_error should the horizon ever not be
-//   one simple cycle (the argument above says it always is).
+//   nondegenerate, coplanar neighbours allowed) until canonicalSurface (hull_surface.cpp)
+//   drops it and writes the surface in its one canonical form. ConvexPolyhedron validates
+//   the triangles exactly once more, and buildCone throws std::logic_error should the
+//   horizon ever not be one simple cycle (the argument above says it always is).
 // Cost: O(n log n) expected for a random insertion order; the order here is a biased
 // randomized one over the points sorted along a Morton curve (fixed seed: the same doubles
 // give the same triangles), from a large starting tetrahedron; each point sits in one
