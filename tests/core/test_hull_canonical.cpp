@@ -154,15 +154,21 @@ int shrink() {
 
 TEST(CanonicalHull3D, VerticesAreTheBruteForceExtremePointsInEveryOrder) {
   Rng rng(83);
-  for (int round = 0; round < 60; ++round) {
+  for (int round = 0; round < 80 / shrink(); ++round) {
     SCOPED_TRACE(round);
     // small lattices (many points on faces and edges), dyadic points on a box's edges and
-    // faces, or a flat lattice moved to 1e15
-    const std::size_t n = 6 + rng.below(14);
+    // faces, a flat lattice moved to 1e15, or points on a box's faces moved one ulp in, out
+    // or not at all (the box's corners among them)
+    const std::size_t n = round % 4 == 3 ? 2 + rng.below(9) : 6 + rng.below(14);
     std::vector<Vec3> cloud(n);
     for (Vec3& q : cloud) {
-      const int kind = round % 3;
-      if (kind == 0) {
+      const int kind = round % 4;
+      if (kind == 3) {
+        double c[3] = {rng.uniform(), rng.uniform(), std::round(rng.uniform())};
+        c[2] = std::nextafter(c[2], c[2] + double(int(rng.below(3)) - 1));
+        std::rotate(c, c + rng.below(3), c + 3);
+        q = {c[0], c[1], c[2]};
+      } else if (kind == 0) {
         q = {double(rng.below(3)), double(rng.below(3)), double(rng.below(3))};
       } else if (kind == 1) {
         q = {double(rng.below(2)), double(rng.below(2)), 0.25 * double(rng.below(5))};
@@ -171,6 +177,10 @@ TEST(CanonicalHull3D, VerticesAreTheBruteForceExtremePointsInEveryOrder) {
         q = {1e15 + 0.125 * double(rng.below(4)), 1e15 - 0.125 * double(rng.below(4)),
              double(rng.below(3)) - 1};
       }
+    }
+    if (round % 4 == 3) {
+      const std::vector<Vec3> corners = boxCorners();
+      cloud.insert(cloud.end(), corners.begin(), corners.end());
     }
     try {
       const ConvexPolyhedron h = canonicalHull(cloud, rng, 3);
