@@ -264,7 +264,10 @@ TEST(CanonicalHull3D, AFloat32CylinderReadAsItsHullKeepsExactlyTheRingsExtremePo
   for (const Vec2 p : section.vertices())
     for (double z : {-10.0, 10.0}) expected.push_back({p.x, p.y, z});
   std::sort(expected.begin(), expected.end(), lexLess);
-  EXPECT_LT(expected.size(), 2 * sides);  // the rounded ring has points inside hull edges
+  // at 65536 sides the rounded ring has points inside hull edges (at 8192 it is convex)
+  if (shrink() == 1) {
+    EXPECT_LT(expected.size(), 2 * sides);
+  }
   EXPECT_EQ(h.vertexCount(), expected.size());
   EXPECT_TRUE(sortedVertices(h) == expected);
   EXPECT_EQ(h.planeCount(), expected.size() / 2 + 2);
