@@ -97,13 +97,25 @@ TEST(PointClouds, APlyCountTooLargeOrTooSmallPointsAtTheHeader) {
   // one vertex too many: the first face line is read as vertex 8
   Problem p = problemOf(MeshFormat::Ply, cubePly(9, 6));
   EXPECT_EQ(p.line, 3u);
-  EXPECT_THAT(p.message, HasSubstr("element 'vertex' announces 9 records, too many: line 18"));
+  EXPECT_THAT(p.message,
+              HasSubstr("element 'vertex' announces 9 records: line 18 ('4 0 1 3 2') fails as "
+                        "vertex 8 of 9 (unexpected text after the values"));
+  EXPECT_THAT(p.message, HasSubstr("reads as a 'face' record: is the count too large?"));
   // one vertex too few: the last vertex line is read as the first face
   p = problemOf(MeshFormat::Ply, cubePly(7, 6));
   EXPECT_EQ(p.line, 3u);
-  EXPECT_THAT(p.message, HasSubstr("element 'vertex' announces 7 records, too few: line 17"));
+  EXPECT_THAT(p.message,
+              HasSubstr("element 'vertex' announces 7 records: line 17 ('1 1 1') fails as face 0"));
+  EXPECT_THAT(p.message, HasSubstr("reads as one more 'vertex': is the count too small?"));
   // one face too few: the last face line is left over
   p = problemOf(MeshFormat::Ply, cubePly(8, 5));
   EXPECT_EQ(p.line, 7u);
-  EXPECT_THAT(p.message, HasSubstr("element 'face' announces 5 records, too few: line 23"));
+  EXPECT_THAT(p.message,
+              HasSubstr("element 'face' announces 5 records: line 23 after them reads as one "
+                        "more: is the count too small?"));
+  // a face of 2 vertices has a face's shape: its own line is blamed, not a count
+  p = problemOf(MeshFormat::Ply,
+                cubePly(8, 6).replace(cubePly(8, 6).find("4 1 5 7 3"), 9, "2 1 5"));
+  EXPECT_EQ(p.line, 23u);
+  EXPECT_THAT(p.message, HasSubstr("face 5 has 2 vertices"));
 }

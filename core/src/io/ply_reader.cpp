@@ -189,8 +189,8 @@ class PlyBody {
         const PlyElement& last = h_.elements.back();
         if (fitsRecord(line, last))
           throw ParseError("element '" + last.name + "' announces " + std::to_string(last.count) +
-                               " records, too few: line " + std::to_string(src_.line()) +
-                               " reads as one more",
+                               " records: line " + std::to_string(src_.line()) +
+                               " after them reads as one more: is the count too small?",
                            last.line);
         throw ParseError("unexpected text after the last element: " + quote(tok), src_.line());
       }
@@ -301,21 +301,32 @@ class PlyBody {
                        src_.line());
     try {
       asciiValues(i, e, r, line);
-    } catch (const ParseError&) {
-      const std::string at =
-          "line " + std::to_string(src_.line()) + " ('" + std::string(line.substr(0, 40)) + "')";
-      if (i + 1 < h_.elements.size() && fitsRecord(line, h_.elements[i + 1]))
-        throw ParseError("element '" + e.name + "' announces " + std::to_string(e.count) +
-                             " records, too many: " + at + " is " + recordName(e, r) +
-                             " but reads as a '" + h_.elements[i + 1].name + "' record",
-                         e.line);
-      if (r == 0 && i > 0 && fitsRecord(line, h_.elements[i - 1]))
-        throw ParseError("element '" + h_.elements[i - 1].name + "' announces " +
-                             std::to_string(h_.elements[i - 1].count) + " records, too few: " + at +
-                             " reads as one more of them, not as the first '" + e.name + "'",
-                         h_.elements[i - 1].line);
+    } catch (const ParseError& failed) {
+      if (fitsRecord(line, e)) throw;  // the record has the right shape: its values are wrong
+      blameCount(i, r, line, failed.what());
       throw;
     }
+  }
+
+  // A record of element `i` whose line has the wrong shape for it, and the shape of a record
+  // of the element after it (a count too large) or, for the first record, of the element
+  // before it (that one's count too small): ParseError on the header line of the count.
+  void blameCount(std::size_t i, std::uint64_t r, std::string_view line, const char* problem) {
+    const PlyElement& e = h_.elements[i];
+    const std::string at = "line " + std::to_string(src_.line()) + " ('" +
+                           std::string(line.substr(0, 40)) + "') fails as " + recordName(e, r) +
+                           " (" + problem + ")";
+    if (i + 1 < h_.elements.size() && fitsRecord(line, h_.elements[i + 1]))
+      throw ParseError("element '" + e.name + "' announces " + std::to_string(e.count) +
+                           " records: " + at + " and reads as a '" + h_.elements[i + 1].name +
+                           "' record: is the count too large?",
+                       e.line);
+    if (r == 0 && i > 0 && fitsRecord(line, h_.elements[i - 1]))
+      throw ParseError("element '" + h_.elements[i - 1].name + "' announces " +
+                           std::to_string(h_.elements[i - 1].count) + " records: " + at +
+                           " and reads as one more '" + h_.elements[i - 1].name +
+                           "': is the count too small?",
+                       h_.elements[i - 1].line);
   }
 
   // the values of one record of element `i` from its line
