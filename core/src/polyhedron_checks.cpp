@@ -257,7 +257,8 @@ void PolyhedronBuilder::pairEdges() {
       if (head(h1) == head(h2))
         throw GeometryError("inconsistent orientation: " + faceName(t1) + " and " + faceName(t2) +
                                 " both run along " + edgeName(head(h1), tail(h1)) +
-                                " in the same direction (orient every face the same way)",
+                                " in the same direction (orient every face the same way)" +
+                                kHullCures,
                             triangleLine(t2));
       out_.neighbours_[t1][h1 % 3] = t2;
       out_.neighbours_[t2][h2 % 3] = t1;
