@@ -23,6 +23,7 @@
 #include "detail/hull_surface.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -129,6 +130,22 @@ std::vector<std::uint8_t> extremeCorners(std::span<const Vec3> p, const Faces& l
   return extreme;
 }
 
+// each loop as the ranks of its extreme corners (kNone: not one), from the smallest rank
+Faces rankedPolygons(const Faces& loops, const std::vector<std::uint32_t>& rank) {
+  Faces polygons;
+  std::vector<std::uint32_t>& out = polygons.members;
+  for (std::size_t f = 0; f + 1 < loops.start.size(); ++f) {
+    const auto at = static_cast<std::ptrdiff_t>(out.size());
+    for (std::uint32_t i = loops.start[f]; i < loops.start[f + 1]; ++i)
+      if (const std::uint32_t r = rank[loops.members[i]]; r != kNone) out.push_back(r);
+    if (out.size() - static_cast<std::size_t>(at) < 3)
+      throw std::logic_error("hull: a face has fewer than 3 corners");
+    std::rotate(out.begin() + at, std::min_element(out.begin() + at, out.end()), out.end());
+    polygons.start.push_back(static_cast<std::uint32_t>(out.size()));
+  }
+  return polygons;
+}
+
 }  // namespace
 
 CanonicalSurface canonicalSurface(std::span<const Vec3> points, std::span<const Triangle> triangles,
@@ -143,28 +160,20 @@ CanonicalSurface canonicalSurface(std::span<const Vec3> points, std::span<const 
             [&](std::uint32_t a, std::uint32_t b) { return lexLess(points[a], points[b]); });
   std::vector<std::uint32_t> rank(points.size(), kNone);
   for (std::uint32_t r = 0; r < out.corners.size(); ++r) rank[out.corners[r]] = r;
-  // each face as its corners' ranks from the smallest, keyed by its first two
-  std::vector<std::uint32_t> polygons, polygonStart;
-  std::vector<std::pair<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>> order;
-  for (std::size_t f = 0; f + 1 < loops.start.size(); ++f) {
-    const std::size_t at = polygons.size();
-    for (std::uint32_t i = loops.start[f]; i < loops.start[f + 1]; ++i)
-      if (const std::uint32_t r = rank[loops.members[i]]; r != kNone) polygons.push_back(r);
-    std::rotate(
-        polygons.begin() + static_cast<std::ptrdiff_t>(at),
-        std::min_element(polygons.begin() + static_cast<std::ptrdiff_t>(at), polygons.end()),
-        polygons.end());
-    if (polygons.size() - at < 3) throw std::logic_error("hull: a face has fewer than 3 corners");
-    order.push_back({{polygons[at], polygons[at + 1]}, static_cast<std::uint32_t>(at)});
-    polygonStart.push_back(static_cast<std::uint32_t>(at));
-  }
-  polygonStart.push_back(static_cast<std::uint32_t>(polygons.size()));
-  std::sort(order.begin(), order.end());
+  const Faces polygons = rankedPolygons(loops, rank);
+  // the faces in order of their first two corners, each as a fan from its first
+  const std::vector<std::uint32_t>& c = polygons.members;
+  std::vector<std::uint32_t> order(polygons.start.size() - 1);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t f, std::uint32_t g) {
+    const std::uint32_t a = polygons.start[f], b = polygons.start[g];
+    return c[a] != c[b] ? c[a] < c[b] : c[a + 1] < c[b + 1];
+  });
   out.triangles.reserve(2 * out.corners.size());
-  for (const auto& [key, at] : order) {
-    const std::uint32_t end = *std::upper_bound(polygonStart.begin(), polygonStart.end(), at);
+  for (const std::uint32_t f : order) {
+    const std::uint32_t at = polygons.start[f], end = polygons.start[f + 1];
     for (std::uint32_t i = at + 1; i + 1 < end; ++i)
-      out.triangles.push_back({polygons[at], polygons[i], polygons[i + 1]});
+      out.triangles.push_back({c[at], c[i], c[i + 1]});
   }
   return out;
 }
