@@ -457,7 +457,8 @@ void PolyhedronBuilder::throwNotPlanar(std::size_t f, const Triangle& a, std::ui
                           figures + " through vertices " +
                           std::to_string(out_.sourceVertex_[a[0]]) + ", " +
                           std::to_string(out_.sourceVertex_[a[1]]) + " and " +
-                          std::to_string(out_.sourceVertex_[a[2]]) +
+                          std::to_string(out_.sourceVertex_[a[2]]) + ", " +
+                          roundingVerdict(measureFold(v[a[0]], v[a[1]], v[a[2]], v[w])) +
                           "; a mesh whose coordinates were rounded can be read as the convex hull "
                           "of its vertices instead (--hull; in Python, hull=True)",
                       faceLine(f));

@@ -71,6 +71,11 @@ Fold measureFold(Vec3 a, Vec3 b, Vec3 p, Vec3 q) {
   return fold;
 }
 
+std::string roundingVerdict(const Fold& fold) {
+  return std::string(fold.off <= fold.rounding ? "within" : "beyond") + " the rounding of " +
+         (fold.float32 ? "float32" : "double") + " coordinates";
+}
+
 std::string describeFold(const Fold& fold) {
   char text[256];
   const char* kind = fold.float32 ? "float32" : "double";

@@ -79,6 +79,22 @@ TEST(PolyhedronMessages, AFloat32RoundingFoldSaysHullIsSafe) {
   EXPECT_THAT(f.message, HasSubstr("a float32 STL rounding fold: --hull is safe"));
   EXPECT_LT(numberAfter(f.message, "a fold of "), 1e-2);
   EXPECT_LT(numberAfter(f.message, "degrees, "), 1e-5);  // off the plane
+  // a quad of the same float32 cylinder, one face: not planar, within the rounding
+  MeshData quads = float32Cylinder(4096);
+  quads.indices.clear();
+  quads.faceStart.assign(1, 0);
+  for (std::uint32_t i = 0; i < 4096; ++i) {
+    const std::uint32_t j = (i + 1) % 4096;
+    quads.addFace({2 * i, 2 * j, 2 * j + 1, 2 * i + 1});
+  }
+  std::vector<std::uint32_t> cap, other;
+  for (std::uint32_t i = 0; i < 4096; ++i)
+    cap.push_back(2 * (4095 - i)), other.push_back(2 * i + 1);
+  quads.addFace(cap);
+  quads.addFace(other);
+  const shapes3d::Failure q = failureOf(quads);
+  EXPECT_THAT(q.message, HasSubstr("is not planar"));
+  EXPECT_THAT(q.message, HasSubstr("within the rounding of float32 coordinates"));
   // and its hull is a polyhedron
   EXPECT_GT(ConvexPolyhedron::hullOf(float32Cylinder(4096).vertices).vertexCount(), 100u);
 }
@@ -121,16 +137,17 @@ TEST(PolyhedronMessages, ARealDentSaysHowLargeAFoldTheHullFills) {
 }
 
 TEST(PolyhedronMessages, ANonPlanarFaceIsRefusedFromEveryFirstVertex) {
-  // the cube [-1, 1]^3 with one top corner raised by 0.3: the top quad, listed from each of
+  // the cube [-1, 1]^3 with one top corner raised by 0.25: the top quad, listed from each of
   // its corners, either folds convexly along its fan diagonal or reflexly; both are refused
   const std::vector<std::uint32_t> top = {1, 5, 7, 3};
   for (int first = 0; first < 4; ++first) {
     SCOPED_TRACE(first);
     MeshData m = shapes3d::cube();
-    m.vertices[7].z = 1.3;
+    m.vertices[7].z = 1.25;
     for (int k = 0; k < 4; ++k) m.indices[m.faceStart[5] + k] = top[(first + k) % 4];
     const shapes3d::Failure f = failureOf(m);
     EXPECT_THAT(f.message, HasSubstr("face 5 is not planar: vertex "));
+    EXPECT_THAT(f.message, HasSubstr("beyond the rounding of float32 coordinates"));
     EXPECT_THAT(f.message, HasSubstr("--hull"));
     EXPECT_GT(numberAfter(f.message, " lies "), 0.1);
   }

@@ -37,6 +37,9 @@ struct Fold {
 Fold measureFold(Vec3 a, Vec3 b, Vec3 p, Vec3 q);
 // "a fold of D degrees, X off the plane: " and whether --hull is safe or fills a dent
 std::string describeFold(const Fold& fold);
+// "within (beyond) the rounding of float32 (double) coordinates": whether rounding explains
+// the fold's `off`
+std::string roundingVerdict(const Fold& fold);
 
 // "(x, y, z)" with enough digits to find the point again
 std::string show(Vec3 p);
