@@ -60,7 +60,8 @@ bool isPolyhedronPath(std::string_view path) {
     }
     return true;
   };
-  return endsWith(".off") || endsWith(".obj") || endsWith(".stl") || endsWith(".ply");
+  return endsWith(".off") || endsWith(".obj") || endsWith(".stl") || endsWith(".ply") ||
+         endsWith(".xyz") || endsWith(".pts");
 }
 
 namespace {

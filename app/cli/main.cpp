@@ -74,7 +74,8 @@ separated by spaces and/or a comma, '#' starts a comment, blank lines are skippe
 polygon file lists the vertices of a convex polygon in either order around it. A SHAPE
 ending in .off, .obj, .stl (ASCII or binary) or .ply (ASCII or binary) is a closed convex
 polyhedron in that format, faces in either orientation. With --hull the shape is the convex
-hull of the file's points, in any order: a PLY point cloud without faces works too.)";
+hull of the file's points, in any order: a PLY point cloud without faces works too, and so
+does a scan ending in .xyz or .pts ('x y z' a line, further columns read past).)";
 
 constexpr const char* kExamples = R"(
 

@@ -1,7 +1,10 @@
 // convexloc — the exact convex hull of a 2D point cloud as a ConvexPolygon: convexHull's
 // monotone chain (generate2d.cpp), which decides every turn with the exact orient2d and keeps
-// only strict left turns, so every input point is inside or on the result and every vertex
-// is an input point; then the vertices are named by their index in the input.
+// only strict left turns, so every input point is inside or on the result, every vertex is
+// an input point and an extreme one (no vertex on the segment joining its neighbours). The
+// chain runs over the points sorted by coordinates and starts at the smallest, so the same
+// points give the same polygon in any order; then the vertices are named by their first
+// index in the input.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -45,8 +48,10 @@ ConvexPolygon ConvexPolygon::hullOf(std::span<const Vec2> points) {
                           " has a coordinate that is not a finite number");
   if (points.size() > kMaxPolygonVertices)
     throw UsageError("too many points for a hull: " + std::to_string(points.size()));
-  const std::vector<Vec2> hull = points.size() < 3 ? std::vector<Vec2>{} : convexHull(points);
+  std::vector<Vec2> hull = points.size() < 3 ? std::vector<Vec2>{} : convexHull(points);
   refuseDegenerate(points, hull);
+  // -0 written as +0, so that equal hulls have equal bytes
+  for (Vec2& p : hull) p = {p.x + 0.0, p.y + 0.0};
   ConvexPolygon polygon(hull);
   // each vertex's first index in the input
   std::vector<std::pair<Vec2, std::uint32_t>> corners;

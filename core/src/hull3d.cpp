@@ -35,9 +35,10 @@
 //   A point on a triangle's plane does not see it: if it is in H it is dropped, not made a
 //   corner, so coplanar points end inside or on the boundary. A point inserted while it was
 //   outside, and left by later points on an edge or inside a face, keeps its triangles (all
-//   nondegenerate, coplanar neighbours allowed). ConvexPolyhedron validates the triangles
-//   exactly once more, and buildCone throws std::logic_error should the horizon ever not be
-//   one simple cycle (the argument above says it always is).
+//   nondegenerate, coplanar neighbours allowed) until canonicalSurface (hull_surface.cpp)
+//   drops it and writes the surface in its one canonical form. ConvexPolyhedron validates
+//   the triangles exactly once more, and buildCone throws std::logic_error should the
+//   horizon ever not be one simple cycle (the argument above says it always is).
 // Cost: O(n log n) expected for a random insertion order; the order here is a biased
 // randomized one over the points sorted along a Morton curve (fixed seed: the same doubles
 // give the same triangles), from a large starting tetrahedron; each point sits in one
@@ -57,6 +58,7 @@
 #include "convexloc/generate2d.hpp"
 #include "convexloc/polyhedron.hpp"
 #include "convexloc/predicates.hpp"
+#include "detail/hull_surface.hpp"
 #include "detail/polyhedron_build.hpp"
 
 namespace convexloc {
@@ -140,8 +142,10 @@ struct Face {
 class IncrementalHull {
  public:
   IncrementalHull(std::span<const Vec3> points, const std::array<std::uint32_t, 4>& simplex);
-  // the hull's triangles, counter-clockwise seen from outside
-  std::vector<std::array<std::uint32_t, 3>> triangles() const;
+  // the hull's triangles, counter-clockwise seen from outside, over input indices, and the
+  // neighbours of each (nb[t][k] across the edge from corner k to corner k + 1)
+  void surface(std::vector<std::array<std::uint32_t, 3>>& triangles,
+               std::vector<std::array<std::uint32_t, 3>>& neighbours) const;
 
  private:
   void start(const std::array<std::uint32_t, 4>& simplex);
@@ -306,12 +310,21 @@ void IncrementalHull::reassign(std::uint32_t p) {
   }
 }
 
-std::vector<std::array<std::uint32_t, 3>> IncrementalHull::triangles() const {
-  std::vector<std::array<std::uint32_t, 3>> out;
-  out.reserve(faces_.size() - free_.size());
+void IncrementalHull::surface(std::vector<std::array<std::uint32_t, 3>>& triangles,
+                              std::vector<std::array<std::uint32_t, 3>>& neighbours) const {
+  std::vector<std::uint32_t> live(faces_.size(), kNone);
+  std::uint32_t count = 0;
+  for (std::uint32_t f = 0; f < faces_.size(); ++f)
+    if (faces_[f].mark != kNone) live[f] = count++;
+  triangles.clear();
+  neighbours.clear();
+  triangles.reserve(count);
+  neighbours.reserve(count);
   for (const Face& f : faces_)
-    if (f.mark != kNone) out.push_back({ids_[f.v[0]], ids_[f.v[1]], ids_[f.v[2]]});
-  return out;
+    if (f.mark != kNone) {
+      triangles.push_back({ids_[f.v[0]], ids_[f.v[1]], ids_[f.v[2]]});
+      neighbours.push_back({live[f.nb[0]], live[f.nb[1]], live[f.nb[2]]});
+    }
 }
 
 // Four points not in one plane: the first point, the first one unequal to it, the first one
@@ -376,6 +389,22 @@ std::array<std::uint32_t, 4> spreadSimplex(std::span<const Vec3> points,
   return {a, b, c, d};
 }
 
+// each corner's first index in `points` (corners: sorted by coordinates, -0 as +0)
+std::vector<std::uint32_t> firstIndices(std::span<const Vec3> points,
+                                        std::span<const Vec3> corners) {
+  auto less = [](Vec3 a, Vec3 b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  };
+  std::vector<std::uint32_t> first(corners.size(), kNone);
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    const auto at = std::lower_bound(corners.begin(), corners.end(), points[i], less);
+    if (at == corners.end() || !(*at == points[i])) continue;
+    std::uint32_t& slot = first[static_cast<std::size_t>(at - corners.begin())];
+    if (slot == kNone) slot = i;
+  }
+  return first;
+}
+
 }  // namespace
 
 ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
@@ -388,15 +417,24 @@ ConvexPolyhedron ConvexPolyhedron::hullOf(std::span<const Vec3> points) {
   if (points.size() > kMaxPolyhedronVertices)
     throw UsageError("too many points for a hull: " + std::to_string(points.size()));
   const std::array<std::uint32_t, 4> simplex = spreadSimplex(points, firstSimplex(points));
-  // every input point is a vertex of the mesh, so that sourceVertex() names input indices;
-  // those no triangle uses are dropped by the validation
+  std::vector<std::array<std::uint32_t, 3>> triangles, neighbours;
+  IncrementalHull(points, simplex).surface(triangles, neighbours);
+  const detail::CanonicalSurface surface = detail::canonicalSurface(points, triangles, neighbours);
+  // the extreme points in lexicographic order (-0 written as +0, so that equal hulls have
+  // equal bytes), the fans of the plane faces in canonical order
   MeshData mesh;
-  mesh.vertices.assign(points.begin(), points.end());
-  for (const auto& t : IncrementalHull(points, simplex).triangles()) mesh.addFace(t);
+  mesh.vertices.reserve(surface.corners.size());
+  for (const std::uint32_t i : surface.corners) {
+    const Vec3 p = points[i];
+    mesh.vertices.push_back({p.x + 0.0, p.y + 0.0, p.z + 0.0});
+  }
+  for (const auto& t : surface.triangles) mesh.addFace(t);
   // every triangle's plane has every point on its inner side or on it (exact orient3d), so
   // the surface is the boundary of the convex hull and winds once around its inside: the
   // validation's floating-point winding count is left out, every exact check still runs
-  return ConvexPolyhedron(mesh, nullptr, true);
+  ConvexPolyhedron hull(mesh, nullptr, true);
+  hull.sourceVertex_ = firstIndices(points, hull.vertices());
+  return hull;
 }
 
 }  // namespace convexloc

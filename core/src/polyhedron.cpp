@@ -53,6 +53,7 @@ ConvexPolyhedron::ConvexPolyhedron(const MeshData& mesh, std::vector<std::uint32
   check.fanTriangulate();
   check.pairEdges();
   check.checkOnePieceSphere();
+  check.checkPlanarFaces();
   check.findTetrahedron();
   check.flipSlivers();
   check.checkConvexEdges();

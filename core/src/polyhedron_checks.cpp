@@ -15,6 +15,10 @@ namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
 
+// what ends every refusal that reading the vertices' convex hull would cure
+constexpr const char* kHullCures =
+    "; --hull reads the convex hull of the vertices instead (hull=True in Python)";
+
 // b lies between a and c, given that the three are collinear
 bool between(Vec3 a, Vec3 b, Vec3 c) {
   auto in = [](double lo, double v, double hi) {
@@ -32,6 +36,15 @@ std::pair<int, int> planarSides(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   if (s != 0) return {s, orient2d({a.y, a.z}, {b.y, b.z}, {d.y, d.z})};
   s = orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x});
   return {s, orient2d({a.z, a.x}, {b.z, b.x}, {d.z, d.x})};
+}
+
+// the merged vertices of an input face, consecutive repeats dropped
+void mergedFace(std::span<const std::uint32_t> face, const std::vector<std::uint32_t>& id,
+                std::vector<std::uint32_t>& poly) {
+  poly.clear();
+  for (std::uint32_t k : face)
+    if (poly.empty() || poly.back() != id[k]) poly.push_back(id[k]);
+  while (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
 }
 
 // union-find root with path halving
@@ -180,10 +193,7 @@ void PolyhedronBuilder::fanTriangulate() {
   out_.sourceFace_.reserve(triangleBound_);
   std::vector<std::uint32_t> poly, sorted;
   for (std::size_t f = 0; f < mesh_.faceCount(); ++f) {
-    poly.clear();
-    for (std::uint32_t k : mesh_.face(f))
-      if (poly.empty() || poly.back() != id_[k]) poly.push_back(id_[k]);
-    while (poly.size() > 1 && poly.back() == poly.front()) poly.pop_back();
+    mergedFace(mesh_.face(f), id_, poly);
     if (poly.size() < 3)
       throw GeometryError(
           "face " + std::to_string(f) + " is degenerate: it has fewer than 3 distinct vertices",
@@ -231,7 +241,7 @@ void PolyhedronBuilder::pairEdges() {
       const std::size_t count = static_cast<std::size_t>(run - it);
       if (count == 1)
         throw GeometryError("the surface is open: " + edgeName(head(h1), tail(h1)) +
-                                " belongs to " + faceName(t1) + " only",
+                                " belongs to " + faceName(t1) + " only" + kHullCures,
                             triangleLine(t1));
       if (count > 2) {
         std::string faces;
@@ -239,14 +249,16 @@ void PolyhedronBuilder::pairEdges() {
           faces += (k == it ? "" : ", ") + std::to_string(out_.sourceFace_[*k / 3]);
         if (count > 4) faces += ", ...";
         throw GeometryError("not a manifold: " + edgeName(head(h1), tail(h1)) + " is shared by " +
-                                std::to_string(count) + " triangles (faces " + faces + ")",
+                                std::to_string(count) + " triangles (faces " + faces + ")" +
+                                kHullCures,
                             triangleLine(it[2] / 3));
       }
       const std::uint32_t h2 = it[1], t2 = h2 / 3;
       if (head(h1) == head(h2))
         throw GeometryError("inconsistent orientation: " + faceName(t1) + " and " + faceName(t2) +
                                 " both run along " + edgeName(head(h1), tail(h1)) +
-                                " in the same direction (orient every face the same way)",
+                                " in the same direction (orient every face the same way)" +
+                                kHullCures,
                             triangleLine(t2));
       out_.neighbours_[t1][h1 % 3] = t2;
       out_.neighbours_[t2][h2 % 3] = t1;
@@ -270,13 +282,15 @@ void PolyhedronBuilder::checkOnePieceSphere() const {
   }
   if (pieces > 1)
     throw GeometryError("the surface has " + std::to_string(pieces) + " separate pieces (" +
-                            faceName(stray) + " is not connected to " + faceName(0) + ")",
+                            faceName(stray) + " is not connected to " + faceName(0) + ")" +
+                            kHullCures,
                         triangleLine(stray));
   const long long chi = static_cast<long long>(out_.vertices_.size()) - 3LL * nt / 2 + nt;
   if (chi != 2)
     throw GeometryError(
         "the surface is not a sphere: V - E + F = " + std::to_string(chi) +
-        " where a convex polyhedron has 2 (a handle, or faces meeting only at a vertex)");
+        " where a convex polyhedron has 2 (a handle, or faces meeting only at a vertex)" +
+        kHullCures);
 }
 
 // === the geometry
@@ -370,7 +384,8 @@ void PolyhedronBuilder::checkConvexEdges() {
       } else if (auto [sp, sq] = planarSides(v[a], v[b], v[p], v[q]); sp * sq >= 0) {
         blame({q});
         throw GeometryError("not convex: " + faceName(t) + " and " + faceName(u) +
-                                " lie in one plane and fold onto each other at " + edgeName(a, b),
+                                " lie in one plane and fold onto each other at " + edgeName(a, b) +
+                                kHullCures,
                             std::max(triangleLine(t), triangleLine(u)));
       }
     }
@@ -391,19 +406,40 @@ void PolyhedronBuilder::throwReflex(std::uint32_t firstReflex, std::uint32_t fir
                                     bool reflexIsMinority) const {
   const std::uint32_t h = reflexIsMinority ? firstReflex : firstConvex;
   const std::uint32_t t = h / 3, k = h % 3, u = out_.neighbours_[t][k];
-  if (out_.sourceFace_[t] == out_.sourceFace_[u]) throwNotPlanar(t, u);
-  throw GeometryError("not convex: reflex " +
-                          edgeName(out_.triangles_[t][k], out_.triangles_[t][(k + 1) % 3]) +
-                          " between " + faceName(t) + " and " + faceName(u),
+  const Triangle& tri = out_.triangles_[t];
+  const std::uint32_t a = tri[k], b = tri[(k + 1) % 3], p = tri[(k + 2) % 3];
+  std::uint32_t q = out_.triangles_[u][0];
+  for (std::uint32_t w : out_.triangles_[u])
+    if (w != a && w != b) q = w;
+  const std::vector<Vec3>& v = out_.vertices_;
+  throw GeometryError("not convex: reflex " + edgeName(a, b) + " between " + faceName(t) + " and " +
+                          faceName(u) + ": " + describeFold(measureFold(v[a], v[b], v[p], v[q])),
                       std::max(triangleLine(t), triangleLine(u)));
 }
 
-void PolyhedronBuilder::throwNotPlanar(std::uint32_t t, std::uint32_t u) const {
-  // the fan diagonal of one input face folds inwards: the face's corners are not in one plane
-  const Triangle& a = out_.triangles_[t];
-  std::uint32_t w = out_.triangles_[u][0];
-  for (std::uint32_t x : out_.triangles_[u])
-    if (x != a[0] && x != a[1] && x != a[2]) w = x;
+void PolyhedronBuilder::checkPlanarFaces() const {
+  std::vector<std::uint32_t> poly;
+  for (std::size_t f = 0; f < mesh_.faceCount(); ++f)
+    if (mesh_.face(f).size() > 3) {
+      mergedFace(mesh_.face(f), id_, poly);
+      checkPlanar(f, poly);
+    }
+}
+
+void PolyhedronBuilder::checkPlanar(std::size_t f, const std::vector<std::uint32_t>& poly) const {
+  const std::vector<Vec3>& v = out_.vertices_;
+  std::size_t i = 1;
+  while (i + 1 < poly.size() && collinear(v[poly[0]], v[poly[i]], v[poly[i + 1]])) ++i;
+  if (poly.size() < 4 || i + 1 >= poly.size()) return;  // a triangle, or a degenerate face
+  const Triangle plane{poly[0], poly[i], poly[i + 1]};
+  for (const std::uint32_t w : poly)
+    if (orient3d(v[plane[0]], v[plane[1]], v[plane[2]], v[w]) != 0) {
+      blame({w});
+      throwNotPlanar(f, plane, w);
+    }
+}
+
+void PolyhedronBuilder::throwNotPlanar(std::size_t f, const Triangle& a, std::uint32_t w) const {
   const std::vector<Vec3>& v = out_.vertices_;
   long double p[3][3];
   const long double six = sixVolume(v[a[0]], v[a[1]], v[a[2]], v[w], p);
@@ -417,13 +453,15 @@ void PolyhedronBuilder::throwNotPlanar(std::uint32_t t, std::uint32_t u) const {
   char figures[96];
   std::snprintf(figures, sizeof figures, "%.3Lg off the plane (%.3Lg of the face's size)", off,
                 off / size);
-  throw GeometryError(faceName(t) + " is not planar: " + vertexName(w) + " lies " + figures +
-                          " through vertices " + std::to_string(out_.sourceVertex_[a[0]]) + ", " +
+  throw GeometryError("face " + std::to_string(f) + " is not planar: " + vertexName(w) + " lies " +
+                          figures + " through vertices " +
+                          std::to_string(out_.sourceVertex_[a[0]]) + ", " +
                           std::to_string(out_.sourceVertex_[a[1]]) + " and " +
-                          std::to_string(out_.sourceVertex_[a[2]]) +
+                          std::to_string(out_.sourceVertex_[a[2]]) + ", " +
+                          roundingVerdict(measureFold(v[a[0]], v[a[1]], v[a[2]], v[w])) +
                           "; a mesh whose coordinates were rounded can be read as the convex hull "
                           "of its vertices instead (--hull; in Python, hull=True)",
-                      triangleLine(t));
+                      faceLine(f));
 }
 
 }  // namespace convexloc::detail

@@ -105,6 +105,27 @@ TEST_F(CliFormats, HullOfPolygonPointsInAnyOrder) {
   EXPECT_EQ(info.code, 0) << info.err;
 }
 
+TEST_F(CliFormats, AnXyzScanIsAPointCloudForHull) {
+  // the corners of [0, 2]^3 and points on its faces and edges, with intensity and colour
+  std::ofstream(scratch("scan.xyz")) << "0 0 0 9 1 2 3\n2 0 0 9 1 2 3\n0 2 0 9 1 2 3\n"
+                                        "2 2 0 9 1 2 3\n0 0 2 9 1 2 3\n2 0 2 9 1 2 3\n"
+                                        "0 2 2 9 1 2 3\n2 2 2 9 1 2 3\n1 1 2 9 1 2 3\n"
+                                        "1 0 0 9 1 2 3\n2 1 1 9 1 2 3\n";
+  std::ofstream(scratch("probe.txt")) << "1 1 1\n1 1 2\n3 1 1\n";
+  const std::string args = "classify " + q(scratch("scan.xyz")) + " " + q(scratch("probe.txt"));
+  expectRejected(run(args), "--hull");
+  const Result hull = run(args + " --hull");
+  EXPECT_EQ(hull.code, 0) << hull.err;
+  EXPECT_EQ(hull.out, "inside\nboundary\noutside\n");
+  const Result info = run("info " + q(scratch("scan.xyz")) + " --hull");
+  EXPECT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("vertices          8 kept of 11 read"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("6 plane faces"), std::string::npos) << info.out;
+  std::ofstream(scratch("short.pts")) << "3\n0 0 0 7\n1 0 0 7\n";
+  expectRejected(run("info " + q(scratch("short.pts")) + " --hull"),
+                 scratch("short.pts") + ":1: the point count on this line says 3");
+}
+
 TEST_F(CliFormats, ARoundedCubeIsRefusedWithAHintAndReadWithHull) {
   // a cube turned about (1, 2, 3), its coordinates printed to 7 digits: the squares are no
   // longer exactly planar

@@ -142,8 +142,11 @@ TEST(HostileStlPly, CountsThatLie) {
   expectError(read(fewer, false), 0, "unexpected bytes after the last element");
   std::string ascii = plyOf(cube(), PlyEncoding::Ascii);
   ascii.replace(ascii.find("element vertex 8"), 16, "element vertex 9");
-  // the first face line is read as the ninth vertex: 5 numbers for 3 properties
-  expectError(read(ascii, false), 19, "unexpected text after the values of vertex 8 of 9");
+  // the first face line is read as the ninth vertex: 5 numbers for 3 properties, and it reads
+  // as a face: the count on the header's line 4 is blamed
+  expectError(read(ascii, false), 4,
+              "element 'vertex' announces 9 records: line 19 ('4 0 1 3 2') fails as vertex 8 of "
+              "9 (unexpected text after the values of vertex 8 of 9");
 }
 
 // === Numbers
@@ -258,7 +261,8 @@ TEST(HostileStlPly, BadFacesAndHeaders) {
   expectError(read(head + "2 0 1\n", false), 13, "face 0 has 2 vertices");
   expectError(read(head + "256 0 1 2\n", false), 13, "expected a value of type uchar, found '256'");
   expectError(read(head + "3 0 1 2.0\n", false), 13, "expected a value of type int");
-  expectError(read(head + "3 0 1\n", false), 13, "fewer values than its properties");
+  // a short face reads as one more vertex: the vertex count on line 3 is blamed too
+  expectError(read(head + "3 0 1\n", false), 3, "fewer values than its properties");
   expectError(read(head + "3 0 1 2\nextra\n", false), 14, "unexpected text after the last element");
   expectError(read("ply\nformat ascii 2.0\n", false), 2, "unsupported PLY version");
   expectError(read("ply\nelement vertex 1\n", false), 2, "expected the 'format' line");

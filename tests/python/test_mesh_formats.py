@@ -48,3 +48,22 @@ def test_binary_errors_name_the_byte(tmp_path):
     with pytest.raises(convexloc.ParseError, match="byte 80: the header announces 5 facets") as caught:
         convexloc.read_polyhedron(bad)
     assert str(caught.value).startswith(f"{bad}: byte 80: ")
+
+
+def test_hulls_of_the_same_points_are_equal_in_any_order(tmp_path):
+    # a cube's corners and its face centres: 8 vertices, 6 faces, one shape in every order
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+    centres = np.vstack([np.eye(3), -np.eye(3)])
+    cloud = np.vstack([corners, centres])
+    first = convexloc.Polyhedron.hull(cloud)
+    assert first.vertex_count == 8 and first.face_count == 12
+    rng = np.random.default_rng(5)
+    for order in [cloud[::-1]] + [rng.permutation(cloud) for _ in range(20)]:
+        other = convexloc.Polyhedron.hull(order)
+        assert other == first and hash(other) == hash(first)
+        np.testing.assert_array_equal(other.vertices, first.vertices)
+        np.testing.assert_array_equal(other.triangles, first.triangles)
+    # the same points as an .xyz scan with an intensity column, read as its hull
+    scan = tmp_path / "scan.xyz"
+    scan.write_text("".join(f"{x} {y} {z} 7\n" for x, y, z in rng.permutation(cloud)))
+    assert convexloc.read_polyhedron(scan, hull=True) == first

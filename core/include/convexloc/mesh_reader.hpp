@@ -28,10 +28,11 @@ namespace convexloc {
 // The most vertices, and the most faces, a mesh file may hold or announce.
 inline constexpr std::size_t kMaxMeshElements = kMaxPolyhedronFaces;
 
-// the mesh formats
-enum class MeshFormat : std::uint8_t { Off, Obj, Stl, Ply };
+// the mesh formats, and point clouds (Xyz)
+enum class MeshFormat : std::uint8_t { Off, Obj, Stl, Ply, Xyz };
 
-// The format a path names by its extension (".off", ".obj", ".stl" or ".ply", any case).
+// The format a path names by its extension (".off", ".obj", ".stl" or ".ply"; ".xyz" or
+// ".pts" for a point cloud; any case).
 std::optional<MeshFormat> meshFormatOf(std::string_view path);
 
 // OFF: an optional header keyword ("OFF"; "COFF", "NOFF", "CNOFF", "STOFF" and the like
@@ -62,6 +63,11 @@ std::optional<MeshFormat> meshFormatOf(std::string_view path);
 // "vertex_indices" (or "vertex_index") with an integer count and index type. Every other
 // property and element is read past, lists included. A file without faces (a point cloud)
 // gives a mesh with vertices only. ASCII records are one a line.
+
+// XYZ and PTS point clouds: one point "x y z" a line, further numbers on it (intensity,
+// colour, a normal) read past, numbers separated by blanks or commas, '#' comments and blank
+// lines skipped; a first line holding one whole number is the point count (.pts), and must
+// match. The mesh has vertices only: read it as a hull (loadHull, --hull).
 
 // Parses a mesh in `format` (grammars above) from an open file, read to its end, or from the
 // text or bytes in memory. Throws ParseError naming the line (text) or byte offset (binary).

@@ -95,11 +95,13 @@ class ConvexPolyhedron {
   explicit ConvexPolyhedron(const MeshData& mesh);
 
   // The exact convex hull of `points` (hull3d.cpp: randomized incremental insertion, every
-  // decision an exact orient3d sign), then validated as above: every point is inside or on
-  // it, every vertex is an input point (sourceVertex() gives its index in `points`), points
-  // on a face's plane stay inside or on that face; a point that an earlier step made a
-  // vertex and a later one left on an edge or inside a face may stay a vertex, between
-  // coplanar triangles. The same points give the same triangles. Throws GeometryError when
+  // decision an exact orient3d sign; hull_surface.cpp: the canonical form), then validated
+  // as above: every point is inside or on it; the vertices are exactly the extreme points
+  // (no point inside a face or an edge is one), sorted by coordinates (x, then y, then z;
+  // -0 written as +0), sourceVertex() giving each one's first index in `points`; the plane
+  // faces are the maximal planes, each triangulated as a fan from its smallest vertex, in
+  // order of their first two vertices. The same points in any order, repeated or not, give
+  // the same vertices and triangles. Throws GeometryError when
   // a coordinate is not finite, or the points are fewer than 4, all equal, collinear or
   // coplanar; UsageError for more than kMaxPolyhedronVertices points.
   static ConvexPolyhedron hullOf(std::span<const Vec3> points);

@@ -25,6 +25,22 @@ bool collinear(Vec3 a, Vec3 b, Vec3 c);
 // a, b and c relative to o
 long double sixVolume(Vec3 o, Vec3 a, Vec3 b, Vec3 c, long double (&p)[3][3]);
 
+// A fold across an edge between triangles (a, b, p) and (b, a, q), measured in long double
+// for a message (polyhedron_fold.cpp): q's distance off the plane of a, b, p, the angle between
+// the two planes, and the most that rounding the corners' coordinates could explain.
+struct Fold {
+  long double off = 0;       // q's distance from the plane of a, b, p
+  long double degrees = 0;   // the angle between the planes, in degrees
+  long double rounding = 0;  // the largest `off` that rounding the corners can make
+  bool float32 = false;      // every coordinate of the four corners is a float32
+};
+Fold measureFold(Vec3 a, Vec3 b, Vec3 p, Vec3 q);
+// "a fold of D degrees, X off the plane: " and whether --hull is safe or fills a dent
+std::string describeFold(const Fold& fold);
+// "within (beyond) the rounding of float32 (double) coordinates": whether rounding explains
+// the fold's `off`
+std::string roundingVerdict(const Fold& fold);
+
 // "(x, y, z)" with enough digits to find the point again
 std::string show(Vec3 p);
 // "(x, y)" likewise (polygon.cpp)
@@ -56,6 +72,8 @@ class PolyhedronBuilder {
   void pairEdges();
   // one piece, a topological sphere
   void checkOnePieceSphere() const;
+  // the vertices of every input face in one plane (exact orient3d), whatever its first vertex
+  void checkPlanarFaces() const;
 
   // === the geometry (polyhedron_checks.cpp)
   // four vertices not in one plane (kept in tetra)
@@ -95,9 +113,12 @@ class PolyhedronBuilder {
   std::size_t triangleLine(std::uint32_t t) const;
   // the input vertices of the edges listed by their first corner
   void blame(const std::vector<std::uint32_t>& corners) const;
+  // throws for input face f, whose vertex w lies off the plane of its vertices a, b, c
+  // (merged indices): not planar, by how much
+  [[noreturn]] void throwNotPlanar(std::size_t f, const Triangle& plane, std::uint32_t w) const;
+  // throws for input face f (merged vertex indices) when its vertices are not in one plane
+  void checkPlanar(std::size_t f, const std::vector<std::uint32_t>& polygon) const;
   // throws for the first reflex edge of the minority side (sign < 0: the reflex ones)
-  // throws for an input face whose fan diagonal t | u folds inwards: not planar, by how much
-  [[noreturn]] void throwNotPlanar(std::uint32_t t, std::uint32_t u) const;
   [[noreturn]] void throwReflex(std::uint32_t firstReflex, std::uint32_t firstConvex,
                                 bool reflexIsMinority) const;
   // each vertex as seen from the centre (or the exact centroid of the tetrahedron), scaled

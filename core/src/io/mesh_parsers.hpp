@@ -13,6 +13,8 @@ namespace convexloc::detail {
 MeshData parseOffFrom(LineReader& src);
 // OBJ (obj_reader.cpp)
 MeshData parseObjFrom(LineReader& src);
+// a point cloud, x y z a line (xyz_reader.cpp)
+MeshData parseXyzFrom(LineReader& src);
 // STL, ASCII or binary (stl_reader.cpp)
 MeshData parseStlFrom(ByteSource& src);
 // PLY, ASCII or binary in either byte order (ply_reader.cpp)

@@ -18,8 +18,9 @@ namespace {
 // the format's parser run over a FILE or over text: OFF and OBJ read lines, STL and PLY bytes
 template <class Input>
 MeshData parseAs(MeshFormat format, Input in) {
-  if (format == MeshFormat::Off || format == MeshFormat::Obj) {
+  if (format == MeshFormat::Off || format == MeshFormat::Obj || format == MeshFormat::Xyz) {
     LineReader src(in);
+    if (format == MeshFormat::Xyz) return detail::parseXyzFrom(src);
     return format == MeshFormat::Off ? detail::parseOffFrom(src) : detail::parseObjFrom(src);
   }
   detail::ByteSource src(in);
@@ -44,13 +45,15 @@ std::optional<MeshFormat> meshFormatOf(std::string_view path) {
   if (ext == ".obj") return MeshFormat::Obj;
   if (ext == ".stl") return MeshFormat::Stl;
   if (ext == ".ply") return MeshFormat::Ply;
+  if (ext == ".xyz" || ext == ".pts") return MeshFormat::Xyz;
   return std::nullopt;
 }
 
 MeshData readMesh(const std::string& path) {
   std::optional<MeshFormat> format = path == "-" ? MeshFormat::Off : meshFormatOf(path);
   if (!format)
-    throw UsageError("unknown mesh format: '" + path + "' (expected .off, .obj, .stl or .ply)");
+    throw UsageError("unknown mesh format: '" + path +
+                     "' (expected .off, .obj, .stl or .ply, or a point cloud .xyz or .pts)");
   InputFile in(path);
   return parseMesh(*format, in.get());
 }
@@ -66,7 +69,7 @@ ConvexPolyhedron polyhedronOf(const MeshData& mesh) {
   } catch (const GeometryError& e) {
     // faces no longer exactly planar (coordinates rounded by an exporter) fail this way
     const std::string what = e.what();
-    if (what.rfind("not convex", 0) != 0) throw;
+    if (what.rfind("not convex", 0) != 0 || what.find("--hull") != std::string::npos) throw;
     throw GeometryError(what +
                             " (where rounded coordinates left faces not exactly planar, "
                             "--hull takes the convex hull of the vertices; hull=True in Python)",

@@ -73,6 +73,35 @@ std::string recordName(const PlyElement& e, std::uint64_t r) {
   return e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
 }
 
+// whether `line` holds exactly one ASCII record of `e` (numbers where its properties are,
+// lists as long as their counts say)
+bool fitsRecord(std::string_view line, const PlyElement& e) {
+  Tokens t(line, false);
+  std::string_view tok;
+  auto value = [&](PlyType type) {
+    long long v = 0;
+    if (!t.next(tok)) return false;
+    if (plyInteger(type)) return detail::integer(tok, v);
+    try {
+      detail::number(tok, 0);
+    } catch (const ParseError&) {
+      return false;
+    }
+    return true;
+  };
+  for (const PlyProperty& p : e.properties) {
+    long long n = 0;
+    if (!p.list) {
+      if (!value(p.type)) return false;
+      continue;
+    }
+    if (!t.next(tok) || !detail::integer(tok, n) || n < 0) return false;
+    for (long long m = 0; m < n; ++m)
+      if (!value(p.type)) return false;
+  }
+  return !t.next(tok);
+}
+
 // Reads the body after the header into a mesh.
 class PlyBody {
  public:
@@ -154,9 +183,17 @@ class PlyBody {
   void finish() {
     if (ascii_) {
       std::string_view line, tok;
-      while (src_.nextLine(line))
-        if (Tokens(line, false).next(tok))
-          throw ParseError("unexpected text after the last element: " + quote(tok), src_.line());
+      while (src_.nextLine(line)) {
+        if (!Tokens(line, false).next(tok)) continue;
+        // a line that reads as one more record of the last element blames its count
+        const PlyElement& last = h_.elements.back();
+        if (fitsRecord(line, last))
+          throw ParseError("element '" + last.name + "' announces " + std::to_string(last.count) +
+                               " records: line " + std::to_string(src_.line()) +
+                               " after them reads as one more: is the count too small?",
+                           last.line);
+        throw ParseError("unexpected text after the last element: " + quote(tok), src_.line());
+      }
       return;
     }
     if (!src_.atEnd())
@@ -254,13 +291,46 @@ class PlyBody {
     return detail::number(tok, src_.line());
   }
 
-  // one record of element `i`, one line
+  // One record of element `i`, one line. A line that fails as a record of `e` but reads as
+  // one of a neighbouring element blames the count in the header, on its line.
   void asciiRecord(std::size_t i, const PlyElement& e, std::uint64_t r) {
     std::string_view line;
     if (!src_.nextLine(line))
       throw ParseError("the file ends before " + recordName(e, r) +
                            " (element declared on header line " + std::to_string(e.line) + ")",
                        src_.line());
+    try {
+      asciiValues(i, e, r, line);
+    } catch (const ParseError& failed) {
+      if (fitsRecord(line, e)) throw;  // the record has the right shape: its values are wrong
+      blameCount(i, r, line, failed.what());
+      throw;
+    }
+  }
+
+  // A record of element `i` whose line has the wrong shape for it, and the shape of a record
+  // of the element after it (a count too large) or, for the first record, of the element
+  // before it (that one's count too small): ParseError on the header line of the count.
+  void blameCount(std::size_t i, std::uint64_t r, std::string_view line, const char* problem) {
+    const PlyElement& e = h_.elements[i];
+    const std::string at = "line " + std::to_string(src_.line()) + " ('" +
+                           std::string(line.substr(0, 40)) + "') fails as " + recordName(e, r) +
+                           " (" + problem + ")";
+    if (i + 1 < h_.elements.size() && fitsRecord(line, h_.elements[i + 1]))
+      throw ParseError("element '" + e.name + "' announces " + std::to_string(e.count) +
+                           " records: " + at + " and reads as a '" + h_.elements[i + 1].name +
+                           "' record: is the count too large?",
+                       e.line);
+    if (r == 0 && i > 0 && fitsRecord(line, h_.elements[i - 1]))
+      throw ParseError("element '" + h_.elements[i - 1].name + "' announces " +
+                           std::to_string(h_.elements[i - 1].count) + " records: " + at +
+                           " and reads as one more '" + h_.elements[i - 1].name +
+                           "': is the count too small?",
+                       h_.elements[i - 1].line);
+  }
+
+  // the values of one record of element `i` from its line
+  void asciiValues(std::size_t i, const PlyElement& e, std::uint64_t r, std::string_view line) {
     Tokens t(line, false);
     const bool vertex = i == h_.vertexElement, face = i == h_.faceElement;
     double xyz[3] = {0, 0, 0};
