@@ -10,26 +10,63 @@ cd "$(dirname "$0")/.."
 start=$SECONDS
 jobs=$(nproc)
 ctest_args=(--output-on-failure --parallel "$jobs" --timeout 1500)
+# each ctest run's results (per-test times), for the slowest tests at the end
+results=$(mktemp -d)
+trap 'rm -rf "$results"' EXIT
 
 # when a step fails, say which one
 step="set-up"
-trap 'echo "convexloc: FAILED in step: $step" >&2' ERR
-elapsed() { printf '%dm%02ds' $(((SECONDS - start) / 60)) $(((SECONDS - start) % 60)); }
+step_start=$SECONDS
+step_times=()
+trap 'echo "convexloc: FAILED in step: $step" >&2; summary' ERR
+span() { printf '%dm%02ds' $(($1 / 60)) $(($1 % 60)); }
+elapsed() { span $((SECONDS - start)); }
+# the step now starting; the one before it is timed
+begin() {
+  local took=$((SECONDS - step_start))
+  step_times+=("$(printf '  %-16s %s' "$step" "$(span "$took")")")
+  echo "convexloc: $step took $(span "$took"); now: $1 [$(elapsed)]"
+  step=$1
+  step_start=$SECONDS
+}
+# each step's time and the ten slowest tests of the runs so far (from their JUnit reports)
+summary() {
+  begin "summary"
+  echo "convexloc: time per step"
+  printf '%s\n' "${step_times[@]}"
+  local run
+  for run in plain sanitized fuzz; do
+    compgen -G "$results/$run-*.xml" >/dev/null || continue
+    echo "convexloc: the ten slowest tests of the $run run (seconds)"
+    /usr/bin/python3 - "$results"/"$run"-*.xml <<'PY'
+import sys
+import xml.etree.ElementTree as ET
 
-step="plain build"
+cases = [(float(c.get("time", 0)), c.get("name", "?"))
+         for path in sys.argv[1:] for c in ET.parse(path).getroot().iter("testcase")]
+for seconds, name in sorted(cases, reverse=True)[:10]:
+    print(f"  {seconds:8.1f}  {name}")
+PY
+  done
+}
+
+begin "plain build"
 scripts/setup.sh --werror
-step="plain tests"
+begin "plain tests"
 echo "convexloc: running the test suite (build/) [$(elapsed)]"
-ctest --test-dir build "${ctest_args[@]}"
-step="web page"
+ctest --test-dir build "${ctest_args[@]}" --output-junit "$results/plain-all.xml"
+begin "web page"
 echo "convexloc: building the web page and testing it in Chromium (build-web/) [$(elapsed)]"
 scripts/web.sh
 /usr/bin/python3 tests/web/web_page_test.py build-web/site
-if [[ "${1:-}" == "--quick" ]]; then exit 0; fi
+if [[ "${1:-}" == "--quick" ]]; then
+  summary
+  exit 0
+fi
 
-step="sanitized build"
+begin "sanitized build"
 scripts/setup.sh --werror --sanitize
-step="sanitized tests"
+begin "sanitized tests"
 echo "convexloc: running the test suite under ASan + UBSan (build-asan/) [$(elapsed)]"
 # Any report aborts the process, which fails its test; leaks are reports too.
 # The install test is left out: it builds a consumer without the sanitizer runtime.
@@ -38,19 +75,20 @@ asan=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_aft
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export CONVEXLOC_HOSTILE_SCALE=${CONVEXLOC_HOSTILE_SCALE_ASAN:-0.1}
 ASAN_OPTIONS=$asan ctest --test-dir build-asan "${ctest_args[@]}" --label-exclude install \
-  --exclude-regex '^viewer[.]smoke[.]'
+  --exclude-regex '^viewer[.]smoke[.]' --output-junit "$results/sanitized-most.xml"
 # The viewer's smoke tests run the real app on Mesa (llvmpipe) under Xvfb. Mesa's driver,
 # which the GL library loads and unloads, leaks a few hundred bytes that LeakSanitizer can
 # no longer attribute at exit (its module is gone): these tests run with leak detection
 # off and every other check on.
 ASAN_OPTIONS=${asan/detect_leaks=1/detect_leaks=0} ctest --test-dir build-asan "${ctest_args[@]}" \
-  --tests-regex '^viewer[.]smoke[.]' --no-tests=ignore
+  --tests-regex '^viewer[.]smoke[.]' --no-tests=ignore --output-junit "$results/sanitized-viewer.xml"
 unset UBSAN_OPTIONS CONVEXLOC_HOSTILE_SCALE
 
-step="fuzz build"
+begin "fuzz build"
 scripts/setup.sh --werror --fuzz
-step="fuzz runs"
+begin "fuzz runs"
 echo "convexloc: fuzzing each target for ${CONVEXLOC_FUZZ_SECONDS:-20} s (build-fuzz/) [$(elapsed)]"
 cmake -S . -B build-fuzz -DCONVEXLOC_FUZZ_SECONDS="${CONVEXLOC_FUZZ_SECONDS:-20}" >/dev/null
-ctest --test-dir build-fuzz "${ctest_args[@]}" --label-regex fuzz
+ctest --test-dir build-fuzz "${ctest_args[@]}" --label-regex fuzz --output-junit "$results/fuzz-all.xml"
+summary
 echo "convexloc: all tests passed: plain, sanitized and fuzzed [$(elapsed)]"

@@ -253,13 +253,8 @@ TEST(Intersect3DDual, BatchLengthsAgreeWithSingle) {
 // have degrees far above what a grid cell copies, so cells proposing them reach their
 // records by index. Every plane, one at a time, in a batch and traced, matches the reference,
 // and such a vertex is proposed.
-// planes per magnitude in the high-degree test: the build over Boost's cpp_int (NoGmp.*)
-// decides these extreme exponents about seven times slower, so it checks a fifth of them
-#if defined(CONVEXLOC_USE_GMP) && CONVEXLOC_USE_GMP == 0
-constexpr std::size_t kHighDegreePlanes = 60;
-#else
+// planes per magnitude in the high-degree test
 constexpr std::size_t kHighDegreePlanes = 300;
-#endif
 
 TEST(Intersect3DDual, HighDegreeVerticesMatchTheReference) {
   for (int e : {0, 600, -600}) {

@@ -17,6 +17,7 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate3d.hpp"
 #include "reference3d.hpp"
+#include "scale.hpp"
 #include "shapes3d.hpp"
 
 using namespace convexloc;
@@ -64,6 +65,11 @@ std::string mismatch(const std::string& shape, Config config, const char* path, 
   return s.str();
 }
 
+// n scaled by CONVEXLOC_HOSTILE_SCALE where it is over `floor`, never below it
+std::size_t sized(std::size_t n, std::size_t floor) {
+  return n <= floor ? n : testscale::scaled(n, floor);
+}
+
 class LocateExact3D : public testing::TestWithParam<std::size_t> {};
 
 }  // namespace
@@ -71,20 +77,22 @@ class LocateExact3D : public testing::TestWithParam<std::size_t> {};
 TEST_P(LocateExact3D, EveryMethodMatchesTheReference) {
   const shapes3d::ShapeCase& shape = shapes3d::matrix()[GetParam()];
   const std::string name = std::string(toString(shape.kind)) + "-" + std::to_string(shape.n);
-  const ConvexPolyhedron p(generatePolyhedron(shape.kind, shape.n, 11));
+  // under the sanitizers (CONVEXLOC_HOSTILE_SCALE) the large shapes and the random point
+  // sets are smaller; the test's name keeps the full size
+  const ConvexPolyhedron p(generatePolyhedron(shape.kind, sized(shape.n, 1000), 11));
   const reftest::Reference ref(p);
   ASSERT_TRUE(ref.sound());
 
   Rng rng(0x3d00 + GetParam());
-  std::vector<Vec3> points = generatePoints3D(p, shape.randomPoints, 21, false);
+  std::vector<Vec3> points = generatePoints3D(p, sized(shape.randomPoints, 3000), 21, false);
   auto append = [&](const std::vector<Vec3>& more) {
     points.insert(points.end(), more.begin(), more.end());
   };
-  append(generatePoints3D(p, shape.nearPoints, 22, true));
+  append(generatePoints3D(p, sized(shape.nearPoints, 3000), 22, true));
   append(adversarial3d::surfacePoints(p, p.faceCount() > 1000 ? 500 : 1500, rng));
   append(adversarial3d::cubemapPoints(p, CubemapLocator(p), rng));
   append(adversarial3d::cubemapPoints(p, CubemapLocator(p, 48), rng));
-  if (shape.randomPoints + shape.nearPoints >= 100000) {
+  if (testscale::factor() == 1.0 && shape.randomPoints + shape.nearPoints >= 100000) {
     EXPECT_GE(points.size(), 100000u);
   }
 
@@ -187,7 +195,10 @@ TEST(Locate3D, ExtremeScalesAndPoints) {
 TEST(Locate3D, NeedlesAcrossTheDoubleRange) {
   const std::vector<std::array<Vec3, 4>> needles = {
       {{{4e-150, 1e-150, 0}, {115e10, 1e150, 3e11}, {75, 2e150, -1e12}, {-2e12, 1.5e150, 1e11}}},
-      {{{0, 0, 0}, {3e154, 1e154 + 1e138, 2e138}, {1.5e154, 5e153, -3e138}, {2e154, 7e153, 5e138}}}};
+      {{{0, 0, 0},
+        {3e154, 1e154 + 1e138, 2e138},
+        {1.5e154, 5e153, -3e138},
+        {2e154, 7e153, 5e138}}}};
   for (const auto& n : needles) {
     MeshData m = shapes3d::tetrahedron(n[0], n[1], n[2], n[3]);
     if (!shapes3d::failureOf(m).message.empty()) m = shapes3d::reversed(m);
@@ -195,10 +206,10 @@ TEST(Locate3D, NeedlesAcrossTheDoubleRange) {
     const reftest::Reference ref(p);
     Rng rng(0x7e3d);
     std::vector<Vec3> points = generatePoints3D(p, 3000, 5, false);
-    for (const auto& more : {generatePoints3D(p, 3000, 6, true),
-                             adversarial3d::surfacePoints(p, 1500, rng),
-                             adversarial3d::cubemapPoints(p, CubemapLocator(p), rng),
-                             adversarial3d::cubemapPoints(p, CubemapLocator(p, 48), rng)})
+    for (const auto& more :
+         {generatePoints3D(p, 3000, 6, true), adversarial3d::surfacePoints(p, 1500, rng),
+          adversarial3d::cubemapPoints(p, CubemapLocator(p), rng),
+          adversarial3d::cubemapPoints(p, CubemapLocator(p, 48), rng)})
       points.insert(points.end(), more.begin(), more.end());
     points.insert(points.end(), n.begin(), n.end());
     std::size_t wrong = 0, inside = 0;

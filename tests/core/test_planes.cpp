@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <ostream>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "adversarial3d.hpp"
@@ -16,6 +18,7 @@
 #include "convexloc/generate3d.hpp"
 #include "convexloc/locate3d.hpp"
 #include "reference3d.hpp"
+#include "scale.hpp"
 
 using namespace convexloc;
 
@@ -101,27 +104,52 @@ TEST(Planes, WithoutCoplanarNeighboursFaceTIsTriangleT) {
   EXPECT_EQ(HalfspaceLocator(cube).stats().triangles, cube.faceCount());
 }
 
-TEST(Planes, CylindersAndPrismsAreExact) {
-  for (auto [kind, n] : {std::pair{PolyhedronKind::Cylinder, std::size_t{252}},
-                         std::pair{PolyhedronKind::Cylinder, std::size_t{16380}},
-                         std::pair{PolyhedronKind::Prism, std::size_t{4000}}}) {
-    SCOPED_TRACE(std::string(toString(kind)) + " " + std::to_string(n));
-    const ConvexPolyhedron p(generatePolyhedron(kind, n, 1));
-    Rng rng(17);
-    // the reference tests every face: the 16380-triangle cylinder gets a quarter of the
-    // random points (its zones and cells get every adversarial point all the same)
-    const std::size_t share = n > 10000 ? 4 : 1;
-    std::vector<Vec3> points = generatePoints3D(p, 6000 / share, 3, false);
-    auto append = [&](const std::vector<Vec3>& more) {
-      points.insert(points.end(), more.begin(), more.end());
-    };
-    append(generatePoints3D(p, 6000 / share, 4, true));
-    append(edgePoints(p, 600));
-    append(adversarial3d::surfacePoints(p, 800, rng));
-    append(adversarial3d::cubemapPoints(p, CubemapLocator(p), rng));
-    expectExact(p, points, toString(kind).data());
-  }
+namespace {
+
+// a shape of the exactness test, its size asked of the generator (CONVEXLOC_HOSTILE_SCALE
+// scales the large ones, as under the sanitizers)
+struct ThinFacedShape {
+  const char* name;  // with the full size, the same in every run
+  PolyhedronKind kind;
+  std::size_t n;
+};
+
+// the name in gtest's listing of the parameter
+void PrintTo(const ThinFacedShape& shape, std::ostream* out) {
+  *out << shape.name;
 }
+
+class PlanesExact : public testing::TestWithParam<ThinFacedShape> {};
+
+}  // namespace
+
+TEST_P(PlanesExact, CylindersAndPrismsAreExact) {
+  const auto [name, kind, n] = GetParam();
+  SCOPED_TRACE(std::string(name) + " at size " + std::to_string(n));
+  const ConvexPolyhedron p(generatePolyhedron(kind, n, 1));
+  Rng rng(17);
+  // the reference tests every face: the 16380-triangle cylinder gets a quarter of the
+  // random points (its zones and cells get every adversarial point all the same)
+  const std::size_t share = n > 10000 ? 4 : 1;
+  std::vector<Vec3> points = generatePoints3D(p, 6000 / share, 3, false);
+  auto append = [&](const std::vector<Vec3>& more) {
+    points.insert(points.end(), more.begin(), more.end());
+  };
+  append(generatePoints3D(p, 6000 / share, 4, true));
+  append(edgePoints(p, 600));
+  append(adversarial3d::surfacePoints(p, 800, rng));
+  append(adversarial3d::cubemapPoints(p, CubemapLocator(p), rng));
+  expectExact(p, points, toString(kind).data());
+}
+
+// each shape its own test, so that they run side by side
+INSTANTIATE_TEST_SUITE_P(
+    Planes, PlanesExact,
+    testing::Values(
+        ThinFacedShape{"cylinder_252", PolyhedronKind::Cylinder, 252},
+        ThinFacedShape{"cylinder_16380", PolyhedronKind::Cylinder, testscale::scaled(16380, 1020)},
+        ThinFacedShape{"prism_4000", PolyhedronKind::Prism, testscale::scaled(4000, 400)}),
+    [](const testing::TestParamInfo<ThinFacedShape>& param) { return param.param.name; });
 
 TEST(Planes, ThinSideFacesAreSearchedByBisection) {
   const ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Cylinder, 16380, 1));

@@ -26,6 +26,8 @@
 #include <string_view>
 #include <vector>
 
+#include "scale.hpp"
+
 namespace hostile {
 
 namespace fs = std::filesystem;
@@ -43,11 +45,7 @@ inline const std::string kBin = CONVEXLOC_BIN;
 // Sizes of the huge inputs are multiplied by CONVEXLOC_HOSTILE_SCALE (default 1), so that the
 // sanitized run can use smaller ones; never below `floor`.
 inline std::size_t scaled(std::size_t full, std::size_t floor) {
-  const char* env = std::getenv("CONVEXLOC_HOSTILE_SCALE");
-  double scale = env ? std::strtod(env, nullptr) : 1.0;
-  if (!(scale > 0)) scale = 1.0;
-  auto n = static_cast<std::size_t>(static_cast<double>(full) * scale);
-  return n < floor ? floor : n;
+  return testscale::scaled(full, floor);
 }
 
 // How much a run's peak memory may exceed a small run's and still count as constant: 16 MiB.

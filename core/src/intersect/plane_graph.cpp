@@ -1,5 +1,7 @@
 // convexloc — the vertex graph of a polyhedron and the exact fallback of a plane's vertex
 // comparison (graph3d.hpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -22,14 +24,37 @@ VertexGraph::VertexGraph(const ConvexPolyhedron& polyhedron) {
     for (int k = 0; k < 3; ++k) neighbours[cursor[t[k]]++] = t[(k + 1) % 3];
 }
 
+namespace {
+
+// the lowest exponent of a last bit among the non-zero values (0 when all are zero)
+int lowestBit(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
+  int lo = 0;
+  bool any = false;
+  for (const Vec3* side : {from, to})
+    for (int k = 0; k < 3; ++k)
+      for (double v : {side[k].x, side[k].y, side[k].z}) {
+        if (v == 0.0) continue;
+        int e = 0;
+        std::frexp(v, &e);
+        lo = any ? std::min(lo, e - 53) : e - 53;
+        any = true;
+      }
+  return lo;
+}
+
+}  // namespace
+
+// every operand times 2^-lo is an integer, so the determinant's sign is decided in integers
 int det3DifferencesExact(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
-  ExactRational r[3][3];
+  const int shift = -lowestBit(from, to);
+  auto exact = [shift](double v) { return scaledInteger(v, shift); };
+  ExactInt r[3][3];
   for (int k = 0; k < 3; ++k) {
-    r[k][0] = exactRational(to[k].x) - exactRational(from[k].x);
-    r[k][1] = exactRational(to[k].y) - exactRational(from[k].y);
-    r[k][2] = exactRational(to[k].z) - exactRational(from[k].z);
+    r[k][0] = exact(to[k].x) - exact(from[k].x);
+    r[k][1] = exact(to[k].y) - exact(from[k].y);
+    r[k][2] = exact(to[k].z) - exact(from[k].z);
   }
-  ExactRational det = 0;
+  ExactInt det = 0;
   for (int k = 0; k < 3; ++k) {
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     det += r[0][k] * (r[1][i] * r[2][j] - r[1][j] * r[2][i]);
