@@ -178,7 +178,9 @@ void CubemapBuilder::findFans() {
   std::vector<std::array<double, 3>> normals, mids;
   for (std::uint32_t f = 0; f < planes; ++f) {
     double m[3] = {}, mid[3] = {};
-    if (zoneOf_[f] != kNoFan || !thinFace(polyhedron_.planeLoop(f), v, c, m, mid)) continue;
+    if (zoneOf_[f] != kNoFan /* a zone's (the same mark) */ ||
+        !thinFace(polyhedron_.planeLoop(f), v, c, m, mid))
+      continue;
     thin.push_back(f);
     normals.push_back({m[0], m[1], m[2]});
     mids.push_back({mid[0], mid[1], mid[2]});
@@ -196,7 +198,7 @@ void CubemapBuilder::findFans() {
   const Vec3 q{c.x + size * t[0], c.y + size * t[1], c.z + size * t[2]};
   std::vector<std::vector<std::uint32_t>> arcs(kArcs);
   for (std::size_t k = 0; k < thin.size(); ++k) {
-    const double(&d)[3] = *reinterpret_cast<const double(*)[3]>(mids[k].data());
+    const double d[3] = {mids[k][0], mids[k][1], mids[k][2]};
     const double angle = std::atan2(dot(d, e2), dot(d, e1));
     const int arc =
         static_cast<int>(std::floor((angle + std::numbers::pi) / (2 * std::numbers::pi) * kArcs));
