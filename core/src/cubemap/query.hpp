@@ -117,16 +117,16 @@ template <class Sink>
 Location CubemapLocator::fromSectors(Vec3 p, const Node& leaf, Sink& sink) const noexcept {
   // past the plane through the axis and the reference: the ray leaves through one of the
   // others; else p's place j among the leaf's keys, the faces of j's window (the back faces
-  // before it) and the others
-  // (see cubemap/sectors.cpp)
+  // before it) and the others (see cubemap/sectors.cpp)
   const std::uint32_t* e = entries_.data() + leaf.first;
   const SectorRange& r = sectorRanges_[e[0]];
   const Sectors& f = sectors_[r.fan];
   const std::uint32_t* others = e + 1;
   const std::uint32_t count = cubemap::leafEntries(leaf.count) - 1;
   const std::uint32_t* keys = sectorKeys_.data() + f.first;
+  const std::uint32_t* faces = sectorFaces_.data() + f.first;
   const std::vector<Vec3>& v = surface_.vertices;
-  Location near = Location::Inside;
+  std::uint32_t from = 0, to = 0;  // the window
   if (orient3d(centre_, f.axis, f.reference, p) == f.sign) {
     std::uint32_t lo = r.from, hi = r.to;
     while (lo < hi) {
@@ -139,14 +139,29 @@ Location CubemapLocator::fromSectors(Vec3 p, const Node& leaf, Sink& sink) const
       else
         hi = mid;
     }
-    const std::uint32_t back = lo < f.size ? keys[lo] >> cubemap::kSectorBackShift : f.back;
-    const std::uint32_t* faces = sectorFaces_.data() + f.first;
-    near = detail::testList(surface_, faces + lo - back, faces + lo, p, sink);
-    if (near == Location::Outside) return near;
+    from = lo - (lo < f.size ? keys[lo] >> cubemap::kSectorBackShift : f.back), to = lo;
   } else if (count == 0) {
     sink.fallback();  // cannot happen (the ray leaves through a listed face); be safe
     return detail::testAll(surface_, p, sink);
   }
+  if constexpr (std::is_same_v<Sink, detail::NoSink3D>) {
+    // untraced: every face's filter without a branch on it, as for a plain leaf
+    bool beyond = false, allSure = true;
+    auto filter = [&](const std::uint32_t* first, const std::uint32_t* last) {
+      for (const std::uint32_t* k = first; k != last; ++k) {
+        const ConvexPolyhedron::Triangle& t = surface_.faces[*k];
+        const auto terms = detail::orient3dTerms(v[t[0]], v[t[1]], v[t[2]], p);
+        const bool sure = detail::orient3dSure(terms);
+        beyond |= sure & (terms.det < 0);
+        allSure &= sure;
+      }
+    };
+    filter(faces + from, faces + to);
+    filter(others, others + count);
+    if (beyond | allSure) return detail::insideOrOutside(beyond);
+  }
+  const Location near = detail::testList(surface_, faces + from, faces + to, p, sink);
+  if (near == Location::Outside) return near;
   const Location rest = detail::testList(surface_, others, others + count, p, sink);
   return rest == Location::Inside ? near : rest;
 }
