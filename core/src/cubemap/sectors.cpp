@@ -222,6 +222,9 @@ void CubemapBuilder::findFans() {
     }
     addFan(inside, q, r, sigma);
   }
+  L.sectors_.shrink_to_fit();
+  L.sectorFaces_.shrink_to_fit();
+  L.sectorKeys_.shrink_to_fit();
 }
 
 void CubemapBuilder::addFan(std::vector<std::uint32_t>& faces, Vec3 q, Vec3 r, int sigma) {
