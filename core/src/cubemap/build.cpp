@@ -144,11 +144,9 @@ bool CubemapBuilder::aimFromCentre() {
 
 std::size_t CubemapBuilder::memoryBudget() const {
   // 120 bytes per triangle in all, plus kFixedBudget (so that small polyhedra, the ones a
-  // lecturer draws, still get a grid worth showing, and fast radii), less the fans' tables
+  // lecturer draws, still get a grid worth showing, and fast radii)
   const CubemapLocator& L = locator_;
-  const std::size_t fixed = sizeof(CubemapLocator) + L.surface_.bytes() + L.mesh_.bytes() +
-                            L.sectors_.size() * sizeof(CubemapLocator::Sectors) +
-                            (L.sectorFaces_.size() + L.sectorKeys_.size()) * sizeof(std::uint32_t);
+  const std::size_t fixed = sizeof(CubemapLocator) + L.surface_.bytes() + L.mesh_.bytes();
   const std::size_t total = 120 * L.surface_.triangles + kFixedBudget;
   return total > fixed ? total - fixed : 0;
 }
