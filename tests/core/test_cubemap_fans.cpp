@@ -101,4 +101,14 @@ INSTANTIATE_TEST_SUITE_P(Cylinders, CadFans,
                                   (param.param.moved ? "_moved" : "");
                          });
 
+// the fans' tables and the cells of the larger parts within the cube map's memory bound
+TEST(CadFans, LargerPartsStayWithin128BytesPerTriangle) {
+  for (const Case k : {Case{scaled(4096, 512), 1, false}, Case{scaled(4096, 512), 10, true}}) {
+    const ConvexPolyhedron p = cadfamily::polyhedron({k.sides, k.height, k.moved});
+    const Stats3D s = CubemapLocator(p).stats();
+    EXPECT_GT(s.sectorCells, 0u) << k.sides << " sides, height " << k.height;
+    EXPECT_LE(s.bytes, 128 * s.triangles + 65536) << k.sides << " sides, height " << k.height;
+  }
+}
+
 }  // namespace
