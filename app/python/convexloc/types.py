@@ -129,6 +129,7 @@ class Trace3D(_TraceCommon):
     steps: list[tuple[int, int, int]]  # (face, edge, sign)
     faces: list[tuple[int, int]]       # (face, sign)
     zone_steps: list[tuple[int, int, int, int]]  # (zone edge, vertex a, vertex b, sign)
+    sector_steps: list[tuple[int, int, int]]  # (fan place, key vertex, sign)
     radius_filter: bool
     direction: tuple[float, float, float]
     cells_per_side: int
@@ -146,6 +147,7 @@ class Stats3D(TypedDict):
     mean_per_cell: float
     crowded_cells: int
     zone_cells: int
+    sector_cells: int
     resolution: int
     max_level: int
     centred: bool

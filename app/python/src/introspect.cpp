@@ -137,6 +137,9 @@ py::dict traceToPython(const Trace3D& t) {
   py::list zone;
   for (const ZoneTest& z : t.zoneSteps) zone.append(py::make_tuple(z.edge, z.a, z.b, z.sign));
   d["zone_steps"] = zone;
+  py::list fan;
+  for (const SectorTest& z : t.sectorSteps) fan.append(py::make_tuple(z.index, z.vertex, z.sign));
+  d["sector_steps"] = fan;
   d["radius_filter"] = t.radiusFilter;
   d["direction"] = toPython(t.direction);
   d["cells_per_side"] = t.cellsPerSide;
@@ -147,6 +150,7 @@ py::dict statsToPython(const Stats3D& s) {
   py::dict d = statsCommon(s);
   d["faces"] = s.faces, d["triangles"] = s.triangles, d["vertices"] = s.vertices;
   d["nodes"] = s.nodes, d["zone_cells"] = s.zoneCells;
+  d["sector_cells"] = s.sectorCells;
   d["resolution"] = s.resolution, d["max_level"] = s.maxLevel, d["centred"] = s.centred;
   d["bytes_per_face"] = s.bytesPerFace;
   return d;

@@ -54,6 +54,15 @@ struct ZoneTest {
   int sign = 0;
 };
 
+// one bisection step in a sector leaf: sign of orient3d(centre, q, v, p) for the leaf's
+// sorted face k, whose corner v is its key and q a second point of the leaf's axis; the
+// leaf's sign means p's direction lies past v around the axis
+struct SectorTest {
+  std::uint32_t index = 0;
+  std::uint32_t vertex = 0;
+  int sign = 0;
+};
+
 // What one query did, step by step.
 struct Trace3D {
   Method3D method = Method3D::Halfspace;
@@ -62,7 +71,8 @@ struct Trace3D {
   bool atCentre = false;       // the point is the centre itself
   bool fallback = false;       // answered by testing every face (no centre, overflow, walk cap)
   bool crowded = false;        // cubemap: the cell held many faces: searched by a walk, or by
-                               // bisection over a zone (zoneSteps)
+                               // bisection over a zone (zoneSteps) or around an axis
+                               // (sectorSteps)
   bool byRadius = false;       // cubemap: decided by the cell's radii, before any face test
   double distance = 0.0;       // cubemap: |p - centre| (approximate, for display)
   double innerRadius = 0.0;    // cubemap: nearer than this to the centre, a point of the cell
@@ -76,11 +86,12 @@ struct Trace3D {
   std::vector<WalkTest> steps;      // walk: every edge test
   std::vector<FaceTest> faces;      // plane tests, in order
   std::vector<ZoneTest> zoneSteps;  // cubemap: the bisection over a zone of thin faces
-  bool radiusFilter = true;         // cubemap: the radius filter ran (TraceOptions::radii)
-  Vec3 direction{};                 // cubemap: p - centre, whose largest |coordinate| picks
-                                    // the cube face and whose quotients are s and t
-  std::uint32_t cellsPerSide = 0;   // cubemap: cells per side of the cube face at `level`;
-                                    // cellI = floor((s + 1) / 2 * cellsPerSide), clamped
+  std::vector<SectorTest> sectorSteps;  // cubemap: the bisection around a sector leaf's axis
+  bool radiusFilter = true;             // cubemap: the radius filter ran (TraceOptions::radii)
+  Vec3 direction{};                     // cubemap: p - centre, whose largest |coordinate| picks
+                                        // the cube face and whose quotients are s and t
+  std::uint32_t cellsPerSide = 0;       // cubemap: cells per side of the cube face at `level`;
+                                        // cellI = floor((s + 1) / 2 * cellsPerSide), clamped
 };
 
 // Size and shape of a subdivision. Methods without cells report zero cells.
@@ -96,6 +107,7 @@ struct Stats3D {
   std::size_t crowdedCells = 0;  // cells searched by a walk or a zone's bisection rather than
                                  // tested face by face
   std::size_t zoneCells = 0;     // cubemap: crowded cells searched by bisection over a zone
+  std::size_t sectorCells = 0;   // cubemap: crowded cells searched by bisection around an axis
   std::uint32_t resolution = 0;  // cubemap: G, the base grid is G x G on each cube face
   int maxLevel = 0;              // cubemap: the deepest quadtree level
   bool centred = false;       // a centre strictly inside exists (else every query tests all faces)
@@ -246,6 +258,20 @@ class CubemapLocator {
   struct ZoneRange {
     std::uint32_t zone = 0, lo = 0, span = 0;
   };
+  // A fan (cubemap/sectors.cpp): `size` thin faces sorted by the angle of a key corner around
+  // the axis through the centre and `axis`, all strictly on the `sign` side of the plane
+  // through the axis and `reference`, at sectorFaces_ / sectorKeys_[first ..]; a bisection
+  // finds p's place among the keys, and the faces of that place's window are tested (`back`
+  // faces before the place past the last key).
+  struct Sectors {
+    Vec3 axis{}, reference{};
+    int sign = 1;
+    std::uint32_t first = 0, size = 0, back = 0;
+  };
+  // a leaf's places in a fan: keys from .. to - 1 are searched
+  struct SectorRange {
+    std::uint32_t fan = 0, from = 0, to = 0;
+  };
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
@@ -271,7 +297,8 @@ class CubemapLocator {
   // the polyhedron)
   double cubeHalfSize() const noexcept { return cubeHalfSize_; }
   // the faces listed in the leaf cell p maps to (the ones a query of p may test; a zone
-  // leaf's range in full), in increasing order; empty for the centre and where there is no cell
+  // leaf's range in full, a fan leaf's faces from the first its places' windows hold to the
+  // last), in increasing order; empty for the centre and where there is no cell
   std::vector<std::uint32_t> cellFaces(Vec3 p) const;
   // the surface it locates in: its vertices, and its plane faces (ConvexPolyhedron::planes())
   std::span<const Vec3> vertices() const noexcept { return surface_.vertices; }
@@ -308,6 +335,10 @@ class CubemapLocator {
   // and the leaf's other faces
   template <class Sink>
   Location fromZone(Vec3 p, const Node& leaf, Sink& sink) const noexcept;
+  // p's answer in a sector leaf: bisection around its axis, then the faces near p's place and
+  // the leaf's others
+  template <class Sink>
+  Location fromSectors(Vec3 p, const Node& leaf, Sink& sink) const noexcept;
   // the faces leaf `nd` lists, a zone's range expanded
   std::vector<std::uint32_t> leafFaces(const Node& nd) const;
   // the whole query; run and fromLeaf stay out of line, apart from the inline aim and radii
@@ -329,9 +360,13 @@ class CubemapLocator {
   std::vector<std::array<std::uint32_t, 2>> zoneEdges_;  // E_k from vertex to vertex, along
                                                          // the zone's direction
   std::vector<std::uint32_t> zoneFaces_;
-  std::vector<ZoneRange> zoneRanges_;  // a zone leaf's first entry indexes these
-  Table<Node> nodes_;                  // 6 G^2 base cells, then blocks of 4 children
-  Table<std::uint32_t> entries_;       // each leaf's faces
+  std::vector<ZoneRange> zoneRanges_;       // a zone leaf's first entry indexes these
+  std::vector<Sectors> sectors_;            // the fans
+  std::vector<std::uint32_t> sectorFaces_;  // each fan's faces, in order
+  std::vector<std::uint32_t> sectorKeys_;   // and their keys (cubemap/index.hpp)
+  std::vector<SectorRange> sectorRanges_;   // a sector leaf's first entry indexes these
+  Table<Node> nodes_;                       // 6 G^2 base cells, then blocks of 4 children
+  Table<std::uint32_t> entries_;            // each leaf's faces
   Vec3 centre_{};
   bool centred_ = false;
   std::uint32_t resolution_ = 1;  // G

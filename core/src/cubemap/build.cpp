@@ -108,6 +108,7 @@ void CubemapBuilder::build() {
     return;
   }
   findZones();
+  findFans();
   if (!buildBaseGrid()) {
     L.resolution_ = 0;  // no cells: every query tests all faces
     return;
@@ -118,8 +119,10 @@ void CubemapBuilder::build() {
   compactEntries();
   L.nodes_.shrink_to_fit();
   encodeZones();  // crowded leaves the refinement made over a zone
+  encodeSectors();
   L.nodes_.shrink_to_fit();
   L.entries_.shrink_to_fit();
+  L.sectorRanges_.shrink_to_fit();
   setLeafRadii();
 }
 
@@ -171,18 +174,21 @@ bool CubemapBuilder::buildBaseGrid() {
     if (!fitBaseGrid(counts)) return false;  // a direction overflowed
     fillBaseCells(counts);
     encodeZones();
+    encodeSectors();
     // the fit assumed every crowded cell over a zone would become a range of it
     CubemapLocator& L = locator_;
     if (L.resolution_ == 1 || liveBytes() <= budget_) return true;
     L.resolution_ /= 2;
     L.zoneRanges_.clear();
+    L.sectorRanges_.clear();
   }
 }
 
 std::size_t CubemapBuilder::liveBytes() const {
   const CubemapLocator& L = locator_;
   return L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t) +
-         L.zoneRanges_.size() * sizeof(ZoneRange);
+         L.zoneRanges_.size() * sizeof(ZoneRange) +
+         L.sectorRanges_.size() * sizeof(CubemapLocator::SectorRange);
 }
 
 bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
@@ -195,18 +201,21 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
     const double K = levelScale(g, 0);
     const std::int64_t last = g - 1;
     std::vector<std::uint32_t> lastFace(cells, kUnlisted);  // each face once per cell
-    std::vector<std::uint32_t> inZones(zoneOf_.empty() ? 0 : cells, 0);
+    const bool grouped = !zoneOf_.empty() || !fanOf_.empty();
+    std::vector<std::uint32_t> inZones(grouped ? cells : 0, 0);
     const bool ok = forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
       rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
         const std::size_t c = baseCellIndex(cf, i, j, g);
         if (lastFace[c] == f) return;
         lastFace[c] = f;
         ++counts[c];
-        if (!inZones.empty() && zoneOf_[f] != kUnlisted) ++inZones[c];
+        if (grouped && ((!zoneOf_.empty() && zoneOf_[f] != kUnlisted) ||
+                        (!fanOf_.empty() && fanOf_[f] != kUnlisted)))
+          ++inZones[c];
       });
     });
     if (!ok) return false;
-    // a crowded cell over a zone keeps a range of it: one entry for its zone faces
+    // a crowded cell over a zone or a fan keeps a range of it: one entry for its faces there
     std::size_t entries = 0;
     for (std::size_t c = 0; c < cells; ++c) {
       const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
@@ -272,7 +281,8 @@ void CubemapBuilder::refineCrowdedCells() {
 void CubemapBuilder::queueCrowdedBaseCells() {
   const CubemapLocator& L = locator_;
   for (std::size_t c = 0; c < L.nodes_.size(); ++c)
-    if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count)) {
+    if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count) &&
+        !isSectorLeaf(L.nodes_[c].count)) {
       const BaseCell base = baseCellAt(c, L.resolution_);
       queue_.push_back(
           {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});

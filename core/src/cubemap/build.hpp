@@ -131,6 +131,19 @@ class CubemapBuilder {
   // the zone's axis (then bisection over the range is exact)
   bool zoneFits(const ZoneRange& r, int cf, int level, std::uint64_t i, std::uint64_t j) const;
 
+  // === sectors (sectors.cpp)
+  // the fans of thin faces around an axis (fanOf_, fanFrom_, fanTo_ and the locator's tables)
+  void findFans();
+  // sorts `faces` (strictly on the sigma side of the plane through c, q and r) into a fan by
+  // their first corners around the axis through c and q, with each place's window; faces
+  // whose angles span too many keys stay out of it
+  void addFan(std::vector<std::uint32_t>& faces, Vec3 q, Vec3 r, int sigma);
+  // rewrites each crowded leaf that no zone holds and that lies over a fan as a range of it
+  // with its other faces; repacks the entries
+  void encodeSectors();
+  // a fan leaf's faces for its radii: its others and the fan faces its places need
+  void fanLeafFaces(const Node& nd, std::vector<std::uint32_t>& faces) const;
+
   // === radii (radii.cpp)
   // each leaf's two radii; inner nodes get NaN
   void setLeafRadii();
@@ -149,6 +162,8 @@ class CubemapBuilder {
   std::array<double, 4> smallBounds_{};            // the box around all of them
   std::vector<cubemap::Poly> largePolys_;
   std::vector<std::uint32_t> zoneOf_, positionOf_;  // each face's zone and place in it
+  // each face's fan, and the places whose windows hold it
+  std::vector<std::uint32_t> fanOf_, fanFrom_, fanTo_;
   std::vector<std::uint32_t> lists_[cubemap::kMaxLevel + 1][4];
 };
 

@@ -9,12 +9,13 @@
 namespace convexloc {
 
 Stats3D CubemapLocator::stats() const {
-  Stats3D s = detail::baseStats(surface_,
-                                sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) +
-                                    detail::bytesOf(zoneEdges_) + detail::bytesOf(zoneFaces_) +
-                                    detail::bytesOf(zoneRanges_) + detail::bytesOf(nodes_) +
-                                    detail::bytesOf(entries_),
-                                buildSeconds_);
+  Stats3D s = detail::baseStats(
+      surface_,
+      sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) + detail::bytesOf(zoneEdges_) +
+          detail::bytesOf(zoneFaces_) + detail::bytesOf(zoneRanges_) + detail::bytesOf(sectors_) +
+          detail::bytesOf(sectorFaces_) + detail::bytesOf(sectorKeys_) +
+          detail::bytesOf(sectorRanges_) + detail::bytesOf(nodes_) + detail::bytesOf(entries_),
+      buildSeconds_);
   s.centred = centred_;
   s.resolution = centred_ ? resolution_ : 0;
   s.nodes = nodes_.size();
@@ -22,12 +23,14 @@ Stats3D CubemapLocator::stats() const {
   if (!centred_) return s;
   for (const Node& nd : nodes_) {
     if (nd.count == cubemap::kInner) continue;
-    const std::size_t count = cubemap::isZoneLeaf(nd.count) ? leafFaces(nd).size() : nd.count;
+    const bool special = cubemap::isZoneLeaf(nd.count) || cubemap::isSectorLeaf(nd.count);
+    const std::size_t count = special ? leafFaces(nd).size() : nd.count;
     ++s.cells;
     s.entries += count;
     s.maxPerCell = std::max(s.maxPerCell, count);
     if (count > kCrowdedCell3D) ++s.crowdedCells;
     s.zoneCells += cubemap::isZoneLeaf(nd.count);
+    s.sectorCells += cubemap::isSectorLeaf(nd.count);
     ++s.histogram[std::min<std::size_t>(count, s.histogram.size() - 1)];
   }
   s.meanPerCell = s.cells ? static_cast<double>(s.entries) / static_cast<double>(s.cells) : 0.0;

@@ -38,7 +38,8 @@
 // is Outside in any case. So "any negative: Outside; else any zero: Boundary; else Inside"
 // over the listed faces is exact. A crowded cell is searched by a walk from one of its
 // faces, which ends at such a face T; if the walk runs too long the cell's list is tested. A
-// crowded cell over a zone of thin faces is searched by bisection (cubemap/zones.cpp).
+// crowded cell over a zone of thin faces is searched by bisection (cubemap/zones.cpp), and
+// one whose faces are thin around some axis by bisection around it (cubemap/sectors.cpp).
 // The radii that decide most points first are sound by the argument of detail/radii.hpp.
 #pragma once
 
@@ -59,9 +60,27 @@ inline constexpr std::uint32_t kInner = 0xffffffffu;
 // entry indexes zoneRanges_, the others follow. Never kInner: others stay below 2^31 - 1.
 inline constexpr std::uint32_t kZoneLeaf = 0x80000000u;
 
+// A leaf over a fan of thin faces sorted around an axis (cubemap/sectors.cpp): Node::count
+// is kSectorLeaf | (1 + others); its first entry indexes sectorRanges_, the others follow.
+// A fan's key entry: a corner's index (below 2^27) and the window's faces before the key's
+// place (5 bits). No leaf lists 2^30 faces (a polyhedron has at most 2^27).
+inline constexpr std::uint32_t kSectorLeaf = 0x40000000u;
+inline constexpr int kSectorBackShift = 27;
+inline constexpr std::uint32_t kSectorKey = (1u << kSectorBackShift) - 1, kSectorBack = 31;
+
 // whether a leaf's count marks a zone leaf
 inline bool isZoneLeaf(std::uint32_t count) {
   return count != kInner && (count & kZoneLeaf);
+}
+
+// whether a leaf's count marks a sector leaf
+inline bool isSectorLeaf(std::uint32_t count) {
+  return count != kInner && !(count & kZoneLeaf) && (count & kSectorLeaf);
+}
+
+// the entries a leaf's count stands for
+inline std::uint32_t leafEntries(std::uint32_t count) {
+  return count & ~(kZoneLeaf | kSectorLeaf);
 }
 
 // K = (cells per side) / 2 at `level` over base resolution g: cell i spans

@@ -38,6 +38,20 @@ std::vector<std::uint32_t> CubemapLocator::cellFaces(Vec3 p) const {
 
 std::vector<std::uint32_t> CubemapLocator::leafFaces(const Node& nd) const {
   const std::uint32_t* e = entries_.data() + nd.first;
+  if (cubemap::isSectorLeaf(nd.count)) {
+    // the others, and the fan's faces from the first any window of the range holds on
+    const SectorRange& r = sectorRanges_[e[0]];
+    const Sectors& f = sectors_[r.fan];
+    std::uint32_t lo = r.from;
+    for (std::uint32_t j = r.from; j <= r.to; ++j)
+      lo = std::min(
+          lo, j - (j < f.size ? sectorKeys_[f.first + j] >> cubemap::kSectorBackShift : f.back));
+    std::vector<std::uint32_t> faces(e + 1, e + cubemap::leafEntries(nd.count));
+    faces.insert(faces.end(), sectorFaces_.begin() + f.first + lo,
+                 sectorFaces_.begin() + f.first + r.to);
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  }
   if (!cubemap::isZoneLeaf(nd.count)) return {e, e + nd.count};
   const ZoneRange& r = zoneRanges_[e[0]];
   const Zone& z = zones_[r.zone];

@@ -3,6 +3,7 @@
 // (or walk, in a crowded leaf). Why this is exact: cubemap/index.hpp.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -74,6 +75,7 @@ Location CubemapLocator::fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sin
     return detail::testList(surface_, first, first + leaf.count, p, sink);
   sink.crowded();
   if (cubemap::isZoneLeaf(leaf.count)) return fromZone(p, leaf, sink);
+  if (cubemap::isSectorLeaf(leaf.count)) return fromSectors(p, leaf, sink);
   return detail::walkAndTest(
       surface_, mesh_, centre_, p, mesh_.triangle(*first), 16 + leaf.count / 4, sink,
       [&] { return detail::testList(surface_, first, first + leaf.count, p, sink); });
@@ -109,6 +111,59 @@ Location CubemapLocator::fromZone(Vec3 p, const Node& leaf, Sink& sink) const no
   if (s < 0) return Location::Outside;
   const Location rest = detail::testList(surface_, e + 1, e + 1 + others, p, sink);
   return rest == Location::Inside && s == 0 ? Location::Boundary : rest;
+}
+
+template <class Sink>
+Location CubemapLocator::fromSectors(Vec3 p, const Node& leaf, Sink& sink) const noexcept {
+  // past the plane through the axis and the reference: the ray leaves through one of the
+  // others; else p's place j among the leaf's keys, the faces of j's window (the back faces
+  // before it) and the others (see cubemap/sectors.cpp)
+  const std::uint32_t* e = entries_.data() + leaf.first;
+  const SectorRange& r = sectorRanges_[e[0]];
+  const Sectors& f = sectors_[r.fan];
+  const std::uint32_t* others = e + 1;
+  const std::uint32_t count = cubemap::leafEntries(leaf.count) - 1;
+  const std::uint32_t* keys = sectorKeys_.data() + f.first;
+  const std::uint32_t* faces = sectorFaces_.data() + f.first;
+  const std::vector<Vec3>& v = surface_.vertices;
+  std::uint32_t from = 0, to = 0;  // the window
+  if (orient3d(centre_, f.axis, f.reference, p) == f.sign) {
+    std::uint32_t lo = r.from, hi = r.to;
+    while (lo < hi) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      const std::uint32_t key = keys[mid] & cubemap::kSectorKey;
+      const int s = orient3d(centre_, f.axis, v[key], p);
+      sink.sector(mid, key, s);
+      if (s == f.sign)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    from = lo - (lo < f.size ? keys[lo] >> cubemap::kSectorBackShift : f.back), to = lo;
+  } else if (count == 0) {
+    sink.fallback();  // cannot happen (the ray leaves through a listed face); be safe
+    return detail::testAll(surface_, p, sink);
+  }
+  if constexpr (std::is_same_v<Sink, detail::NoSink3D>) {
+    // untraced: every face's filter without a branch on it, as for a plain leaf
+    bool beyond = false, allSure = true;
+    auto filter = [&](const std::uint32_t* first, const std::uint32_t* last) {
+      for (const std::uint32_t* k = first; k != last; ++k) {
+        const ConvexPolyhedron::Triangle& t = surface_.faces[*k];
+        const auto terms = detail::orient3dTerms(v[t[0]], v[t[1]], v[t[2]], p);
+        const bool sure = detail::orient3dSure(terms);
+        beyond |= sure & (terms.det < 0);
+        allSure &= sure;
+      }
+    };
+    filter(faces + from, faces + to);
+    filter(others, others + count);
+    if (beyond | allSure) return detail::insideOrOutside(beyond);
+  }
+  const Location near = detail::testList(surface_, faces + from, faces + to, p, sink);
+  if (near == Location::Outside) return near;
+  const Location rest = detail::testList(surface_, others, others + count, p, sink);
+  return rest == Location::Inside ? near : rest;
 }
 
 }  // namespace convexloc

@@ -217,11 +217,14 @@ void CubemapBuilder::setLeafRadii() {
   constexpr std::uint32_t kSample = 32;
   CubemapLocator& L = locator_;
   const cubemap::FaceBounds whole(L.surface_, polyhedron_, L.centre_);
-  std::vector<std::uint32_t> faces;  // a zone leaf's, expanded
+  std::vector<std::uint32_t> faces;  // a zone or sector leaf's, expanded
   auto leaf = [&](std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j) {
     Node& nd = L.nodes_[node];
-    const bool zone = cubemap::isZoneLeaf(nd.count);
-    if (zone) faces = L.leafFaces(nd);
+    const bool zone = cubemap::isZoneLeaf(nd.count) || cubemap::isSectorLeaf(nd.count);
+    if (cubemap::isSectorLeaf(nd.count))
+      fanLeafFaces(nd, faces);
+    else if (zone)
+      faces = L.leafFaces(nd);
     const std::uint32_t* first = zone ? faces.data() : L.entries_.data() + nd.first;
     const auto count = zone ? static_cast<std::uint32_t>(faces.size()) : nd.count;
     double lo = count ? HUGE_VAL : 0.0, hi = count ? 0.0 : HUGE_VAL;

@@ -204,7 +204,7 @@ bool CubemapBuilder::zoneFits(const ZoneRange& r, int cf, int level, std::uint64
 }
 
 std::uint32_t CubemapBuilder::entryCount(std::uint32_t count) {
-  return isZoneLeaf(count) ? count & ~kZoneLeaf : count;
+  return leafEntries(count);
 }
 
 void CubemapBuilder::findZones() {
@@ -229,7 +229,7 @@ void CubemapBuilder::encodeZones() {
     const std::uint32_t* list = L.entries_.data() + nd.first;
     const auto first = static_cast<std::uint32_t>(entries.size());
     ZoneRange r;
-    if (!isZoneLeaf(nd.count) && nd.count > kCrowdedCell3D &&
+    if (!isZoneLeaf(nd.count) && !isSectorLeaf(nd.count) && nd.count > kCrowdedCell3D &&
         rangeOf(list, nd.count, zoneOf_, positionOf_, r, others) &&
         others.size() <= kCrowdedCell3D && zoneFits(r, cf, level, i, j)) {
       entries.push_back(static_cast<std::uint32_t>(L.zoneRanges_.size()));

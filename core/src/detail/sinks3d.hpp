@@ -26,6 +26,7 @@ struct NoSink3D {
   void cell(int, int, std::uint64_t, std::uint64_t, double, double) {}
   void crowded() {}
   void zone(std::uint32_t, std::uint32_t, std::uint32_t, int) {}
+  void sector(std::uint32_t, std::uint32_t, int) {}
   void fallback() {}
   void nonFinite() {}
   void atCentre() {}
@@ -52,6 +53,7 @@ struct TraceSink3D {
   void zone(std::uint32_t k, std::uint32_t a, std::uint32_t b, int s) {
     t.zoneSteps.push_back({k, a, b, s});
   }
+  void sector(std::uint32_t k, std::uint32_t v, int s) { t.sectorSteps.push_back({k, v, s}); }
   void radius(double d2, float in2, float out2, bool decided) {
     t.distance = std::sqrt(d2);
     t.innerRadius = std::sqrt(static_cast<double>(in2));

@@ -293,7 +293,14 @@ void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
   }
   if (t.cubeFace >= 0) cubeCellSteps(t, scale, l);
   if (t.fallback) l.add("no cell could be used: every face is tested", 3);
-  if (t.crowded && t.zoneSteps.empty()) l.add("the cell lists many faces: a walk among them", 3);
+  if (t.crowded && t.zoneSteps.empty() && t.sectorSteps.empty())
+    l.add("the cell lists many faces: a walk among them", 3);
+  if (!t.sectorSteps.empty())
+    l.add("the cell lies over a fan of thin faces: bisection by angle around its axis", 3);
+  for (const SectorTest& z : t.sectorSteps)
+    l.add(
+        "fan key " + std::to_string(z.index) + ": orient3d(x_T, axis, v, x) = " + signWord(z.sign),
+        3);
   if (!t.zoneSteps.empty())
     l.add("the cell lies over a zone of thin faces: bisection over its edges' planes", 3);
   for (const ZoneTest& z : t.zoneSteps)
