@@ -51,7 +51,7 @@ PY
 }
 
 begin "plain build"
-scripts/setup.sh --werror
+scripts/setup.sh --werror --tests
 begin "plain tests"
 echo "convexloc: running the test suite (build/) [$(elapsed)]"
 ctest --test-dir build "${ctest_args[@]}" --output-junit "$results/plain-all.xml"
@@ -65,7 +65,7 @@ if [[ "${1:-}" == "--quick" ]]; then
 fi
 
 begin "sanitized build"
-scripts/setup.sh --werror --sanitize
+scripts/setup.sh --werror --tests --sanitize
 begin "sanitized tests"
 echo "convexloc: running the test suite under ASan + UBSan (build-asan/) [$(elapsed)]"
 # Any report aborts the process, which fails its test; leaks are reports too.
@@ -85,7 +85,7 @@ ASAN_OPTIONS=${asan/detect_leaks=1/detect_leaks=0} ctest --test-dir build-asan "
 unset UBSAN_OPTIONS CONVEXLOC_HOSTILE_SCALE
 
 begin "fuzz build"
-scripts/setup.sh --werror --fuzz
+scripts/setup.sh --werror --tests --fuzz
 begin "fuzz runs"
 echo "convexloc: fuzzing each target for ${CONVEXLOC_FUZZ_SECONDS:-20} s (build-fuzz/) [$(elapsed)]"
 cmake -S . -B build-fuzz -DCONVEXLOC_FUZZ_SECONDS="${CONVEXLOC_FUZZ_SECONDS:-20}" >/dev/null
