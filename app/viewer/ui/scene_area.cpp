@@ -60,7 +60,7 @@ ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
 
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   const ScreenRect room = fitRoom(model, ui, window);
-  model.fit(room);
+  model.fit(room, onSlide(model, ui));
   ui.fittedScene = room;
   viewNow(model, ui.fittedView);
   ui.refitUntil = now + 1.5;

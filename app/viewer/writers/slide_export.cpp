@@ -26,7 +26,13 @@ void grow(ScreenRect& box, glm::dvec2 p) {
   box.hi = glm::max(box.hi, p);
 }
 
-// the drawn bounding box of the polygon or polyhedron (its vertices projected)
+// the split view: two halves
+bool splitShown(const Model& model) {
+  return model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
+}
+
+// the drawn bounding box of the figure: the polygon (with a placed point near it and a zoom
+// inset's frame) or the polyhedron (with the cube map's cube), as the fit holds them
 ScreenRect shapeBox(const Model& model) {
   const ScreenProjection project = sceneProjection(model);
   ScreenRect box{glm::dvec2(std::numeric_limits<double>::infinity()),
@@ -35,9 +41,16 @@ ScreenRect shapeBox(const Model& model) {
     if (const std::optional<glm::dvec3> s = project(p)) grow(box, {s->x, s->y});
   };
   if (model.dim == Dim::Two) {
-    for (const Vec2 v : model.scene2d.polygon().vertices()) add({v.x, v.y, 0.0});
-  } else if (model.hasScene3d()) {
-    for (const Vec3 v : model.scene3d().polyhedron().vertices()) add({v.x, v.y, v.z});
+    const Box2 b = model.figureBox2();
+    add({b.lo.x, b.lo.y, 0.0});
+    add({b.hi.x, b.hi.y, 0.0});
+    if (splitShown(model)) {  // the right half's polygon through its own camera
+      const Camera2D right = model.split.rightCamera(model.camera2d);
+      grow(box, right.toScreen({b.lo.x, b.lo.y}));
+      grow(box, right.toScreen({b.hi.x, b.hi.y}));
+    }
+  } else {
+    for (const glm::dvec3& p : model.figurePoints3()) add(p);
   }
   return box;
 }
@@ -81,11 +94,13 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   if (!l.caption.lines.empty()) r.add("caption", l.caption.box, page.lo);
   r.add("steps", rectOf(ui.stepsRect), page.lo);
   r.add("legend", rectOf(ui.legendRect), page.lo);
+  // the room the scene is drawn in (the split view: both halves and their headings)
   r.add("figure", plots ? ui.whyWindow : l.scene, page.lo);
   if (!plots) r.add("shape", shapeBox(model), page.lo);
   if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
-  r.minTextPx = ImGui::GetFontSize();  // the body text: the smallest a box or label uses
+  // the body text (the labels') or a slide's smaller text in its boxes
+  r.minTextPx = ImGui::GetFontSize() * std::min(1.0, l.columnScale);
   if (plots && ui.whyPlots.fontPx > 0.0) r.minTextPx = std::min(r.minTextPx, ui.whyPlots.fontPx);
   r.query3d = query3dOf(model, page.lo);
   return r;

@@ -119,8 +119,13 @@ class Model {
     fitPending_ = false;
     return f;
   }
-  // fits the current scene's camera into `area`, or applies the asked 2D view
-  void fit(ScreenRect area);
+  // fits the current scene's camera into `area`, or applies the asked 2D view; `tight`
+  // (a slide's figure room) leaves a narrower margin around the figure
+  void fit(ScreenRect area, bool tight = false);
+  // what a fit holds in view: 2D the polygon, a placed point near it, a zoom inset's frame
+  Box2 figureBox2() const;
+  // 3D: the polyhedron's vertices and the cube's corners where the cube map is drawn
+  std::vector<glm::dvec3> figurePoints3() const;
   // a 2D view to apply at the next fit instead: centre and width in world units
   std::optional<AskedView> pendingView;
 

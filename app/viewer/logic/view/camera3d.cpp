@@ -101,6 +101,32 @@ void Camera3D::fitCorners(std::span<const Bounds3> boxes, ScreenRect area) {
   if (d > 0.0 && d < distance_) distance_ = d;
 }
 
+void Camera3D::fitPoints(std::span<const glm::dvec3> points, ScreenRect area, double fill) {
+  const glm::dvec2 room = area.size();
+  if (points.empty() || !(room.x > 0.0) || !(room.y > 0.0)) return;
+  // the drawn box: false where a point is behind the eye
+  const auto drawnBox = [&](ScreenRect& box) {
+    box = {glm::dvec2(1e300), glm::dvec2(-1e300)};
+    for (const glm::dvec3& p : points) {
+      const Projected q = toScreen(p);
+      if (!q.visible()) return false;
+      box.lo = glm::min(box.lo, q.screen);
+      box.hi = glm::max(box.hi, q.screen);
+    }
+    return box.hi.x > box.lo.x && box.hi.y > box.lo.y;
+  };
+  // a few rounds: the drawn size goes about as the distance's inverse
+  for (int round = 0; round < 4; ++round) {
+    ScreenRect box;
+    if (!drawnBox(box)) return;
+    const glm::dvec2 size = box.size();
+    const double grow = fill * std::min(room.x / size.x, room.y / size.y);
+    distance_ = std::max(distance_ / grow, 1.2 * sceneRadius_);
+    if (!drawnBox(box)) return;
+    areaShift_ += area.middle() - box.middle();
+  }
+}
+
 glm::dmat4 Camera3D::viewFromLocal(glm::dvec3 origin) const {
   const glm::dvec3 f = forward(), s = right(), u = up();
   const glm::dvec3 e = eye() - origin;

@@ -68,6 +68,9 @@ class Camera3D {
   // dual beside it then fill a wide area, not their bounding sphere's square)
   void fitCorners(std::span<const Bounds3> boxes, ScreenRect area);
 
+  // after a fit, comes nearer (or goes farther) and shifts the picture so that the points'
+  // drawn bounding box is centred in `area` and `fill` of its width or height
+  void fitPoints(std::span<const glm::dvec3> points, ScreenRect area, double fill);
   // window pixel of a world point
   Projected toScreen(glm::dvec3 world) const;
   // the ray from the eye through a window pixel

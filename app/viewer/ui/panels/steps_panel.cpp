@@ -126,6 +126,7 @@ void stepsWindow(Model& model, UiState& ui, double now) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
+  ImGui::SetWindowFontScale(static_cast<float>(l.textScale));  // a slide's column: smaller
   for (std::size_t k = 0; k < l.heading.size(); ++k)
     lineAt(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, l.heading[k],
            pal.textMuted);
