@@ -84,8 +84,9 @@ def pixel_rules(s, png, tool, background, offset):
     for name, b in s["boxes"].items():
         if name == "shape":
             continue
-        args += ["--allow", ",".join(str(v) for v in (b[0] + offset[0], b[1] + offset[1],
-                                                       b[2], b[3]))]
+        # a pixel to spare: a line along a box's edge is anti-aliased across it
+        args += ["--allow", ",".join(str(v) for v in (b[0] + offset[0] - 1, b[1] + offset[1] - 1,
+                                                       b[2] + 2, b[3] + 2))]
     if "shape" in s["boxes"]:
         b = s["boxes"]["shape"]
         args += ["--shape", ",".join(str(v) for v in (b[0] + offset[0], b[1] + offset[1],

@@ -3,9 +3,9 @@
 # (slide_rules.py): no box over another, text at least 2.2% of the page's height, the figure
 # room at least 56% of the page with the figure filling 80% of its width or height, a 3D
 # query's x_T and x apart, the page outside every box bare. Every slide of each lecture at
-# 1280x720; the slides whose layout differs in kind (a spray with no Steps window, a Steps
-# window and a long legend, the split view, 3D figures with and without a query, the dual
-# views) at 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5.
+# 1280x720; the first slide and those named after the lecture (one of each layout: a Steps
+# window, a long legend, 3D figures with and without a query, the dual views) at 1280x800,
+# 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5.
 # usage: slide_rules.sh XVFB_RUN VIEWER PIXELS OUTDIR LECTURE:SUBSET...
 set -euo pipefail
 xvfb=$1 viewer=$2 pixels=$3 out=$4

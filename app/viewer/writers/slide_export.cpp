@@ -94,7 +94,7 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   if (!l.caption.lines.empty()) r.add("caption", l.caption.box, page.lo);
   r.add("steps", rectOf(ui.stepsRect), page.lo);
   r.add("legend", rectOf(ui.legendRect), page.lo);
-  // the room the scene is drawn in (the split view: both halves and their headings)
+  // the room the scene is drawn in (the split view: both halves, their headings at the top)
   r.add("figure", plots ? ui.whyWindow : l.scene, page.lo);
   if (!plots) r.add("shape", shapeBox(model), page.lo);
   if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))

@@ -9,6 +9,7 @@
 #include "convexloc/mesh_reader.hpp"
 #include "logic/draw/zoom_inset.hpp"
 #include "logic/scene/presets.hpp"
+#include "logic/teach/query_view.hpp"
 #include "logic/teach/scaling_record.hpp"
 
 namespace convexloc::viewer {
@@ -422,6 +423,14 @@ std::vector<glm::dvec3> Model::figurePoints3() const {
   return points;
 }
 
+void Model::lookAcrossQuery() {
+  const auto& probe = scene3d().probe();
+  if (!probe || !probe->trace.centre || planes3d.enabled()) return;
+  const glm::dvec3 c = toGlm(*probe->trace.centre), x = toGlm(probe->point);
+  if (const auto exit = rayExitFace(scene3d().polyhedron(), c, x))
+    camera3d.lookAlong(viewAcrossRay(c, x, exit->normal));
+}
+
 void Model::fit(ScreenRect area, bool tight) {
   if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
     // the split view: the camera is fitted to the left half; the right one follows it
@@ -460,6 +469,8 @@ void Model::fit(ScreenRect area, bool tight) {
     if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);
     return;
   }
+  // a slide's query: seen across its ray, its exit face toward the viewer
+  if (tight) lookAcrossQuery();
   camera3d.fit(b, area);
   // a slide: the figure as drawn, not its bounding sphere, fills the room
   if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);

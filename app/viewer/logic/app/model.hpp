@@ -124,6 +124,8 @@ class Model {
   void fit(ScreenRect area, bool tight = false);
   // what a fit holds in view: 2D the polygon, a placed point near it, a zoom inset's frame
   Box2 figureBox2() const;
+  // 3D: turns the camera across a placed point's ray (logic/teach/query_view)
+  void lookAcrossQuery();
   // 3D: the polyhedron's vertices and the cube's corners where the cube map is drawn
   std::vector<glm::dvec3> figurePoints3() const;
   // a 2D view to apply at the next fit instead: centre and width in world units

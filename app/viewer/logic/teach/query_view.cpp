@@ -1,6 +1,7 @@
 // convexloc-viewer — the face a 3D query's ray leaves by.
 #include "logic/teach/query_view.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -34,9 +35,24 @@ std::optional<RayExit> rayExitFace(const ConvexPolyhedron& shape, glm::dvec3 cen
     glm::dvec3 sum(0.0);
     const auto loop = shape.planeLoop(f);
     for (std::uint32_t v : loop) sum += at(shape, v);
-    best = RayExit{f, sum / static_cast<double>(loop.size())};
+    best = RayExit{f, sum / static_cast<double>(loop.size()), glm::normalize(n)};
   }
   return best;
+}
+
+glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNormal, double turn) {
+  glm::dvec3 d = point - centre;
+  d = glm::length(d) > 0.0 ? glm::normalize(d) : glm::dvec3(1.0, 0.0, 0.0);
+  // the face's normal square to the ray: looking against it faces the face
+  glm::dvec3 n = faceNormal - glm::dot(faceNormal, d) * d;
+  if (!(glm::length(n) > 1e-9 * glm::length(faceNormal))) {
+    // the ray runs along the normal: any direction square to the ray, away from z if it can
+    n = glm::cross(d, std::abs(d.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0));
+  }
+  n = glm::normalize(n);
+  // turned about the ray (Rodrigues; n is square to d)
+  const glm::dvec3 turned = std::cos(turn) * n + std::sin(turn) * glm::cross(d, n);
+  return -turned;
 }
 
 }  // namespace convexloc::viewer

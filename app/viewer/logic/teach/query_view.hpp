@@ -17,8 +17,17 @@ namespace convexloc::viewer {
 struct RayExit {
   std::size_t plane = 0;
   glm::dvec3 faceMiddle{0.0};
+  glm::dvec3 normal{0.0};  // the face's outward unit normal
 };
 std::optional<RayExit> rayExitFace(const ConvexPolyhedron& shape, glm::dvec3 centre,
                                    glm::dvec3 point);
+
+// A view across the query's ray: the direction to look along (a unit vector) square to the
+// ray from `centre` through `point`, toward the face the ray leaves by and turned
+// `turn` radians about the ray so that the solid shows its depth; x_T and x then lie apart
+// on the page by the ray's whole length and the face (with the cell's pyramid on it) faces
+// the viewer. Any view square to the ray where the face's normal runs along it.
+glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNormal,
+                         double turn = 0.35);
 
 }  // namespace convexloc::viewer

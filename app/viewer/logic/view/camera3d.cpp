@@ -40,6 +40,14 @@ glm::dvec3 Camera3D::eye() const {
   return target_ - distance_ * forward();
 }
 
+void Camera3D::lookAlong(glm::dvec3 direction) {
+  const double across = std::hypot(direction.x, direction.y);
+  if (!(across > 0.0) && !(std::abs(direction.z) > 0.0)) return;
+  // forward() = (-cos p cos y, -cos p sin y, -sin p)
+  if (across > 0.0) yaw_ = std::atan2(-direction.y, -direction.x);
+  pitch_ = std::clamp(std::atan2(-direction.z, across), -kPitchLimit, kPitchLimit);
+}
+
 void Camera3D::orbit(glm::dvec2 deltaPx) {
   yaw_ -= deltaPx.x * kRadiansPerPixel;
   pitch_ = std::clamp(pitch_ + deltaPx.y * kRadiansPerPixel, -kPitchLimit, kPitchLimit);

@@ -55,6 +55,8 @@ class Camera3D {
   glm::dvec3 right() const;
   glm::dvec3 up() const;
 
+  // turns the view to look along `direction` (any length; its pitch kept short of the poles)
+  void lookAlong(glm::dvec3 direction);
   // turns the view as when the mouse drags by `deltaPx` (left-right: yaw, up-down: pitch)
   void orbit(glm::dvec2 deltaPx);
   // moves the target in the view plane so that the content follows the mouse
