@@ -63,6 +63,14 @@ std::vector<StepLines> aroundCurrent(const std::vector<StepLines>& all, int curr
           all.begin() + static_cast<std::ptrdiff_t>(hi) + 1};
 }
 
+// "steps 3-8 of 12" ("step 4 of 12" for one)
+std::string shownRange(const std::vector<StepLines>& shown, std::size_t total) {
+  const std::size_t first = shown.front().step + 1, last = shown.back().step + 1;
+  const std::string of = " of " + std::to_string(total);
+  return first == last ? "step " + std::to_string(first) + of
+                       : "steps " + std::to_string(first) + "-" + std::to_string(last) + of;
+}
+
 // the pseudo-code's lines: all (`whole`) or the current step's alone, "> " on the current
 void codeLines(const StepsContent& s, bool whole, double width, const SlideMetrics& m,
                StepsLayout& l) {
@@ -101,6 +109,9 @@ StepsLayout stepsWith(const StepsContent& s, const SlideMetrics& m, double room,
       s.model.note.empty() ? s.model.title : s.model.title + "  (" + s.model.note + ")";
   l.heading = breakAtSpaces(heading, inner, m.measure, "  ");
   l.shown = aroundCurrent(allSteps(s.model, l.columnWidth, m), s.step, most);
+  // a list cut to a window around the step shown says which steps it shows
+  if (!l.shown.empty() && l.shown.size() < s.model.steps.size())
+    l.heading.push_back(shownRange(l.shown, s.model.steps.size()));
   codeLines(s, l.wholeCode, l.columnWidth, m, l);
   // top to bottom from 0, moved into place at the end
   double y = m.padding + static_cast<double>(l.heading.size()) * l.lineStep;
