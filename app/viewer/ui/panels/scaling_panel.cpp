@@ -11,7 +11,6 @@
 #include "logic/base/format.hpp"
 #include "logic/teach/scaling_record.hpp"
 #include "ui/scene_area.hpp"
-#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -101,13 +100,7 @@ void plots(const Model& model, UiState& ui, const ScalingProgress& p, bool solid
   const float font = ImGui::GetFontSize();
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float fit = std::min(avail.x / (60.0f * font), avail.y / (44.0f * font));
-  // on a slide never below the slide's smallest text (a share of the page's height)
-  const glm::dvec2 window{ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y};
-  const float least =
-      onSlide(model, ui)
-          ? static_cast<float>(kSlideTextShare * pageOf(model, ui, window).page.size().y) / font
-          : 0.45f;
-  const float scale = std::max(std::min(fit, 1.0f), least);
+  const float scale = std::clamp(fit, 0.45f, 1.0f);
   const float plotFont = font * scale;
   const ImVec2 size(std::max(avail.x, 40.0f * plotFont), std::max(avail.y, 30.0f * plotFont));
   const ImVec2 o = ImGui::GetCursorScreenPos();
