@@ -233,6 +233,7 @@ void Model::apply3d(const Options& o, bool method3d) {
   applyToScene(s3, o, o.method ? parseMethod3D(*o.method) : std::nullopt);
   if (o.slice) s3.setSlice(*o.slice);
   if (o.probe3) s3.place(*o.probe3);
+  if (o.camera.angles || o.camera.distance || o.camera.look) pendingCamera = o.camera;
   if (o.cell) {
     if (*o.cell < s3.cells().size())
       s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
@@ -328,6 +329,7 @@ void Model::reset() {
   settings.paperMode = false;  // the new scenes trace with the radius filter
   settings.caption.clear();
   pendingView.reset();
+  pendingCamera.reset();
   // the teaching views a slide opened: the split, the build, Why O(1), the Planes mode
   split.setEnabled(false);
   build.active = build.playing = false;
@@ -469,11 +471,18 @@ void Model::fit(ScreenRect area, bool tight) {
     if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);
     return;
   }
-  // a slide's query: seen across its ray, its exit face toward the viewer
-  if (tight) lookAcrossQuery();
+  // the asked angles, else on a slide a query seen across its ray, its exit face in front
+  if (pendingCamera && pendingCamera->angles) {
+    const glm::dvec2 a = glm::radians(*pendingCamera->angles);
+    camera3d.lookAlong(-glm::dvec3(std::cos(a.y) * std::cos(a.x), std::cos(a.y) * std::sin(a.x),
+                                   std::sin(a.y)));
+  } else if (tight) {
+    lookAcrossQuery();
+  }
   camera3d.fit(b, area);
   // a slide: the figure as drawn, not its bounding sphere, fills the room
   if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);
+  if (pendingCamera) camera3d.applyAsked(*pendingCamera);
 }
 
 ScreenProjection sceneProjection(const Model& model) {

@@ -130,6 +130,8 @@ class Model {
   std::vector<glm::dvec3> figurePoints3() const;
   // a 2D view to apply at the next fit instead: centre and width in world units
   std::optional<AskedView> pendingView;
+  // a 3D view to apply at the next fit (a lecture's `camera`, `look`)
+  std::optional<AskedCamera> pendingCamera;
 
   // === The placed point's query, step by step (the shown scene's)
   // the steps of the shown scene's placed point, none without one

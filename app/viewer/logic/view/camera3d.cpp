@@ -40,6 +40,14 @@ glm::dvec3 Camera3D::eye() const {
   return target_ - distance_ * forward();
 }
 
+void Camera3D::applyAsked(const AskedCamera& asked) {
+  if (asked.look) {
+    // the fitted picture's shift is the fitted target's: the asked target at the area's middle
+    target_ = *asked.look;
+  }
+  if (asked.distance && *asked.distance > 0.0) distance_ = *asked.distance;
+}
+
 void Camera3D::lookAlong(glm::dvec3 direction) {
   const double across = std::hypot(direction.x, direction.y);
   if (!(across > 0.0) && !(std::abs(direction.z) > 0.0)) return;
