@@ -244,8 +244,9 @@ TEST(SlideLayout, ASlidesFigureKeepsItsShareAtEverySizeAndTextScale) {
       cv::SlideContent c;
       c.area = fit.page;
       c.title = "23 / 27: A polyhedron, one query through the cube map";
-      c.caption = "d = x - x_T picks the cube face +x, (s, t) the cell; the paper's query tests "
-                  "the faces the cell lists.";
+      c.caption =
+          "d = x - x_T picks the cube face +x, (s, t) the cell; the paper's query tests "
+          "the faces the cell lists.";
       c.steps = stepsOf(12, 6);
       c.legend = glm::dvec2(330.0, 260.0) * fit.scale * text;
       c.captionRoom = 2;

@@ -39,8 +39,8 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
                       ImVec2(style.ItemSpacing.x * scale, style.ItemSpacing.y * scale));
   // a slide's legend takes the layout's box (sized from its rows), elsewhere its own size
-  const bool laidOut = onSlide(model, ui) && ui.layout.legend.hi.x > ui.layout.legend.lo.x &&
-                       !ui.legendMoved;
+  const bool laidOut =
+      onSlide(model, ui) && ui.layout.legend.hi.x > ui.layout.legend.lo.x && !ui.legendMoved;
   if (laidOut)
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.layout.legend.size().x),
                                     static_cast<float>(ui.layout.legend.size().y)));

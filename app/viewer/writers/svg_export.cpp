@@ -129,8 +129,8 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   s.measure = measureText;
   s.project = sceneProjection(model);
   s.figureRoom = figureRoomOf(model, ui);
-  const ScreenRect area = s.figureRoom.hi.x > s.figureRoom.lo.x ? s.figureRoom
-                                                                : sceneArea(model, ui, s.size);
+  const ScreenRect area =
+      s.figureRoom.hi.x > s.figureRoom.lo.x ? s.figureRoom : sceneArea(model, ui, s.size);
   s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
   s.keepOff = labelKeepOffs(ui);
   s.textMuted = pal.textMuted;

@@ -111,7 +111,8 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
     Rgba c = st.step < s.stepColours.size() ? s.stepColours[st.step] : s.text;
     if (s.step >= 0 && i > s.step) c = withAlpha(c, 0.35f);
     if (i == s.step) {
-      const double h = static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing * l.textScale;
+      const double h =
+          static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing * l.textScale;
       out += "  " +
              rectSvg({{l.listLeft - 3.0, y - 1.0}, {l.listLeft + l.columnWidth, y + h + 1.0}},
                      withAlpha(s.highlight, 0.22f)) +
@@ -125,8 +126,8 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
   if (!l.sideBySide && !l.code.empty()) out += "  " + separatorSvg(l, l.codeTop, s) + "\n";
   for (std::size_t i = 0; i < l.code.size(); ++i)
     out += "  " +
-           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, l.textScale, l.code[i],
-                   l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
+           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, l.textScale,
+                   l.code[i], l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
            "\n";
   out += "</g>\n";
 }

@@ -222,8 +222,8 @@ std::string percentText(std::size_t part, std::size_t whole) {
   return buf;
 }
 
-glm::dvec2 legendBoxSize(const Legend& g, const MeasureText& measure, double font,
-                         double padding, double spacing) {
+glm::dvec2 legendBoxSize(const Legend& g, const MeasureText& measure, double font, double padding,
+                         double spacing) {
   const double f = font / 1.164, line = font + spacing, sw = 0.7 * f + 0.5 * f;
   auto width = [&](const std::string& t) { return t.empty() ? 0.0 : measure(t).x; };
   double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "logic/app/model.hpp"
 #include "logic/base/colour.hpp"
 #include "logic/base/text_layout.hpp"
-#include "logic/app/model.hpp"
 
 namespace convexloc::viewer {
 

@@ -474,8 +474,8 @@ void Model::fit(ScreenRect area, bool tight) {
   // the asked angles, else on a slide a query seen across its ray, its exit face in front
   if (pendingCamera && pendingCamera->angles) {
     const glm::dvec2 a = glm::radians(*pendingCamera->angles);
-    camera3d.lookAlong(-glm::dvec3(std::cos(a.y) * std::cos(a.x), std::cos(a.y) * std::sin(a.x),
-                                   std::sin(a.y)));
+    camera3d.lookAlong(
+        -glm::dvec3(std::cos(a.y) * std::cos(a.x), std::cos(a.y) * std::sin(a.x), std::sin(a.y)));
   } else if (tight) {
     lookAcrossQuery();
   }

@@ -91,8 +91,7 @@ bool applyCell(const Values& v, Options& o, std::string&) {
       std::min<std::uint64_t>(std::uint64_t{1} << 40, std::numeric_limits<std::size_t>::max()));
   std::size_t k = 0, l = 0;
   const std::size_t comma = s.find(',');
-  if (comma != std::string_view::npos &&
-      parseInt<std::size_t>(s.substr(comma + 1), 0, kMost, l)) {
+  if (comma != std::string_view::npos && parseInt<std::size_t>(s.substr(comma + 1), 0, kMost, l)) {
     o.cellSecond = l;
     s = s.substr(0, comma);
   }

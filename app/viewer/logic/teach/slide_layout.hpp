@@ -80,7 +80,7 @@ struct StepsLayout {
   std::vector<std::string> code;          // the code's lines shown, "> " on the current line
   std::vector<bool> codeCurrent;          // per code line: the current step's line
   double codeTop = 0.0;
-  double lineStep = 0.0;  // a line's advance (font + spacing)
+  double lineStep = 0.0;   // a line's advance (font + spacing)
   double textScale = 1.0;  // its text's size over the body size (a slide's side column)
 };
 

@@ -168,10 +168,12 @@ StepsLayout layoutStepsInColumn(const StepsContent& s, const SlideMetrics& m, Sc
   // as many lines as the column holds (at least one step's)
   auto most = static_cast<std::size_t>(std::max(1.0, std::floor(column.size().y / step) - 3.0));
   StepsLayout l = stepsWith(s, m, room, column.lo.x, column.hi.y, most);
-  while (l.box.lo.y < column.lo.y && most > 1) l = stepsWith(s, m, room, column.lo.x, column.hi.y, --most);
+  while (l.box.lo.y < column.lo.y && most > 1)
+    l = stepsWith(s, m, room, column.lo.x, column.hi.y, --most);
   // at the column's top, its width the column's
   const double dy = column.lo.y - l.box.lo.y;
-  for (double* at : {&l.box.lo.y, &l.box.hi.y, &l.controlsTop, &l.listTop, &l.codeTop, &l.headingTop})
+  for (double* at :
+       {&l.box.lo.y, &l.box.hi.y, &l.controlsTop, &l.listTop, &l.codeTop, &l.headingTop})
     *at += dy;
   l.box.hi.x = column.hi.x;
   return l;
