@@ -40,7 +40,8 @@ std::optional<RayExit> rayExitFace(const ConvexPolyhedron& shape, glm::dvec3 cen
   return best;
 }
 
-glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNormal, double turn) {
+glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNormal, double turn,
+                         double lean) {
   glm::dvec3 d = point - centre;
   d = glm::length(d) > 0.0 ? glm::normalize(d) : glm::dvec3(1.0, 0.0, 0.0);
   // the face's normal square to the ray: looking against it faces the face
@@ -52,7 +53,10 @@ glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNor
   n = glm::normalize(n);
   // turned about the ray (Rodrigues; n is square to d)
   const glm::dvec3 turned = std::cos(turn) * n + std::sin(turn) * glm::cross(d, n);
-  return -turned;
+  // the eye raised toward x's side by `lean`: the exit face, whose normal runs near the
+  // ray, is seen from its front, and the ray keeps cos(lean) of its length on the page
+  const glm::dvec3 eye = std::cos(lean) * turned + std::sin(lean) * d;
+  return -eye;
 }
 
 }  // namespace convexloc::viewer

@@ -22,12 +22,13 @@ struct RayExit {
 std::optional<RayExit> rayExitFace(const ConvexPolyhedron& shape, glm::dvec3 centre,
                                    glm::dvec3 point);
 
-// A view across the query's ray: the direction to look along (a unit vector) square to the
-// ray from `centre` through `point`, toward the face the ray leaves by and turned
-// `turn` radians about the ray so that the solid shows its depth; x_T and x then lie apart
-// on the page by the ray's whole length and the face (with the cell's pyramid on it) faces
-// the viewer. Any view square to the ray where the face's normal runs along it.
+// A view across the query's ray: the direction to look along (a unit vector), square to
+// the ray from `centre` through `point` toward the side the exit face leans to, turned `turn`
+// radians about the ray so that the solid shows its depth, then leaned `lean` radians toward
+// the point's end so that the exit face (whose normal runs near the ray) is seen from its
+// front. x_T and x then lie apart on the page by cos(lean) of the ray's length. Any view
+// square to the ray where the face's normal runs along it.
 glm::dvec3 viewAcrossRay(glm::dvec3 centre, glm::dvec3 point, glm::dvec3 faceNormal,
-                         double turn = 0.35);
+                         double turn = 0.35, double lean = 0.6);
 
 }  // namespace convexloc::viewer
