@@ -90,6 +90,10 @@ void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(t.box.lo.x), static_cast<float>(t.box.lo.y)));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(size.x), static_cast<float>(size.y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
+  // the window's own padding as the layout's: its clip rectangle lets the lines show whole
+  const float boxPad =
+      t.padding >= 0.0 ? static_cast<float>(t.padding) : ImGui::GetStyle().WindowPadding.x;
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(boxPad, boxPad));
   ImGui::Begin(id, nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
@@ -113,6 +117,7 @@ void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
   }
   ImGui::SetWindowFontScale(1.0f);
   ImGui::End();
+  ImGui::PopStyleVar();
 }
 
 void captionBox(Model& model, UiState& ui, ScreenRect area) {
