@@ -242,8 +242,8 @@ glm::dvec2 legendBoxSize(const Legend& g, const MeasureText& measure, double fon
   const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
   const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
   const double gap = !g.rows.empty() && !g.classes.empty() ? spacing : 0.0;
-  // half an em to spare: the window's table puts its own gaps between the columns
-  return {std::max({heading, classes, rows}) + 0.5 * f + 2.0 * padding,
+  // an em to spare: the window's table and swatches put their own gaps in the rows
+  return {std::max({heading, classes, rows}) + 1.0 * f + 2.0 * padding,
           line * static_cast<double>(1 + g.classes.size() + rowLines) + gap + 2.0 * padding};
 }
 
