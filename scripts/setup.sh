@@ -33,7 +33,7 @@ done
 
 packages=(cmake ninja-build g++ pkg-config libgmp-dev libboost-dev libcli11-dev
           libgtest-dev libbenchmark-dev libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad
-          xvfb xauth xdotool libgl1-mesa-dri clang-14 libclang-rt-14-dev
+          xvfb xauth xdotool libgl1-mesa-dri librsvg2-bin clang-14 libclang-rt-14-dev
           python3-dev pybind11-dev python3-numpy python3-pytest
           python3-dask python3-distributed python3-pandas python3-mypy
           emscripten dpkg-dev fonts-dejavu-core chromium python3-websocket)
