@@ -2,9 +2,11 @@
 # Exports a lecture under xvfb-run and checks that every slide became a PNG and a
 # well-formed SVG; a lecture whose only slide is bad must exit 1 and write nothing, one with
 # some bad slides writes the others and exits 1.
-# usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR
+# With PIXELS (viewer_layout_pixels), every slide's layout.json record is checked against
+# the slide rules and its PNG (slide_rules.py).
+# usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR [PIXELS]
 set -euo pipefail
-xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5
+xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5 pixels=${6:-}
 rm -rf "$out"
 "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$lecture" --export "$out/good" \
   --size 960x540
@@ -25,6 +27,9 @@ done
 for png in "$out"/good/slide-*.png; do
   "$checker" "$png" --size 960x540 --not-uniform 0.0,0.0,1.0,1.0
 done
+if [[ -n $pixels ]]; then
+  python3 "$(dirname "$0")/slide_rules.py" "$out/good" "$pixels"
+fi
 # a bad lecture: FILE:LINE on stderr, exit 1, no PNG
 mkdir -p "$out"
 printf 'slide One\nmethod polar\nwobble 3\n' >"$out/bad.lecture"

@@ -232,3 +232,59 @@ TEST(SlideLayout, ALecturesOwnPageKeepsItsAspect) {
   model.reset();  // the next slide keeps the lecture's page
   EXPECT_EQ(model.settings.page, glm::dvec2(1600.0, 1200.0));
 }
+
+// a slide (SlideContent::slide): at every page from 1024x768 to 3840x2160 and every text size
+// from 0.75 to 2 times the lecture's, the figure's room keeps its share of the page, no two
+// boxes overlap, and no text is smaller than 2.2% of the page's height
+TEST(SlideLayout, ASlidesFigureKeepsItsShareAtEverySizeAndTextScale) {
+  for (const glm::dvec2 window : {glm::dvec2(1024.0, 576.0), glm::dvec2(1280.0, 720.0),
+                                  glm::dvec2(1920.0, 1080.0), glm::dvec2(3840.0, 2160.0)})
+    for (const double text : {0.75, 1.0, 1.5, 2.0}) {
+      const cv::PageFit fit = cv::fitPage(window);
+      cv::SlideContent c;
+      c.area = fit.page;
+      c.title = "23 / 27: A polyhedron, one query through the cube map";
+      c.caption =
+          "d = x - x_T picks the cube face +x, (s, t) the cell; the paper's query tests "
+          "the faces the cell lists.";
+      c.steps = stepsOf(12, 6);
+      c.legend = glm::dvec2(330.0, 260.0) * fit.scale * text;
+      c.captionRoom = 2;
+      c.slide = true;
+      const cv::SlideMetrics m = metricsAt(fit.scale * text);
+      const cv::SlideLayout l = cv::layoutSlide(c, m);
+      const glm::dvec2 room = l.scene.size(), page = fit.page.size();
+      EXPECT_GE(room.x * room.y, cv::kFigureShare * page.x * page.y * (1.0 - 1e-9))
+          << window.x << " text " << text;
+      const auto boxes = boxesOf(l);
+      for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+          EXPECT_FALSE(overlap(boxes[i].second, boxes[j].second))
+              << boxes[i].first << " and " << boxes[j].first << " at " << window.x << " text "
+              << text;
+      // the rule (2.2%); the layout's floor when it shrinks text is kSlideTextShare (2.25%)
+      EXPECT_GE(m.font * std::min(1.0, l.columnScale), 0.022 * page.y);
+      ASSERT_TRUE(l.steps);
+    }
+}
+
+// a list cut to a window around the current step says which steps it shows, the current
+// among them
+TEST(SlideLayout, ACutStepListSaysWhichStepsItShows) {
+  cv::SlideMetrics m = metricsAt(1.0);
+  const cv::StepsLayout l =
+      cv::layoutStepsInColumn(stepsOf(12, 8), m, {{1400.0, 100.0}, {1900.0, 600.0}});
+  ASSERT_FALSE(l.shown.empty());
+  ASSERT_LT(l.shown.size(), 12u);
+  const std::size_t first = l.shown.front().step + 1, last = l.shown.back().step + 1;
+  EXPECT_LE(first, 9u);
+  EXPECT_GE(last, 9u);
+  const std::string want = "steps " + std::to_string(first) + "-" + std::to_string(last) + " of 12";
+  EXPECT_EQ(l.heading.back(), want);
+  EXPECT_GE(l.box.lo.y, 100.0);
+  // all twelve where the column holds them: no range line
+  const cv::StepsLayout all =
+      cv::layoutStepsInColumn(stepsOf(12, 8), m, {{1400.0, 0.0}, {1900.0, 2000.0}});
+  EXPECT_EQ(all.shown.size(), 12u);
+  EXPECT_NE(all.heading.back().rfind("steps ", 0), 0u);
+}

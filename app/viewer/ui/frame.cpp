@@ -204,7 +204,8 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   // the teaching views: the split's halves and second scene, the build's clock, Why O(1)
   // (no halves in 3D or the Lines mode: the pointer then goes where it is)
   const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
-  model.split.setArea(halves ? area : ScreenRect{});
+  const ScreenRect room = figureRoomOf(model, ui);  // a slide's halves keep to its figure
+  model.split.setArea(halves ? (room.hi.x > room.lo.x ? room : area) : ScreenRect{});
   if (model.split.enabled() && halves) model.split.sync(model.scene2d);
   splitHeadings(model, ui);
   advanceBuild(model, io.DeltaTime);

@@ -10,6 +10,7 @@
 #include "logic/view/scene_labels.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -91,7 +92,8 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
     if (const auto p = project(corner)) cube.emplace_back(*p);
   }
   const glm::dvec2 vp = model.camera3d.viewport();
-  const ScreenRect area = sceneArea(model, ui, vp);
+  const ScreenRect figure = figureRoomOf(model, ui);
+  const ScreenRect area = figure.hi.x > figure.lo.x ? figure : sceneArea(model, ui, vp);
   if (cube.size() < 8) return std::nullopt;  // a corner behind the eye
   const double room = 1.6 * measureText("Ag").y;
   const double wide =
@@ -149,7 +151,8 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   }
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();
-  const ScreenRect area = sceneArea(model, ui, vp);
+  const ScreenRect figure = figureRoomOf(model, ui);
+  const ScreenRect area = figure.hi.x > figure.lo.x ? figure : sceneArea(model, ui, vp);
   const DrawList* lists[] = {&view.structure(), &view.overlay()};
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
   if (!split) {

@@ -10,6 +10,7 @@
 #include "logic/view/label_layout.hpp"
 #include "ui/frame.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -30,10 +31,25 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
                             ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   }
   ImGui::SetNextWindowBgAlpha(0.82f);
+  // a slide's side column may have smaller text (logic/teach/slide_layout): all of it scaled
+  const float scale = static_cast<float>(ui.layout.columnScale);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                      ImVec2(style.WindowPadding.x * scale, style.WindowPadding.y * scale));
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                      ImVec2(style.ItemSpacing.x * scale, style.ItemSpacing.y * scale));
+  // a slide's legend takes the layout's box (sized from its rows), elsewhere its own size
+  const bool laidOut =
+      onSlide(model, ui) && ui.layout.legend.hi.x > ui.layout.legend.lo.x && !ui.legendMoved;
+  if (laidOut)
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.layout.legend.size().x),
+                                    static_cast<float>(ui.layout.legend.size().y)));
   ImGui::Begin("Legend", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+               ImGuiWindowFlags_NoDecoration |
+                   (laidOut ? ImGuiWindowFlags_None : ImGuiWindowFlags_AlwaysAutoResize) |
                    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+  ImGui::SetWindowFontScale(scale);
   panelsOf(model).legend(model);
   // dragged by hand (ImGui's own moving would fight the corner placement)
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
@@ -52,18 +68,20 @@ void legendOverlay(Model& model, UiState& ui, ScreenRect area, glm::dvec2 window
   } else if (ImGui::IsWindowHovered() && !ui.exporting) {
     ImGui::SetTooltip("drag to move, double-click: back to the corner; G hides the legend");
   }
-  const bool resized =
-      std::abs(size.x - ui.legendSize[0]) > 2.0f || std::abs(size.y - ui.legendSize[1]) > 2.0f;
+  const bool resized = std::abs(size.x / scale - ui.legendSize[0]) > 2.0f ||
+                       std::abs(size.y / scale - ui.legendSize[1]) > 2.0f;
   // fitted a moment ago for another size: fit again; and rows added (a cell pinned) over a
   // view left as fitted: fit beside the taller legend, which would cover the scene
-  const bool grew = size.y > ui.legendSize[1] + 2.0f && ui.legendSize[1] > 0.0f;
+  const bool grew = size.y / scale > ui.legendSize[1] + 2.0f && ui.legendSize[1] > 0.0f;
   if (resized && (now < ui.refitUntil || (grew && viewAsFitted(model, ui)))) model.requestFit();
-  ui.legendSize[0] = size.x;
-  ui.legendSize[1] = size.y;
+  // at the body text's size, which the layout scales
+  ui.legendSize[0] = size.x / scale;
+  ui.legendSize[1] = size.y / scale;
   // where it is, for the labels to keep off
   ui.legendRect[0] = pos.x, ui.legendRect[1] = pos.y;
   ui.legendRect[2] = pos.x + size.x, ui.legendRect[3] = pos.y + size.y;
   ImGui::End();
+  ImGui::PopStyleVar(2);
 }
 
 void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
@@ -72,26 +90,34 @@ void layoutBox(const char* id, const TextBox& t, std::size_t large, Rgba rest) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(t.box.lo.x), static_cast<float>(t.box.lo.y)));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(size.x), static_cast<float>(size.y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
+  // the window's own padding as the layout's: its clip rectangle lets the lines show whole
+  const float boxPad =
+      t.padding >= 0.0 ? static_cast<float>(t.padding) : ImGui::GetStyle().WindowPadding.x;
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(boxPad, boxPad));
   ImGui::Begin(id, nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();  // the body size, before any scaling
+  const float pad = t.padding >= 0.0 ? static_cast<float>(t.padding) : style.WindowPadding.x;
+  // the line gap scales with the text where the layout scaled it (a slide's smaller text)
+  const float gap = style.ItemSpacing.y * static_cast<float>(t.restScale);
   // each line where the layout puts it: the padding, then line after line
-  float y = static_cast<float>(t.box.lo.y) + style.WindowPadding.x;
+  float y = static_cast<float>(t.box.lo.y) + pad;
   for (std::size_t k = 0; k < t.lines.size(); ++k) {
-    const float scale = k < large ? static_cast<float>(t.scale) : 1.0f;
+    const float scale = static_cast<float>(k < large ? t.scale : t.restScale);
     ImGui::SetWindowFontScale(scale);
-    ImGui::SetCursorScreenPos(ImVec2(static_cast<float>(t.box.lo.x) + style.WindowPadding.x, y));
+    ImGui::SetCursorScreenPos(ImVec2(static_cast<float>(t.box.lo.x) + pad, y));
     if (k < large)
       ImGui::TextUnformatted(t.lines[k].c_str());
     else
       ImGui::TextColored(im(rest), "%s", t.lines[k].c_str());
-    y += scale * font + style.ItemSpacing.y;
+    y += scale * font + gap;
   }
   ImGui::SetWindowFontScale(1.0f);
   ImGui::End();
+  ImGui::PopStyleVar();
 }
 
 void captionBox(Model& model, UiState& ui, ScreenRect area) {

@@ -59,13 +59,15 @@ ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
   // the halves' headings (logic/teach/slide_layout's splitHeading: 2.2 body heights high)
   ScreenRect room = frameLayout(model, ui, window, false).scene;
   const double font = ImGui::GetFontSize();
-  room.lo.y = std::max(room.lo.y, sceneArea(model, ui, window).lo.y + 2.2 * font + 0.625 * font);
+  // (a slide's halves are its figure room, the same room)
+  const double top = onSlide(model, ui) ? room.lo.y : sceneArea(model, ui, window).lo.y;
+  room.lo.y = std::max(room.lo.y, top + 2.2 * font + 0.625 * font);
   return room;
 }
 
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
   const ScreenRect room = fitRoom(model, ui, window);
-  model.fit(room);
+  model.fit(room, onSlide(model, ui));
   ui.fittedScene = room;
   viewNow(model, ui.fittedView);
   ui.refitUntil = now + 1.5;

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "logic/app/legend.hpp"
 #include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
@@ -77,25 +78,31 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   if (withSteps) c.steps = stepsContent(model, ui);
   const bool floating = model.settings.showLegend && rightPanelWidth(model, window) == 0.0f;
   if (floating && !ui.legendMoved) c.legend = {ui.legendSize[0], ui.legendSize[1]};
+  const SlideMetrics m = windowMetrics();
+  // a slide's legend sized from its rows before it is drawn: final on the first frame
+  if (floating && !ui.legendMoved && onSlide(model, ui))
+    c.legend = legendBoxSize(legendOf(model), m.measure, m.font, m.padding, m.spacing);
   c.shapeAspect = shapeAspect(model);
   if (onSlide(model, ui)) c.captionRoom = 2;
-  return layoutSlide(c, windowMetrics());
+  c.slide = onSlide(model, ui);
+  return layoutSlide(c, m);
+}
+
+ScreenRect figureRoomOf(const Model& model, const UiState& ui) {
+  if (!onSlide(model, ui) || model.whyOpen) return {};
+  return ui.layout.scene;
 }
 
 void drawLetterbox(const Model& model, const UiState& ui, glm::dvec2 window) {
   const ScreenRect p = pageOf(model, ui, window).page;
-  if (p.lo.x <= 0.5 && p.lo.y <= 0.5) return;
+  std::vector<ScreenRect> bars = barsAround({{0.0, 0.0}, window}, p);
+  if (const ScreenRect room = figureRoomOf(model, ui); room.hi.x > room.lo.x)
+    for (const ScreenRect& r : barsAround(p, room)) bars.push_back(r);
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const ImU32 bg = u32(paletteFor(model.settings.theme).background);
-  const auto bar = [&](double x0, double y0, double x1, double y1) {
-    if (x1 > x0 && y1 > y0)
-      dl->AddRectFilled(ImVec2(static_cast<float>(x0), static_cast<float>(y0)),
-                        ImVec2(static_cast<float>(x1), static_cast<float>(y1)), bg);
-  };
-  bar(0.0, 0.0, window.x, p.lo.y);
-  bar(0.0, p.hi.y, window.x, window.y);
-  bar(0.0, p.lo.y, p.lo.x, p.hi.y);
-  bar(p.hi.x, p.lo.y, window.x, p.hi.y);
+  for (const ScreenRect& r : bars)
+    dl->AddRectFilled(ImVec2(static_cast<float>(r.lo.x), static_cast<float>(r.lo.y)),
+                      ImVec2(static_cast<float>(r.hi.x), static_cast<float>(r.hi.y)), bg);
 }
 
 }  // namespace convexloc::viewer

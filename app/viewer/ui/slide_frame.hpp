@@ -27,7 +27,12 @@ SlideMetrics windowMetrics();
 SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window,
                         bool withSteps = true);
 
-// the bars beside a letterboxed page, in the theme's background, under every window
+// a slide's figure room, which its scene, labels and insets keep to (empty: not a slide with
+// one, as the split view and Why O(1))
+ScreenRect figureRoomOf(const Model& model, const UiState& ui);
+
+// the bars beside a letterboxed page, and on a slide around its figure room, in the theme's
+// background, under every window
 void drawLetterbox(const Model& model, const UiState& ui, glm::dvec2 window);
 
 }  // namespace convexloc::viewer

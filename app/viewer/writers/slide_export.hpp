@@ -5,9 +5,11 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "gl/scene_view.hpp"
 #include "logic/app/model.hpp"
+#include "logic/teach/slide_record.hpp"
 #include "ui/ui_state.hpp"
 
 namespace convexloc::viewer {
@@ -15,6 +17,10 @@ namespace convexloc::viewer {
 // frames rendered for each slide before it is written: the camera fits at the first, the
 // panels and the legend take their size over the next ones
 inline constexpr int kFramesPerSlide = 5;
+
+// the slide shown, as drawn this frame in a `window` of pixels: its kind, its boxes on the
+// page, its smallest text and its 3D query
+SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window);
 
 class SlideExporter {
  public:
@@ -32,6 +38,7 @@ class SlideExporter {
   std::string dir_;
   int frames_ = 0;
   std::size_t written_ = 0;
+  std::vector<SlideRecord> records_;
   bool finished_ = false;
 };
 

@@ -128,7 +128,9 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
   s.project = sceneProjection(model);
-  const ScreenRect area = sceneArea(model, ui, s.size);
+  s.figureRoom = figureRoomOf(model, ui);
+  const ScreenRect area =
+      s.figureRoom.hi.x > s.figureRoom.lo.x ? s.figureRoom : sceneArea(model, ui, s.size);
   s.labelArea = {area.lo, area.hi};  // the labels go where the window puts them
   s.keepOff = labelKeepOffs(ui);
   s.textMuted = pal.textMuted;
@@ -137,11 +139,12 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   // the panels shown (the legend in the right one), in the scene's lower right corner
   if (model.settings.showLegend) {
     s.legend = legendOf(model);
+    s.legendScale = ui.layout.columnScale;
     if (ui.legendRect[2] > ui.legendRect[0]) {
       s.legendCorner = {ui.legendRect[2], ui.legendRect[3]};
       s.legendSize = {ui.legendRect[2] - ui.legendRect[0], ui.legendRect[3] - ui.legendRect[1]};
     } else {
-      s.legendCorner = area.hi - glm::dvec2(10.0);
+      s.legendCorner = sceneArea(model, ui, s.size).hi - glm::dvec2(10.0);
     }
   }
   // the cube map's zoom inset, where the window draws it; the labels keep off it

@@ -67,16 +67,16 @@ std::string lineSvg(double x, double top, double scale, const std::string& text,
 void writeTextBox(const SvgScene& s, const char* id, const TextBox& t, std::size_t large, Rgba rest,
                   std::string& out) {
   if (t.lines.empty()) return;
-  const double body = bodyPixels(s), pad = s.layoutPadding;
+  const double body = bodyPixels(s), pad = t.padding >= 0.0 ? t.padding : s.layoutPadding;
   out += "<g id=\"" + std::string(id) + "\" font-family=\"DejaVu Sans, Verdana, sans-serif\">\n  " +
          rectSvg(t.box, s.panel, s.rounding) + "\n";
   double top = t.box.lo.y + pad;
   for (std::size_t k = 0; k < t.lines.size(); ++k) {
-    const double scale = k < large ? t.scale : 1.0;
+    const double scale = k < large ? t.scale : t.restScale;
     out += "  " +
            lineSvg(t.box.lo.x + pad, top, scale, t.lines[k], k < large ? s.text : rest, s, id) +
            "\n";
-    top += scale * body + s.layoutSpacing;
+    top += scale * body + s.layoutSpacing * t.restScale;
   }
   out += "</g>\n";
 }
@@ -95,14 +95,14 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
          rectSvg(l.box, s.panel, s.rounding) + "\n";
   for (std::size_t k = 0; k < l.heading.size(); ++k)
     out += "  " +
-           lineSvg(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, 1.0,
+           lineSvg(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, l.textScale,
                    l.heading[k], s.textMuted, s) +
            "\n";
   if (l.controls && !s.stepColours.empty()) {
     const std::string shown = s.step < 0 ? "all " + std::to_string(s.stepColours.size()) + " steps"
                                          : "step " + std::to_string(s.step + 1) + " of " +
                                                std::to_string(s.stepColours.size());
-    out += "  " + lineSvg(l.listLeft, l.controlsTop, 1.0, shown, s.textMuted, s) + "\n";
+    out += "  " + lineSvg(l.listLeft, l.controlsTop, l.textScale, shown, s.textMuted, s) + "\n";
   }
   out += "  " + separatorSvg(l, l.listTop, s) + "\n";
   double y = l.listTop;
@@ -111,22 +111,23 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
     Rgba c = st.step < s.stepColours.size() ? s.stepColours[st.step] : s.text;
     if (s.step >= 0 && i > s.step) c = withAlpha(c, 0.35f);
     if (i == s.step) {
-      const double h = static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing;
+      const double h =
+          static_cast<double>(st.lines.size()) * l.lineStep - s.layoutSpacing * l.textScale;
       out += "  " +
              rectSvg({{l.listLeft - 3.0, y - 1.0}, {l.listLeft + l.columnWidth, y + h + 1.0}},
                      withAlpha(s.highlight, 0.22f)) +
              "\n";
     }
     for (const std::string& line : st.lines) {
-      out += "  " + lineSvg(l.listLeft, y, 1.0, line, c, s) + "\n";
+      out += "  " + lineSvg(l.listLeft, y, l.textScale, line, c, s) + "\n";
       y += l.lineStep;
     }
   }
   if (!l.sideBySide && !l.code.empty()) out += "  " + separatorSvg(l, l.codeTop, s) + "\n";
   for (std::size_t i = 0; i < l.code.size(); ++i)
     out += "  " +
-           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, 1.0, l.code[i],
-                   l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
+           lineSvg(l.codeLeft, l.codeTop + static_cast<double>(i) * l.lineStep, l.textScale,
+                   l.code[i], l.codeCurrent[i] ? s.highlight : s.textMuted, s) +
            "\n";
   out += "</g>\n";
 }
@@ -157,13 +158,13 @@ void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) 
 
 void writeLetterbox(const SvgScene& s, std::string& out) {
   const ScreenRect& p = s.page;
-  if (p.hi.x <= p.lo.x || (p.lo.x <= 0.5 && p.lo.y <= 0.5)) return;
+  if (p.hi.x <= p.lo.x) return;
+  std::vector<ScreenRect> bars = barsAround({{0.0, 0.0}, s.size}, p);
+  if (s.figureRoom.hi.x > s.figureRoom.lo.x)
+    for (const ScreenRect& r : barsAround(p, s.figureRoom)) bars.push_back(r);
+  if (bars.empty()) return;
   out += "<g id=\"letterbox\">\n";
-  for (const ScreenRect& r :
-       {ScreenRect{{0.0, 0.0}, {s.size.x, p.lo.y}}, ScreenRect{{0.0, p.hi.y}, s.size},
-        ScreenRect{{0.0, p.lo.y}, {p.lo.x, p.hi.y}},
-        ScreenRect{{p.hi.x, p.lo.y}, {s.size.x, p.hi.y}}})
-    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) out += "  " + rectSvg(r, s.background) + "\n";
+  for (const ScreenRect& r : bars) out += "  " + rectSvg(r, s.background) + "\n";
   out += "</g>\n";
 }
 

@@ -325,26 +325,18 @@ std::string legendBoxPaint(const SvgScene& s) {
 void writeLegend(const SvgScene& s, std::string& out) {
   const Legend& g = *s.legend;
   // the window's rows: a body line and a spacing each, inside its padding
-  const double f = s.fontPixels, line = 1.164 * f + s.layoutSpacing, pad = s.layoutPadding;
+  const double k = s.legendScale, f = k * s.fontPixels;
+  const double line = 1.164 * f + k * s.layoutSpacing, pad = k * s.layoutPadding;
   const double sw = 0.7 * f + 0.5 * f;
-  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : s.measure(t).x; };
-  double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
+  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : k * s.measure(t).x; };
+  double name = 0.0, count = 0.0;
   for (const LegendRow& r : g.classes) {
     name = std::max(name, width(r.text));
     count = std::max(count, width(r.count));
-    share = std::max(share, width(r.share));
   }
-  // a mark's text may run over lines (the y-gap's cost)
-  std::size_t rowLines = 0;
-  for (const LegendRow& r : g.rows)
-    for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
-      rows = std::max(rows, sw + width(t));
-      ++rowLines;
-    }
-  const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
-  const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
-  double w = std::max({heading, classes, rows}) + 2.0 * pad;
-  double h = line * static_cast<double>(1 + g.classes.size() + rowLines) + 2.0 * pad;
+  const MeasureText measure = [&](std::string_view t) { return k * s.measure(t); };
+  const glm::dvec2 box = legendBoxSize(g, measure, 1.164 * f, pad, k * s.layoutSpacing);
+  double w = box.x, h = box.y;
   if (s.legendSize.x > 0.0) w = s.legendSize.x, h = s.legendSize.y;  // the window's own box
   const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
   out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +

@@ -67,8 +67,9 @@ struct SvgScene {
   // the slide's boxes (logic/teach/slide_layout), in window pixels: the title card, the
   // caption, the Steps window written where the window draws them (writers/svg_slide)
   SlideLayout layout;
-  ScreenRect page;  // a slide's letterboxed page: bars beside it (empty: none)
-  Rgba panel;       // the boxes' fill (the window's)
+  ScreenRect page;        // a slide's letterboxed page: bars beside it (empty: none)
+  ScreenRect figureRoom;  // a slide's figure room: the page around it is bare (empty: none)
+  Rgba panel;             // the boxes' fill (the window's)
   double rounding = 6.0;
   double layoutPadding = 12.0, layoutSpacing = 6.0;  // the layout's metrics (SlideMetrics)
   // the Steps window's colours: each step's line, the current step's highlight and line
@@ -85,7 +86,8 @@ struct SvgScene {
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};
-  glm::dvec2 legendSize{0.0};  // the window's legend box (zero: sized from its rows)
+  glm::dvec2 legendSize{0.0};     // the window's legend box (zero: sized from its rows)
+  double legendScale = 1.0;       // its text, padding and spacing over the body's (a slide's)
   PixelBox labelArea;             // the scene area: labels stay in it
   std::vector<PixelBox> keepOff;  // boxes over the scene the labels keep off where they can
   Rgba textMuted;                 // the legend's counts and subtitle

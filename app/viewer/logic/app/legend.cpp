@@ -222,4 +222,29 @@ std::string percentText(std::size_t part, std::size_t whole) {
   return buf;
 }
 
+glm::dvec2 legendBoxSize(const Legend& g, const MeasureText& measure, double font, double padding,
+                         double spacing) {
+  const double f = font / 1.164, line = font + spacing, sw = 0.7 * f + 0.5 * f;
+  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : measure(t).x; };
+  double name = 0.0, count = 0.0, share = 0.0, rows = 0.0;
+  for (const LegendRow& r : g.classes) {
+    name = std::max(name, width(r.text));
+    count = std::max(count, width(r.count));
+    share = std::max(share, width(r.share));
+  }
+  // a mark's text may run over lines (the y-gap's cost)
+  std::size_t rowLines = 0;
+  for (const LegendRow& r : g.rows)
+    for (const std::string& t : breakAtSpaces(r.text, 1e300, measure)) {
+      rows = std::max(rows, sw + width(t));
+      ++rowLines;
+    }
+  const double classes = sw + name + (count > 0.0 ? 0.8 * f + count + 0.6 * f + share : 0.0);
+  const double heading = width(g.title) + (g.subtitle.empty() ? 0.0 : 0.4 * f + width(g.subtitle));
+  const double gap = !g.rows.empty() && !g.classes.empty() ? spacing : 0.0;
+  // an em to spare: the window's table and swatches put their own gaps in the rows
+  return {std::max({heading, classes, rows}) + 1.0 * f + 2.0 * padding,
+          line * static_cast<double>(1 + g.classes.size() + rowLines) + gap + 2.0 * padding};
+}
+
 }  // namespace convexloc::viewer

@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "logic/base/colour.hpp"
 #include "logic/app/model.hpp"
+#include "logic/base/colour.hpp"
+#include "logic/base/text_layout.hpp"
 
 namespace convexloc::viewer {
 
@@ -37,6 +38,13 @@ std::vector<LegendRow> classLegendRows(const Model& model, const std::array<std:
 
 // the legend of the scene shown (2D, its Lines mode, or 3D)
 Legend legendOf(const Model& model);
+
+// The legend's box as the window draws it and the SVG writes it: a line of title, the class
+// rows in columns, a line per mark's line, inside `padding`; `font` is the body text's height
+// in pixels (ImGui's: 1.164 em of DejaVu Sans), `spacing` the gap between two lines. A
+// slide's layout takes the legend's size from here, before it is drawn.
+glm::dvec2 legendBoxSize(const Legend& legend, const MeasureText& measure, double font,
+                         double padding, double spacing);
 
 // "41.2%" (empty when `whole` is 0)
 std::string percentText(std::size_t part, std::size_t whole);

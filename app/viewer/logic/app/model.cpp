@@ -9,6 +9,7 @@
 #include "convexloc/mesh_reader.hpp"
 #include "logic/draw/zoom_inset.hpp"
 #include "logic/scene/presets.hpp"
+#include "logic/teach/query_view.hpp"
 #include "logic/teach/scaling_record.hpp"
 
 namespace convexloc::viewer {
@@ -232,6 +233,7 @@ void Model::apply3d(const Options& o, bool method3d) {
   applyToScene(s3, o, o.method ? parseMethod3D(*o.method) : std::nullopt);
   if (o.slice) s3.setSlice(*o.slice);
   if (o.probe3) s3.place(*o.probe3);
+  if (o.camera.angles || o.camera.distance || o.camera.look) pendingCamera = o.camera;
   if (o.cell) {
     if (*o.cell < s3.cells().size())
       s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
@@ -327,6 +329,7 @@ void Model::reset() {
   settings.paperMode = false;  // the new scenes trace with the radius filter
   settings.caption.clear();
   pendingView.reset();
+  pendingCamera.reset();
   // the teaching views a slide opened: the split, the build, Why O(1), the Planes mode
   split.setEnabled(false);
   build.active = build.playing = false;
@@ -384,7 +387,53 @@ void Model::setPlanesMode(bool on) {
   requestFit();
 }
 
-void Model::fit(ScreenRect area) {
+Box2 Model::figureBox2() const {
+  if (lines2d.enabled()) return lines2d.inset().both();  // the polygon and its dual beside
+  // a placed point up to one polygon size off it (a slide's probe) is fitted in view too
+  Box2 box = scene2d.polygon().bounds();
+  if (const auto& p = scene2d.probe(); p && !lines2d.enabled()) {
+    const double w = box.hi.x - box.lo.x, h = box.hi.y - box.lo.y;
+    const Vec2 q = p->point;
+    if (q.x >= box.lo.x - w && q.x <= box.hi.x + w && q.y >= box.lo.y - h && q.y <= box.hi.y + h)
+      box = {{std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)},
+             {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
+  }
+  // a zoom inset beside the polygon (tiny edges) is fitted in view too
+  if (const auto inset = tinyEdgesInset(scene2d.polygon()); inset && !lines2d.enabled())
+    box = {{std::min(box.lo.x, inset->frame.lo.x), std::min(box.lo.y, inset->frame.lo.y)},
+           {std::max(box.hi.x, inset->frame.hi.x), std::max(box.hi.y, inset->frame.hi.y)}};
+  return box;
+}
+
+std::vector<glm::dvec3> Model::figurePoints3() const {
+  std::vector<glm::dvec3> points;
+  if (!hasScene3d()) return points;
+  const Scene3D& s = scene3d();
+  for (const Vec3 v : s.polyhedron().vertices()) points.push_back({v.x, v.y, v.z});
+  if (planes3d.enabled()) {  // the dual beside (on the unit sphere there), no cube
+    const DualPlace3D& at = planes3d.place();
+    for (int k = 0; k < 26; ++k) {
+      const glm::dvec3 d(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+      if (k != 13) points.push_back(at.middle + at.scale * glm::normalize(d));
+    }
+    return points;
+  }
+  if (const double h = s.cubeHalfSize(); h > 0.0 && s.centre() && settings.view3d.showCube)
+    for (int k = 0; k < 8; ++k)
+      points.push_back(toGlm(*s.centre()) +
+                       h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+  return points;
+}
+
+void Model::lookAcrossQuery() {
+  const auto& probe = scene3d().probe();
+  if (!probe || !probe->trace.centre || planes3d.enabled()) return;
+  const glm::dvec3 c = toGlm(*probe->trace.centre), x = toGlm(probe->point);
+  if (const auto exit = rayExitFace(scene3d().polyhedron(), c, x))
+    camera3d.lookAlong(viewAcrossRay(c, x, exit->normal));
+}
+
+void Model::fit(ScreenRect area, bool tight) {
   if (dim == Dim::Two && split.enabled() && !lines2d.enabled()) {
     // the split view: the camera is fitted to the left half; the right one follows it
     split.setArea(area);
@@ -392,20 +441,7 @@ void Model::fit(ScreenRect area) {
   }
   if (dim == Dim::Two) {
     lines2d.sync(scene2d);
-    // a placed point up to one polygon size off it (a slide's probe) is fitted in view too
-    Box2 box = scene2d.polygon().bounds();
-    if (const auto& p = scene2d.probe(); p && !lines2d.enabled()) {
-      const double w = box.hi.x - box.lo.x, h = box.hi.y - box.lo.y;
-      const Vec2 q = p->point;
-      if (q.x >= box.lo.x - w && q.x <= box.hi.x + w && q.y >= box.lo.y - h && q.y <= box.hi.y + h)
-        box = {{std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)},
-               {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
-    }
-    // a zoom inset beside the polygon (tiny edges) is fitted in view too
-    if (const auto inset = tinyEdgesInset(scene2d.polygon()); inset && !lines2d.enabled())
-      box = {{std::min(box.lo.x, inset->frame.lo.x), std::min(box.lo.y, inset->frame.lo.y)},
-             {std::max(box.hi.x, inset->frame.hi.x), std::max(box.hi.y, inset->frame.hi.y)}};
-    camera2d.fit(lines2d.enabled() ? lines2d.inset().both() : box, area);
+    camera2d.fit(figureBox2(), area, tight ? 0.09 : 0.13);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
       const double scale = area.size().x / pendingView->width;
@@ -431,9 +467,22 @@ void Model::fit(ScreenRect area) {
     const DualPlace3D& at = planes3d.place();
     const Bounds3 boxes[] = {planes3d.box(),
                              {at.middle - glm::dvec3(at.scale), at.middle + glm::dvec3(at.scale)}};
-    return camera3d.fitCorners(boxes, area);
+    camera3d.fitCorners(boxes, area);
+    if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);
+    return;
+  }
+  // the asked angles, else on a slide a query seen across its ray, its exit face in front
+  if (pendingCamera && pendingCamera->angles) {
+    const glm::dvec2 a = glm::radians(*pendingCamera->angles);
+    camera3d.lookAlong(
+        -glm::dvec3(std::cos(a.y) * std::cos(a.x), std::cos(a.y) * std::sin(a.x), std::sin(a.y)));
+  } else if (tight) {
+    lookAcrossQuery();
   }
   camera3d.fit(b, area);
+  // a slide: the figure as drawn, not its bounding sphere, fills the room
+  if (tight) camera3d.fitPoints(figurePoints3(), area, 0.88);
+  if (pendingCamera) camera3d.applyAsked(*pendingCamera);
 }
 
 ScreenProjection sceneProjection(const Model& model) {

@@ -123,10 +123,19 @@ class Model {
     fitPending_ = false;
     return f;
   }
-  // fits the current scene's camera into `area`, or applies the asked 2D view
-  void fit(ScreenRect area);
+  // fits the current scene's camera into `area`, or applies the asked 2D view; `tight`
+  // (a slide's figure room) leaves a narrower margin around the figure
+  void fit(ScreenRect area, bool tight = false);
+  // what a fit holds in view: 2D the polygon, a placed point near it, a zoom inset's frame
+  Box2 figureBox2() const;
+  // 3D: turns the camera across a placed point's ray (logic/teach/query_view)
+  void lookAcrossQuery();
+  // 3D: the polyhedron's vertices and the cube's corners where the cube map is drawn
+  std::vector<glm::dvec3> figurePoints3() const;
   // a 2D view to apply at the next fit instead: centre and width in world units
   std::optional<AskedView> pendingView;
+  // a 3D view to apply at the next fit (a lecture's `camera`, `look`)
+  std::optional<AskedCamera> pendingCamera;
 
   // === The placed point's query, step by step (the shown scene's)
   // the steps of the shown scene's placed point, none without one

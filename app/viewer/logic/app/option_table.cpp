@@ -44,6 +44,23 @@ bool oneOf(const std::string& v, std::initializer_list<std::string_view> choices
 }
 
 // --slice AXIS=V or none
+// --camera AZ,EL,DIST or AZ,EL,fit
+bool applyCamera(const Values& v, Options& o, std::string&) {
+  const std::string& t = v[0];
+  const std::size_t last = t.rfind(',');
+  if (last == std::string::npos) return false;
+  const std::string tail = t.substr(last + 1);
+  Vec3 q;
+  if (tail == "fit") {
+    if (!parsePoint3(t.substr(0, last) + ",1", q)) return false;
+  } else if (!parsePoint3(t, q) || !(q.z > 0.0)) {
+    return false;
+  }
+  o.camera.angles = glm::dvec2(q.x, q.y);
+  if (tail != "fit") o.camera.distance = q.z;
+  return true;
+}
+
 bool applySlice(const Values& v, Options& o, std::string&) {
   if (v[0] == "none") {
     o.hideSlice = true;
@@ -74,8 +91,7 @@ bool applyCell(const Values& v, Options& o, std::string&) {
       std::min<std::uint64_t>(std::uint64_t{1} << 40, std::numeric_limits<std::size_t>::max()));
   std::size_t k = 0, l = 0;
   const std::size_t comma = s.find(',');
-  if (comma != std::string_view::npos &&
-      parseInt<std::size_t>(s.substr(comma + 1), 0, kMost, l)) {
+  if (comma != std::string_view::npos && parseInt<std::size_t>(s.substr(comma + 1), 0, kMost, l)) {
     o.cellSecond = l;
     s = s.substr(0, comma);
   }
@@ -262,6 +278,17 @@ const OptionSpec kOptions[] = {
        Vec3 q;
        if (!parsePoint3(v[0], q) || !(q.z > 0.0)) return false;
        o.view = AskedView{{q.x, q.y}, q.z};
+       return true;
+     }},
+    {"--camera", "AZ,EL,DIST|AZ,EL,fit", 1, kScene,
+     "3D: the eye at azimuth AZ and elevation EL (degrees) from the target, DIST away or as "
+     "the fit puts it; a slide with a query otherwise looks across its ray",
+     "AZ,EL,DIST with DIST > 0, or AZ,EL,fit", false, applyCamera},
+    {"--look", "X,Y,Z", 1, kScene, "3D: the camera looks at (X, Y, Z)", "X,Y,Z", false,
+     [](const Values& v, Options& o, std::string&) {
+       Vec3 q;
+       if (!parsePoint3(v[0], q)) return false;
+       o.camera.look = glm::dvec3(q.x, q.y, q.z);
        return true;
      }},
     {"--3d", "", 0, kScene, "the 3D scene (a polyhedron with the cube map) without a file", "",

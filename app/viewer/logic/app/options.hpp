@@ -35,6 +35,7 @@ struct Options {
   bool solid = false;                   // --3d: the 3D scene
   std::optional<Vec2> hover;            // hover there (2D world coordinates)
   std::optional<AskedView> view;        // 2D: look at (x, y) showing a width w of the world
+  AskedCamera camera;                   // 3D: --camera and --look
   // 2D: the Lines mode (the dual problem), with the line through these two points
   std::optional<std::pair<Vec2, Vec2>> line;
   // 3D: the Planes mode (the dual problem in 3D), with the plane through these three points

@@ -76,6 +76,18 @@ PageFit fitPage(glm::dvec2 window, glm::dvec2 page) {
   return f;
 }
 
+std::vector<ScreenRect> barsAround(ScreenRect outer, ScreenRect inner) {
+  inner.lo = glm::clamp(inner.lo, outer.lo, outer.hi);
+  inner.hi = glm::clamp(inner.hi, inner.lo, outer.hi);
+  std::vector<ScreenRect> bars;
+  for (const ScreenRect& r : {ScreenRect{outer.lo, {outer.hi.x, inner.lo.y}},
+                              ScreenRect{{outer.lo.x, inner.hi.y}, outer.hi},
+                              ScreenRect{{outer.lo.x, inner.lo.y}, {inner.lo.x, inner.hi.y}},
+                              ScreenRect{{inner.hi.x, inner.lo.y}, {outer.hi.x, inner.hi.y}}})
+    if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) bars.push_back(r);
+  return bars;
+}
+
 TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m) {
   TextBox t;
   if (text.empty()) return t;
@@ -126,7 +138,86 @@ ScreenRect sceneRoom(const SlideContent& c, const SlideLayout& l, const SlideMet
 
 }  // namespace
 
+namespace {
+
+// `m` with its text `scale` times as large (a side column's smaller text)
+SlideMetrics scaled(const SlideMetrics& m, double scale) {
+  SlideMetrics s = m;
+  s.font *= scale;
+  s.spacing *= scale;
+  s.padding *= scale;
+  s.frame *= scale;
+  s.measure = [inner = m.measure, scale](std::string_view t) { return inner(t) * scale; };
+  return s;
+}
+
+// The side column's width: the legend's and the Steps window's, no wider than leaves the
+// figure its share of the page (negative: it does not fit).
+double columnWidth(const SlideContent& c, const SlideMetrics& m, double band, double scale,
+                   double& most) {
+  const glm::dvec2 a = c.area.size();
+  most = a.x - 3.0 * m.margin - kFigureShare * a.x * a.y / std::max(band, 1.0);
+  double wanted = c.legend.x * scale;
+  if (c.steps && !c.steps->model.steps.empty()) wanted = std::max(wanted, m.font * 15.0);
+  return wanted;
+}
+
+// A slide with its text `scale` times the body size (`m` already scaled; `body` the
+// unscaled): the card and the caption as elsewhere, the Steps window at the top and the
+// legend at the bottom of a column on the right between them, the figure's room the rest.
+// False where the figure's room is less than its share of the page.
+bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, SlideLayout& l) {
+  l = SlideLayout{};
+  l.title = titleCard(c, m, l.titleLines);
+  l.caption = captionBox(c, m);
+  l.title.padding = l.caption.padding = m.padding;
+  l.title.restScale = scale;
+  l.title.scale *= scale;
+  l.caption.scale *= scale;
+  const double top = (l.title.lines.empty() ? c.area.lo.y : l.title.box.hi.y) + m.margin;
+  double bottom = (c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y) - m.margin;
+  if (c.captionRoom > 0)
+    bottom = std::min(bottom, c.area.hi.y - 2.0 * m.margin - 2.0 * m.padding -
+                                  linesHeight(c.captionRoom, kCaptionScale, m));
+  const bool steps = c.steps && !c.steps->model.steps.empty();
+  const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0;
+  double most = 0.0;
+  const double width = steps || legend ? columnWidth(c, m, bottom - top, scale, most) : 0.0;
+  l.columnScale = scale;
+  const double right = c.area.hi.x - m.margin;
+  double stepsBottom = bottom;
+  if (legend) {
+    l.legend.hi = {right, bottom};
+    l.legend.lo = l.legend.hi - c.legend * scale;
+    stepsBottom = l.legend.lo.y - m.margin;
+  }
+  if (steps) {
+    l.steps = layoutStepsInColumn(*c.steps, m, {{right - width, top}, {right, stepsBottom}});
+    l.steps->textScale = scale;
+  }
+  const double left = width > 0.0 ? right - width - m.margin : right;
+  l.scene = {{c.area.lo.x + m.margin, top}, {left, bottom}};
+  const glm::dvec2 room = l.scene.size(), a = c.area.size();
+  return width <= most && room.x * room.y >= kFigureShare * a.x * a.y;
+}
+
+// A slide: at the body size where the figure keeps its share of the page, else with its
+// text smaller, down to kSlideTextShare of the page's height.
+SlideLayout layoutSlideColumn(const SlideContent& c, const SlideMetrics& body) {
+  const double least = std::min(1.0, kSlideTextShare * c.area.size().y / body.font);
+  SlideLayout l;
+  for (double scale = 1.0;; scale = std::max(least, scale - 0.05)) {
+    SlideMetrics m = scaled(body, scale);
+    m.padding = 0.45 * m.font;  // a slide's boxes: tight around their text
+    m.margin = 0.5 * m.font;
+    if (slideColumn(c, m, scale, l) || scale <= least) return l;
+  }
+}
+
+}  // namespace
+
 SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
+  if (c.slide) return layoutSlideColumn(c, m);
   SlideLayout l;
   l.title = titleCard(c, m, l.titleLines);
   l.caption = captionBox(c, m);

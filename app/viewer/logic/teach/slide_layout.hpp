@@ -32,6 +32,11 @@ struct PageFit {
 // gives an empty page at scale 1
 PageFit fitPage(glm::dvec2 window, glm::dvec2 page = kSlidePage);
 
+// the four bars of `outer` around `inner` (top, bottom, left, right; empty ones left out):
+// the letterbox around a page, and a slide's page around its figure's room, which the
+// figure never draws past
+std::vector<ScreenRect> barsAround(ScreenRect outer, ScreenRect inner);
+
 // the text's sizes, in window pixels, as the drawing measures them (ImGui's in the window)
 struct SlideMetrics {
   double font = 16.0;     // the body text's height
@@ -75,14 +80,17 @@ struct StepsLayout {
   std::vector<std::string> code;          // the code's lines shown, "> " on the current line
   std::vector<bool> codeCurrent;          // per code line: the current step's line
   double codeTop = 0.0;
-  double lineStep = 0.0;  // a line's advance (font + spacing)
+  double lineStep = 0.0;   // a line's advance (font + spacing)
+  double textScale = 1.0;  // its text's size over the body size (a slide's side column)
 };
 
 // a box of text: lines broken at spaces, `scale` times the body size
 struct TextBox {
   ScreenRect box;
   std::vector<std::string> lines;
-  double scale = 1.0;
+  double scale = 1.0;      // the first lines' size (the title's, or every caption line's)
+  double restScale = 1.0;  // the rest's (a figure's caption under its title)
+  double padding = -1.0;   // the inner padding (negative: the window's own)
 };
 
 // everything on a slide (or in the live scene) that the layout places
@@ -97,7 +105,15 @@ struct SlideContent {
   // the caption lines the scene leaves room for whatever the caption holds (a slide: 2, so
   // that slides with a one- and a two-line caption fit one figure alike); 0: the caption's own
   std::size_t captionRoom = 0;
+  // a slide: the Steps window and the legend in a column on the right, the figure's room
+  // the rest between the card and the caption (at least kFigureShare of the page)
+  bool slide = false;
 };
+
+// the share of the page a slide's figure room keeps at least
+inline constexpr double kFigureShare = 0.56;
+// the smallest text on a slide, as a share of the page's height
+inline constexpr double kSlideTextShare = 0.0225;
 
 // the boxes of one slide, in window pixels
 struct SlideLayout {
@@ -107,6 +123,7 @@ struct SlideLayout {
   std::optional<StepsLayout> steps;  // over the lower left corner, above the caption
   ScreenRect legend;                 // over the lower right corner, above the caption
   ScreenRect scene;                  // the room the shape is fitted into, beside all of them
+  double columnScale = 1.0;          // a slide's side column: its text over the body size
 };
 
 // The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not
@@ -114,6 +131,11 @@ struct SlideLayout {
 // step shown). Laid out in logic/teach/slide_steps.cpp.
 StepsLayout layoutSteps(const StepsContent& steps, const SlideMetrics& metrics, ScreenRect area,
                         double bottom, double top);
+
+// The Steps window at the top of a slide's side `column`, as wide as it, as many lines of
+// steps as it holds (a window of them around the step shown).
+StepsLayout layoutStepsInColumn(const StepsContent& steps, const SlideMetrics& metrics,
+                                ScreenRect column);
 
 // the colour of a step's line in the Steps window: its sign's, the result's (`result`, the
 // class's text colour), or the text's

@@ -63,6 +63,14 @@ std::vector<StepLines> aroundCurrent(const std::vector<StepLines>& all, int curr
           all.begin() + static_cast<std::ptrdiff_t>(hi) + 1};
 }
 
+// "steps 3-8 of 12" ("step 4 of 12" for one)
+std::string shownRange(const std::vector<StepLines>& shown, std::size_t total) {
+  const std::size_t first = shown.front().step + 1, last = shown.back().step + 1;
+  const std::string of = " of " + std::to_string(total);
+  return first == last ? "step " + std::to_string(first) + of
+                       : "steps " + std::to_string(first) + "-" + std::to_string(last) + of;
+}
+
 // the pseudo-code's lines: all (`whole`) or the current step's alone, "> " on the current
 void codeLines(const StepsContent& s, bool whole, double width, const SlideMetrics& m,
                StepsLayout& l) {
@@ -101,6 +109,9 @@ StepsLayout stepsWith(const StepsContent& s, const SlideMetrics& m, double room,
       s.model.note.empty() ? s.model.title : s.model.title + "  (" + s.model.note + ")";
   l.heading = breakAtSpaces(heading, inner, m.measure, "  ");
   l.shown = aroundCurrent(allSteps(s.model, l.columnWidth, m), s.step, most);
+  // a list cut to a window around the step shown says which steps it shows
+  if (!l.shown.empty() && l.shown.size() < s.model.steps.size())
+    l.heading.push_back(shownRange(l.shown, s.model.steps.size()));
   codeLines(s, l.wholeCode, l.columnWidth, m, l);
   // top to bottom from 0, moved into place at the end
   double y = m.padding + static_cast<double>(l.heading.size()) * l.lineStep;
@@ -145,6 +156,26 @@ StepsLayout layoutSteps(const StepsContent& s, const SlideMetrics& m, ScreenRect
       static_cast<std::size_t>(std::clamp(std::floor(area.size().y * 0.25 / step), 3.0, 9.0));
   StepsLayout l = stepsWith(s, m, room, x, bottom, most);
   while (l.box.lo.y < top && most > 1) l = stepsWith(s, m, room, x, bottom, --most);
+  return l;
+}
+
+}  // namespace convexloc::viewer
+
+namespace convexloc::viewer {
+
+StepsLayout layoutStepsInColumn(const StepsContent& s, const SlideMetrics& m, ScreenRect column) {
+  const double step = m.font + m.spacing, room = column.size().x;
+  // as many lines as the column holds (at least one step's)
+  auto most = static_cast<std::size_t>(std::max(1.0, std::floor(column.size().y / step) - 3.0));
+  StepsLayout l = stepsWith(s, m, room, column.lo.x, column.hi.y, most);
+  while (l.box.lo.y < column.lo.y && most > 1)
+    l = stepsWith(s, m, room, column.lo.x, column.hi.y, --most);
+  // at the column's top, its width the column's
+  const double dy = column.lo.y - l.box.lo.y;
+  for (double* at :
+       {&l.box.lo.y, &l.box.hi.y, &l.controlsTop, &l.listTop, &l.codeTop, &l.headingTop})
+    *at += dy;
+  l.box.hi.x = column.hi.x;
   return l;
 }
 

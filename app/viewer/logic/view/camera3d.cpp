@@ -40,6 +40,22 @@ glm::dvec3 Camera3D::eye() const {
   return target_ - distance_ * forward();
 }
 
+void Camera3D::applyAsked(const AskedCamera& asked) {
+  if (asked.look) {
+    // the fitted picture's shift is the fitted target's: the asked target at the area's middle
+    target_ = *asked.look;
+  }
+  if (asked.distance && *asked.distance > 0.0) distance_ = *asked.distance;
+}
+
+void Camera3D::lookAlong(glm::dvec3 direction) {
+  const double across = std::hypot(direction.x, direction.y);
+  if (!(across > 0.0) && !(std::abs(direction.z) > 0.0)) return;
+  // forward() = (-cos p cos y, -cos p sin y, -sin p)
+  if (across > 0.0) yaw_ = std::atan2(-direction.y, -direction.x);
+  pitch_ = std::clamp(std::atan2(-direction.z, across), -kPitchLimit, kPitchLimit);
+}
+
 void Camera3D::orbit(glm::dvec2 deltaPx) {
   yaw_ -= deltaPx.x * kRadiansPerPixel;
   pitch_ = std::clamp(pitch_ + deltaPx.y * kRadiansPerPixel, -kPitchLimit, kPitchLimit);
@@ -99,6 +115,32 @@ void Camera3D::fitCorners(std::span<const Bounds3> boxes, ScreenRect area) {
   // a margin, and the eye never among the corners
   const double d = std::max(1.04 * needed, 1.5 * nearest);
   if (d > 0.0 && d < distance_) distance_ = d;
+}
+
+void Camera3D::fitPoints(std::span<const glm::dvec3> points, ScreenRect area, double fill) {
+  const glm::dvec2 room = area.size();
+  if (points.empty() || !(room.x > 0.0) || !(room.y > 0.0)) return;
+  // the drawn box: false where a point is behind the eye
+  const auto drawnBox = [&](ScreenRect& box) {
+    box = {glm::dvec2(1e300), glm::dvec2(-1e300)};
+    for (const glm::dvec3& p : points) {
+      const Projected q = toScreen(p);
+      if (!q.visible()) return false;
+      box.lo = glm::min(box.lo, q.screen);
+      box.hi = glm::max(box.hi, q.screen);
+    }
+    return box.hi.x > box.lo.x && box.hi.y > box.lo.y;
+  };
+  // a few rounds: the drawn size goes about as the distance's inverse
+  for (int round = 0; round < 4; ++round) {
+    ScreenRect box;
+    if (!drawnBox(box)) return;
+    const glm::dvec2 size = box.size();
+    const double grow = fill * std::min(room.x / size.x, room.y / size.y);
+    distance_ = std::max(distance_ / grow, 1.2 * sceneRadius_);
+    if (!drawnBox(box)) return;
+    areaShift_ += area.middle() - box.middle();
+  }
 }
 
 glm::dmat4 Camera3D::viewFromLocal(glm::dvec3 origin) const {

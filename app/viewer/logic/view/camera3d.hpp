@@ -2,6 +2,7 @@
 // yaw about the world's z axis and tilted by pitch. Double precision throughout.
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -16,6 +17,15 @@ struct Bounds3 {
   glm::dvec3 hi{0.0};
   glm::dvec3 middle() const { return 0.5 * (lo + hi); }
   double radius() const { return 0.5 * glm::length(hi - lo); }
+};
+
+// a 3D view asked for by name (a lecture's `camera`, `look`): the eye's azimuth about z from
+// +x and elevation above the xy plane, in degrees, its distance from the target (none: the
+// fit's), and the target (none: the fit's)
+struct AskedCamera {
+  std::optional<glm::dvec2> angles;  // azimuth, elevation
+  std::optional<double> distance;
+  std::optional<glm::dvec3> look;
 };
 
 // a ray in world coordinates; `direction` has unit length
@@ -55,6 +65,10 @@ class Camera3D {
   glm::dvec3 right() const;
   glm::dvec3 up() const;
 
+  // the asked view: its angles, then its target and distance where given (after a fit)
+  void applyAsked(const AskedCamera& asked);
+  // turns the view to look along `direction` (any length; its pitch kept short of the poles)
+  void lookAlong(glm::dvec3 direction);
   // turns the view as when the mouse drags by `deltaPx` (left-right: yaw, up-down: pitch)
   void orbit(glm::dvec2 deltaPx);
   // moves the target in the view plane so that the content follows the mouse
@@ -68,6 +82,9 @@ class Camera3D {
   // dual beside it then fill a wide area, not their bounding sphere's square)
   void fitCorners(std::span<const Bounds3> boxes, ScreenRect area);
 
+  // after a fit, comes nearer (or goes farther) and shifts the picture so that the points'
+  // drawn bounding box is centred in `area` and `fill` of its width or height
+  void fitPoints(std::span<const glm::dvec3> points, ScreenRect area, double fill);
   // window pixel of a world point
   Projected toScreen(glm::dvec3 world) const;
   // the ray from the eye through a window pixel

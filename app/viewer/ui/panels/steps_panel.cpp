@@ -122,10 +122,14 @@ void stepsWindow(Model& model, UiState& ui, double now) {
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(l.box.lo.x), static_cast<float>(l.box.lo.y)));
   ImGui::SetNextWindowSize(ImVec2(static_cast<float>(size.x), static_cast<float>(size.y)));
   ImGui::SetNextWindowBgAlpha(0.9f);
+  // the window's padding as the layout's (a slide's is tighter): nothing clipped at its edges
+  const float pad = static_cast<float>(l.listLeft - l.box.lo.x);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(pad, pad));
   ImGui::Begin("Steps", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
+  ImGui::SetWindowFontScale(static_cast<float>(l.textScale));  // a slide's column: smaller
   for (std::size_t k = 0; k < l.heading.size(); ++k)
     lineAt(l.listLeft, l.headingTop + static_cast<double>(k) * l.lineStep, l.heading[k],
            pal.textMuted);
@@ -139,6 +143,7 @@ void stepsWindow(Model& model, UiState& ui, double now) {
   if (!l.sideBySide && !l.code.empty()) separatorAbove(l, l.codeTop, pal);
   codeList(l, pal);
   ImGui::End();
+  ImGui::PopStyleVar();
   ui.stepsRect[0] = static_cast<float>(l.box.lo.x),
   ui.stepsRect[1] = static_cast<float>(l.box.lo.y);
   ui.stepsRect[2] = static_cast<float>(l.box.hi.x),
