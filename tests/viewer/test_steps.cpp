@@ -190,6 +190,19 @@ TEST(Steps, CubemapShowsTheCubeFaceAndTheCell) {
   EXPECT_EQ(pm.steps.back().caption, "result: INSIDE");
 }
 
+TEST(Steps, CubemapShowsAZeroUpToRoundingAsZero) {
+  const ConvexPolyhedron cube(generatePolyhedron(PolyhedronKind::Cube, 12, 1));
+  const CubemapLocator cm(cube, 4);
+  const Vec3 c = *cm.centre();
+  // d_y is one ulp of x_T's y (or a denormal): 0 as d shows it, so 0 in (s,t) too
+  const Vec3 p{c.x + 0.5, std::nextafter(c.y, -1.0), c.z - 0.2};
+  ASSERT_NE(p.y - c.y, 0.0);
+  const cv::StepModel m = cv::buildSteps3D(cm.trace(p), p, 2.0);
+  ASSERT_GE(m.steps.size(), 2u);
+  EXPECT_EQ(m.steps[0].caption, "d = x - x_T = (0.5,0,-0.2): cube face +x");
+  EXPECT_EQ(m.steps[1].caption.rfind("(s,t) = (0,-0.4) -> cell (", 0), 0u) << m.steps[1].caption;
+}
+
 TEST(Steps, WalkListsEveryEdgeTestItCounts) {
   const ConvexPolyhedron poly(generatePolyhedron(PolyhedronKind::Geodesic, 320, 2));
   const WalkLocator walk(poly);

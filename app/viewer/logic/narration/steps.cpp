@@ -269,7 +269,8 @@ void cubeCellSteps(const Trace3D& t, double scale, StepList& l) {
   l.add("d = x - x_T = " + compact(t.direction, scale) + ": cube face " +
             std::string(kCubeFaceNames[static_cast<std::size_t>(t.cubeFace)]),
         0, StepFocus::Octant, t.cubeFace);
-  std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}) + " -> cell (" + std::to_string(t.cellI) +
+  // s and t lie in [-1, 1]: below 1e-12 they are rounding of a d coordinate shown as 0 above
+  std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}, 1.0) + " -> cell (" + std::to_string(t.cellI) +
                      "," + std::to_string(t.cellJ) + ") of " + std::to_string(t.cellsPerSide) +
                      "x" + std::to_string(t.cellsPerSide);
   if (t.level > 0) cell += ", level " + std::to_string(t.level);
