@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
 
 namespace meshbytes {
@@ -117,6 +118,20 @@ inline std::vector<std::vector<Vec3>> facetsOf(const MeshData& m) {
       out.push_back({m.vertices[face[0]], m.vertices[face[k - 1]], m.vertices[face[k]]});
   }
   return out;
+}
+
+// the ParseError of parsing `text` in `format`, with its line ("no error", 0 when it parses)
+struct Problem {
+  std::string message;
+  std::size_t line = 0;
+};
+inline Problem problemOf(convexloc::MeshFormat format, const std::string& text) {
+  try {
+    convexloc::parseMesh(format, text);
+  } catch (const convexloc::ParseError& e) {
+    return {e.what(), e.line()};
+  }
+  return {"no error", 0};
 }
 
 }  // namespace meshbytes

@@ -10,6 +10,7 @@
 #include "convexloc/error.hpp"
 #include "convexloc/generate3d.hpp"
 #include "convexloc/mesh_reader.hpp"
+#include "mesh_bytes.hpp"
 #include "shapes3d.hpp"
 
 using namespace convexloc;
@@ -28,18 +29,8 @@ const char* kCubeOff =
     "4 2 3 7 6   255 0 0\n4 0 2 6 4\n4 1 5 7 3\n";
 
 // the ParseError of parsing `text` as OFF (or OBJ), with its line
-struct Problem {
-  std::string message;
-  std::size_t line = 0;
-};
-Problem problemOf(MeshFormat format, const std::string& text) {
-  try {
-    parseMesh(format, text);
-  } catch (const ParseError& e) {
-    return {e.what(), e.line()};
-  }
-  return {"no error", 0};
-}
+using meshbytes::Problem;
+using meshbytes::problemOf;
 Problem offProblem(const std::string& text) {
   return problemOf(MeshFormat::Off, text);
 }

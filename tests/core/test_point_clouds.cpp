@@ -9,26 +9,15 @@
 
 #include "convexloc/error.hpp"
 #include "convexloc/mesh_reader.hpp"
+#include "mesh_bytes.hpp"
 
 using namespace convexloc;
 using testing::HasSubstr;
 
 namespace {
 
-struct Problem {
-  std::string message;
-  std::size_t line = 0;
-};
-
-// the ParseError of parsing `text` in `format`, with its line
-Problem problemOf(MeshFormat format, const std::string& text) {
-  try {
-    parseMesh(format, text);
-  } catch (const ParseError& e) {
-    return {e.what(), e.line()};
-  }
-  return {"no error", 0};
-}
+using meshbytes::Problem;
+using meshbytes::problemOf;
 
 // the corners of [0, 1]^3 and its centre, with intensity and colour columns, comma- or
 // blank-separated, as scanners write them
