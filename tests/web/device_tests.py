@@ -113,9 +113,12 @@ def touch(b, kind, points, at=None):
 
 
 def drag(b, points_from, points_to, steps=8):
-    """Fingers down at points_from, moved in steps (a frame each) to points_to, lifted."""
+    """Fingers down at points_from, moved in steps (a frame each) to points_to, lifted. One
+    finger moves at once, as a real one does: a pause first, on a page slow to draw, would be
+    a long press."""
     touch(b, "touchStart", points_from)
-    b.settle(2)
+    if len(points_from) > 1:
+        b.settle(2)
     for k in range(1, steps + 1):
         t = k / steps
         touch(b, "touchMove", [(a[0] + (c[0] - a[0]) * t, a[1] + (c[1] - a[1]) * t)

@@ -65,7 +65,9 @@
                           frame: Module.framesDrawn});
     mouse('mousemove', p);
     touch.timer = setTimeout(() => {
-      if (touch.mode !== 'pending') return;
+      // a finger already past the slop is a drag waiting for a frame, however slow the page
+      const moved = Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y);
+      if (touch.mode !== 'pending' || moved > SLOP) return;
       mouse('mousedown', touch.start, 2);
       touch.mode = 'right';
       touch.frame = Module.framesDrawn;
