@@ -162,6 +162,17 @@ TEST_F(DamagedTables, AnEntryOutOfRange) {
   expectRefused(t, "lists face");
 }
 
+TEST_F(DamagedTables, MarksThatDoNotFit) {
+  CubemapTables t = good;
+  t.nodes[2 * firstLeaf() + 1] = 0x80000000u;  // a zone leaf naming no range
+  expectRefused(t, "names no range");
+  t.nodes[2 * firstLeaf() + 1] = 0xc0000001u;  // both zone and fan
+  expectRefused(t, "both zone and fan");
+  ASSERT_TRUE(good.zoneRanges.empty());
+  t.nodes[2 * firstLeaf() + 1] = 0x80000001u;  // a zone leaf, where there are no zones
+  expectRefused(t, "names range");
+}
+
 TEST_F(DamagedTables, ALeafsEntriesPastTheEnd) {
   CubemapTables t = good;
   t.nodes[2 * firstLeaf()] = static_cast<std::uint32_t>(good.entries.size());

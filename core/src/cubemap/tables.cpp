@@ -186,11 +186,12 @@ class TableLoader {
     const bool zone = cubemap::isZoneLeaf(count), sector = cubemap::isSectorLeaf(count);
     require(!(zone && (count & cubemap::kSectorLeaf)), name + " is marked both zone and fan");
     const std::uint32_t n = cubemap::leafEntries(count);
+    const bool ranged = zone || sector;
+    require(n > 0 || !ranged, name + " is marked zone or fan but names no range");
     if (n == 0) return;  // lists nothing: its first entry is never read
     require(std::uint64_t{first} + n <= t_.entries.size(),
             name + "'s entries run past the " + std::to_string(t_.entries.size()) + " entries");
     const std::uint32_t* e = t_.entries.data() + first;
-    const bool ranged = zone || sector;
     if (ranged) {
       const std::size_t bound = zone ? zoneRanges : sectorRanges;
       require(e[0] < bound,
