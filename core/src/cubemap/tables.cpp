@@ -254,6 +254,20 @@ class TableLoader {
   std::size_t vertices_, faces_;
 };
 
+// the cube's half-size around c, which must be finite and strictly inside every face plane
+// (exact predicates), with directions from it that do not overflow
+double checkCentre(const detail::SurfaceCopy& surface, Vec3 c) {
+  require(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z),
+          "the centre is not finite");
+  const std::vector<Vec3>& v = surface.vertices;
+  for (const ConvexPolyhedron::Triangle& f : surface.faces)
+    require(orient3d(v[f[0]], v[f[1]], v[f[2]], c) > 0, "the centre is not strictly inside");
+  const double extent = cubemap::cubeExtent(v, c);
+  require(std::isfinite(extent) && extent > 0,
+          "the polyhedron's directions from the centre overflow");
+  return extent;
+}
+
 }  // namespace
 
 CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, const CubemapTables& t)
@@ -273,14 +287,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, const Cubemap
   const TableLoader load(t, surface_.vertices.size(), surface_.faces.size());
   deepestLevel_ = load.checkGrid();
   const Vec3 c = t.centre;
-  require(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z),
-          "the centre is not finite");
-  const std::vector<Vec3>& v = surface_.vertices;
-  for (const ConvexPolyhedron::Triangle& f : surface_.faces)
-    require(orient3d(v[f[0]], v[f[1]], v[f[2]], c) > 0, "the centre is not strictly inside");
-  cubeHalfSize_ = cubemap::cubeExtent(v, c);
-  require(std::isfinite(cubeHalfSize_) && cubeHalfSize_ > 0,
-          "the polyhedron's directions from the centre overflow");
+  cubeHalfSize_ = checkCentre(surface_, c);
   std::size_t edges = 0;
   zones_ = load.zones(edges);
   zoneRanges_ = load.zoneRanges(zones_);
