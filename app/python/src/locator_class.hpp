@@ -43,7 +43,8 @@ inline const char* keep(std::string text) {
 
 // A locator as the Python class holds it: with the shape it was built from (the Python
 // object, shared, not copied) and the resolution asked for, which is what pickling carries:
-// a locator is rebuilt on load, from the shape's exact doubles and that resolution.
+// a locator is rebuilt on load, from the shape's exact doubles and that resolution (a cube
+// map's pickle carries its tables too, and loads them instead).
 template <class Locator>
 struct Bound {
   Locator locator;
@@ -90,6 +91,9 @@ constexpr const char* shapeNote() {
                                     : "";
 }
 
+// pickling a CubemapLocator: its tables travel, loaded without building (cubemap_tables.cpp)
+void defineCubemapPickle(py::class_<Bound<CubemapLocator>>& c);
+
 // the constructor (from the shape, and a resolution where the method has one) and pickling
 template <class Locator, class Method>
 void defineInit(py::class_<Bound<Locator>>& c, Method method) {
@@ -113,14 +117,17 @@ void defineInit(py::class_<Bound<Locator>>& c, Method method) {
           signedDoc("__init__", keep(params),
                     "Builds the locator" + std::string(shapeNote<Method>()) + "."));
   }
-  c.def(py::pickle([](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
-                   [](const py::tuple& state) {
-                     if (state.size() != 3 || state[0].cast<int>() != 1)
-                       throw py::value_error(
-                           "cannot unpickle this locator: it was pickled by another "
-                           "version of convexloc");
-                     return buildBound<Locator, Method>(state[1], state[2].cast<std::uint32_t>());
-                   }));
+  if constexpr (std::is_same_v<Locator, CubemapLocator>)
+    defineCubemapPickle(c);
+  else
+    c.def(py::pickle(
+        [](const Bound<Locator>& b) { return py::make_tuple(1, b.shape, b.resolution); },
+        [](const py::tuple& state) {
+          if (state.size() != 3 || state[0].cast<int>() != 1)
+            throw py::value_error(
+                "cannot unpickle this locator: it was pickled by another version of convexloc");
+          return buildBound<Locator, Method>(state[1], state[2].cast<std::uint32_t>());
+        }));
   pickleAnyProtocol(c);
   c.def_property_readonly(
       "shape", [](const Bound<Locator>& b) { return b.shape; }, "the shape it was built from");
@@ -240,9 +247,11 @@ py::class_<Bound<Locator>> bindLocator(py::module_& m, const char* name, Method 
   std::string doc = std::string(info.name) + ", " + std::string(info.cost);
   if (!info.costNote.empty()) doc += " " + std::string(info.costNote);
   doc += ": " + std::string(info.summary) + ".";
-  doc +=
-      " Pickle, copy and deepcopy carry the shape and the resolution; the tables are "
-      "rebuilt on load.";
+  doc += std::is_same_v<Locator, CubemapLocator>
+             ? " Pickle, copy and deepcopy carry the shape, the resolution and the tables, "
+               "which load without a build (checked; tables of another version are rebuilt)."
+             : " Pickle, copy and deepcopy carry the shape and the resolution; the tables are "
+               "rebuilt on load.";
   py::class_<Bound<Locator>> c(m, name, keep(doc));
   defineInit(c, method);
   defineLocate<Locator, Method>(c);

@@ -13,6 +13,9 @@ void bindLocators3D(py::module_& m) {
                   "G: the base grid is G x G on each cube face (0: no cells)");
   locatorProperty(cubemap, "cube_half_size", &CubemapLocator::cubeHalfSize,
                   "half the side of the cube around the centre that cells() draws on");
+  locatorProperty(cubemap, "loaded", &CubemapLocator::loaded,
+                  "whether it was loaded from a pickle's tables rather than built "
+                  "(stats()['build_seconds'] is then the build's)");
 }
 
 }  // namespace convexloc::python

@@ -236,6 +236,31 @@ class WalkLocator : public detail::SinkQueries<WalkLocator, Vec3, Trace3D> {
 
 class CubemapBuilder;
 
+// A CubemapLocator's tables as plain arrays (CubemapLocator::tables()), from which the
+// constructor below makes the same locator again without building: what a saved or pickled
+// cube map carries. Loading checks the structure (CubemapLocator's load constructor says
+// what); the lists themselves are trusted to be this version's builder's.
+struct CubemapTables {
+  // the tables' layout; a load refuses any other (a caller may rebuild instead)
+  static constexpr std::uint32_t kVersion = 1;
+  std::uint32_t version = kVersion;
+  std::uint32_t resolution = 0;             // G; 0: no cells (no centre), every other table empty
+  Vec3 centre{};                            // strictly inside
+  double buildSeconds = 0.0;                // the build's, which stats() goes on reporting
+  std::vector<std::uint32_t> nodes;         // per node: first, count (index.hpp's marks)
+  std::vector<float> radii;                 // per node: in2, out2 (NaN for an inner node)
+  std::vector<std::uint32_t> entries;       // the leaves' lists
+  std::vector<std::uint32_t> zones;         // per zone: first, size, sigma (1; 0 for -1)
+  std::vector<std::uint32_t> zoneEdges;     // per edge: its two vertices
+  std::vector<std::uint32_t> zoneFaces;     // per zone place: its face
+  std::vector<std::uint32_t> zoneRanges;    // per range: zone, lo, span
+  std::vector<double> sectorPoints;         // per fan: axis, reference (6 doubles)
+  std::vector<std::uint32_t> sectors;       // per fan: sign (1; 0 for -1), first, size, back
+  std::vector<std::uint32_t> sectorFaces;   // per fan place: its face
+  std::vector<std::uint32_t> sectorKeys;    // and its key (index.hpp)
+  std::vector<std::uint32_t> sectorRanges;  // per range: fan, from, to
+};
+
 // A centre c strictly inside; the direction d = p - c picks a cube face by its dominant axis
 // and a point (s, t) = (d_u, d_v) / |d_major| in [-1, 1]^2 on it; a G x G grid per cube face,
 // refined as a quadtree where cells are crowded, lists in each cell every face whose central
@@ -275,6 +300,22 @@ class CubemapLocator {
   // `resolution` = G, 0 chooses from the face count; at most 8192. A grid that would not fit
   // the memory budget is coarsened: stats().resolution tells the G used.
   explicit CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution = 0);
+  // The locator whose tables() these are, over the polyhedron it was built from, without
+  // building. Checked, else ParseError naming the table and the problem: the version; G in
+  // the builder's range and the deepest level the builder gives it; every table's size;
+  // every index in range (nodes, entries, zones and fans, their edges, faces, keys and
+  // ranges, and the places a bisection reaches); the quadtree a tree no deeper than that
+  // level; the centre finite and strictly inside every face plane (exact predicates);
+  // marks and signs valid, radii numbers (NaN exactly at inner nodes). So no query of a
+  // loaded locator reads outside its tables. Not checked (trusted to be this version's
+  // builder's, as the version says): that each cell lists every face it must and that its
+  // radii are sound, on which exact answers rest (cubemap/index.hpp).
+  CubemapLocator(const ConvexPolyhedron& polyhedron, const CubemapTables& tables);
+  // the tables, to load with the constructor above
+  CubemapTables tables() const;
+  // whether it was loaded from tables rather than built (stats() then reports the build's
+  // time, carried in the tables)
+  bool loaded() const noexcept { return loaded_; }
   // aims at p's cell; its radii decide, else its faces' planes (or a walk in a crowded cell)
   Location locate(Vec3 p) const noexcept;
   // locate(p) for each point, in stages that overlap the tables' cache misses (AVX2 where the
@@ -374,6 +415,7 @@ class CubemapLocator {
   double deepScale_ = 0.0;        // G * 2^(deepest - 1): (s + 1) * deepScale_ is the deepest index
   double cubeHalfSize_ = 1.0;
   double buildSeconds_ = 0.0;
+  bool loaded_ = false;
 };
 
 // === Any of the three, chosen at run time

@@ -27,8 +27,6 @@ namespace {
 
 // the most cells per side at any level: 2^31
 constexpr int kMaxSideBits = 31;
-// the largest G accepted
-constexpr std::uint32_t kMaxResolution = 8192;
 // The default G is at least this: where the faces are few, each cell's radii then bound
 // only the part of a face the cell sees, and a thinner shell is left to the face tests; the
 // grid still fits the constant part of the memory budget.
@@ -38,13 +36,20 @@ constexpr std::uint32_t kUnlisted = 0xffffffffu;
 // the part of the memory budget that does not grow with the faces
 constexpr std::size_t kFixedBudget = 32 * 1024;
 
-// the deepest level for base resolution g: at most 2^31 cells per side
+}  // namespace
+
 int depthFor(std::uint32_t g) {
   const int bits = static_cast<int>(std::bit_width(g - 1));
   return std::min(kMaxLevel, kMaxSideBits - bits);
 }
 
-}  // namespace
+double cubeExtent(std::span<const Vec3> vertices, Vec3 c) {
+  double extent = 0;
+  for (const Vec3& p : vertices)
+    extent = std::max({extent, std::fabs(p.x - c.x), std::fabs(p.y - c.y), std::fabs(p.z - c.z)});
+  return extent;
+}
+
 }  // namespace cubemap
 
 using namespace cubemap;
@@ -129,11 +134,7 @@ void CubemapBuilder::build() {
 bool CubemapBuilder::aimFromCentre() {
   CubemapLocator& L = locator_;
   double extent = 0;
-  if (centre_) {
-    const Vec3 c = L.centre_ = *centre_;
-    for (const Vec3& p : L.surface_.vertices)
-      extent = std::max({extent, std::fabs(p.x - c.x), std::fabs(p.y - c.y), std::fabs(p.z - c.z)});
-  }
+  if (centre_) extent = cubeExtent(L.surface_.vertices, L.centre_ = *centre_);
   // no centre (a polyhedron thinner than the double grid), or one so vast that its
   // directions overflow
   if (!centre_ || !std::isfinite(extent) || !(extent > 0)) return false;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "convexloc/geometry.hpp"
@@ -42,6 +43,14 @@ struct PowerOfTwo {
 
 // the deepest quadtree level
 inline constexpr int kMaxLevel = 30;
+// the largest G accepted
+inline constexpr std::uint32_t kMaxResolution = 8192;
+
+// the deepest level for base resolution g: at most 2^31 cells per side
+int depthFor(std::uint32_t g);
+// the half-size of the cube around c that holds the vertices: their largest coordinate
+// difference from c
+double cubeExtent(std::span<const Vec3> vertices, Vec3 c);
 
 }  // namespace cubemap
 
