@@ -7,7 +7,8 @@
 #  - every 1920x1080 SVG rendered by rsvg-convert and compared with its PNG at full size:
 #    RMSE at most 0.05 (a slide with a window drawn whole over the scene, Why O(1), is
 #    allowed 0.12: the SVG has its plots but not its buttons);
-#  - every SVG holds the slide's title and its whole caption (the lecture's `caption` key).
+#  - every SVG holds the slide's title and its whole caption (the lecture's `caption` key),
+#    and a large-offset slide its digits ("at 10^9 from the origin: vertex 0 is ...").
 # usage: lecture_sizes.sh XVFB_RUN VIEWER COMPARER LECTURE OUTDIR
 set -euo pipefail
 xvfb=$1 viewer=$2 compare=$3 lecture=$4 out=$5
@@ -54,9 +55,11 @@ slides = []
 for line in open(lecture, encoding="utf-8"):
     line = line.rstrip("\n")
     if line.startswith("slide "):
-        slides.append({"title": line[6:].strip(), "caption": ""})
+        slides.append({"title": line[6:].strip(), "caption": "", "far": False})
     elif line.startswith("caption ") and slides:
         slides[-1]["caption"] = line[8:].strip()
+    elif line.strip() == "preset large-offset" and slides:
+        slides[-1]["far"] = True
 ns = "{http://www.w3.org/2000/svg}"
 bad = 0
 for n, s in enumerate(slides, 1):
@@ -70,6 +73,9 @@ for n, s in enumerate(slides, 1):
         bad += 1
     if " ".join(s["caption"].split()) not in caption:
         print(f"slide {n}: the SVG's caption reads {caption!r}, not {s['caption']!r}")
+        bad += 1
+    if s["far"] and "from the origin: vertex 0 is (" not in text("label"):
+        print(f"slide {n}: a large offset without its digits")
         bad += 1
 print(f"{len(slides)} SVGs: titles and captions checked, {bad} problems")
 sys.exit(1 if bad else 0)

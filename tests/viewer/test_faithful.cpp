@@ -369,8 +369,20 @@ TEST(ZoomInset, AFarOffsetShowsItsDigits) {
   cv::DrawList out;
   cv::buildStructure2D(m.scene2d, cv::paletteFor(m.settings.theme), m.settings.view2d, out);
   bool drawn = false;
-  for (const cv::Label& l : out.labels) drawn |= l.text == *note;
-  EXPECT_TRUE(drawn);
+  for (const cv::Label& l : out.labels) drawn |= l.text == *note && l.essential;
+  EXPECT_TRUE(drawn);  // and never left out for want of room
+  // an essential label in a list of others wins the one spot there is
+  cv::DrawList crowded;
+  crowded.label({15.0, 8.0, 0.0}, "aaaa", {});
+  crowded.label({15.0, 8.0, 0.0}, "note", {});
+  crowded.labels.back().essential = true;
+  const cv::DrawList* lists[] = {&crowded};
+  const auto placed = cv::layoutSceneLabels(
+      lists, 1, [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; },
+      {{0.0, 0.0}, {30.0, 16.0}},
+      [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); }, 1.0, 400, {});
+  ASSERT_FALSE(placed.empty());
+  EXPECT_EQ(placed.front().label->text, "note");
   // near the origin: none
   EXPECT_FALSE(cv::offsetNote(convexloc::ConvexPolygon(
       convexloc::generatePolygon(convexloc::PolygonKind::Regular, 12, 1))));

@@ -343,3 +343,25 @@ TEST(Svg, TextIsPlacedWhereTheWindowDrawsIt) {
       << svg;
   EXPECT_EQ(svg.find("dominant-baseline"), std::string::npos);
 }
+
+// a near-boundary spray hugs the edges: its points are written over the lines (as the window
+// draws them), where the lines would hide them; otherwise only the boundary points are
+TEST(Svg, PointsHuggingTheEdgesAreWrittenOverTheLines) {
+  cv::SvgScene s;
+  s.size = {100.0, 100.0};
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
+  cv::DrawList lines;
+  lines.segment({10.0, 50.0, 0.0}, {90.0, 50.0, 0.0}, {}, 3.0f);
+  s.base = {&lines};
+  const std::vector<convexloc::Location> classes = {convexloc::Location::Inside};
+  s.points.points = {{50.0, 50.0, 0.0}};
+  s.points.classes = classes;
+  for (const bool over : {false, true}) {
+    s.points.overLines = over;
+    const std::string svg = cv::sceneSvg(s);
+    const std::size_t line = svg.find("<line x1=\"10.00\""), point = svg.find("<circle");
+    ASSERT_NE(line, std::string::npos);
+    ASSERT_NE(point, std::string::npos);
+    EXPECT_EQ(point > line, over);
+  }
+}

@@ -28,6 +28,7 @@ void sprayOf(const Scene& scene, const Model& model, const SceneView& view, SvgS
   }
   s.points.classes = scene.classes();
   s.points.visibleMask = model.settings.visibleMask;
+  s.points.overLines = pointsOverLines(model);
   s.points.size = view.pointSize();
   s.points.colours[0] = pal.inside;
   s.points.colours[1] = pal.boundary;

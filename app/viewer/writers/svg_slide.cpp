@@ -53,28 +53,6 @@ std::string rectSvg(const ScreenRect& r, Rgba fill, double rounding = 0.0) {
          "/>";
 }
 
-// `text`'s words (and a hyphened word's parts), each a tspan where the window draws it (`x`
-// and the advance before it, `scale` times the body's): SVG readers space glyphs their own
-// way, a word drifts no further
-std::string wordsSvg(double x, double scale, const std::string& text, const SvgScene& s) {
-  std::string out;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t space = std::min(text.find(' ', start), text.size());
-    const std::size_t hyphen = text.find('-', start);
-    const std::size_t end = hyphen < space ? hyphen + 1 : space;
-    if (end > start) {
-      const std::string_view before(text.data(), start);
-      const double dx = start == 0 ? 0.0 : (s.advance ? s.advance : s.measure)(before).x;
-      out += "<tspan x=\"" + num(x + scale * dx) + "\">" +
-             xmlEscape(std::string_view(text).substr(start, end - start)) + "</tspan>";
-    }
-    if (end == space && end < text.size()) out += " ";
-    start = end == space ? end + 1 : end;
-  }
-  return out;
-}
-
 // a line of text whose top is at `top` (as the window places it), `scale` times the body
 std::string lineSvg(double x, double top, double scale, const std::string& text, Rgba colour,
                     const SvgScene& s, const char* cls = "line") {
@@ -156,6 +134,26 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
 }
 
 }  // namespace
+
+std::string wordsSvg(double x, double scale, const std::string& text, const SvgScene& s) {
+  if (text.find_first_of(" -") == std::string::npos) return xmlEscape(text);
+  std::string out;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    const std::size_t hyphen = text.find('-', start);
+    const std::size_t end = hyphen < space ? hyphen + 1 : space;
+    if (end > start) {
+      const std::string_view before(text.data(), start);
+      const double dx = start == 0 ? 0.0 : (s.advance ? s.advance : s.measure)(before).x;
+      out += "<tspan x=\"" + num(x + scale * dx) + "\">" +
+             xmlEscape(std::string_view(text).substr(start, end - start)) + "</tspan>";
+    }
+    if (end == space && end < text.size()) out += " ";
+    start = end == space ? end + 1 : end;
+  }
+  return out;
+}
 
 void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) {
   out += "<g class=\"inset\" stroke-linecap=\"butt\">\n";

@@ -30,6 +30,11 @@ inline glm::dvec2 imguiBaseline(glm::dvec2 at, double em, double scale = 1.0) {
   return {std::floor(at.x), std::floor(at.y) + scale * std::floor(0.928 * em + 1.0)};
 }
 
+// `text`'s words (and a hyphened word's parts) as tspans where the window draws them: from
+// `x`, the advance before each (`scale` times the body's); SVG readers space glyphs their own
+// way, a word drifts no further. A single word is written as it is.
+std::string wordsSvg(double x, double scale, const std::string& text, const SvgScene& scene);
+
 // the bars beside `scene.page` (none when the page is empty or fills the picture)
 void writeLetterbox(const SvgScene& scene, std::string& out);
 

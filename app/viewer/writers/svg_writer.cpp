@@ -184,7 +184,7 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
                     "\"" + paint("fill", sp.colours[c]);
     if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
-    (boundary ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
+    (boundary || sp.overLines ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
   }
   return stride;
 }
@@ -252,7 +252,7 @@ std::string textSvg(const SvgScene& s, glm::dvec2 c, std::string_view text, Rgba
                     const char* cls = "label") {
   const glm::dvec2 at = imguiBaseline(glm::round(c - 0.5 * s.measure(text)), s.fontPixels);
   return "<text class=\"" + std::string(cls) + "\" x=\"" + num(at.x) + "\" y=\"" + num(at.y) +
-         "\"" + paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+         "\"" + paint("fill", colour) + ">" + wordsSvg(at.x, 1.0, std::string(text), s) + "</text>";
 }
 
 void writeLabels(const SvgScene& s, std::string& out) {

@@ -33,6 +33,7 @@ struct SvgPoints {
   float size = 4.0f;          // diameter in window pixels; boundary points 1.7 times it
   Rgba colours[3];            // inside, boundary, outside
   Rgba rim;                   // the boundary points' rim
+  bool overLines = false;     // 2D: all drawn over the lines (a near-boundary spray's)
 };
 
 // the split view: the right half's projection and draw lists over the same points, each

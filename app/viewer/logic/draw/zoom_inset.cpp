@@ -140,6 +140,7 @@ void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const
   const Vec2 v = polygon.vertex(0);
   out.marker({v.x, v.y, 0.0}, pal.text, 14.0f, MarkerShape::Ring);
   out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
+  out.labels.back().essential = true;  // the shape's point: never left out for a vertex number
 }
 
 void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, DrawList& out) {
