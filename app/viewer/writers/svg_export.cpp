@@ -163,6 +163,7 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   if (inset) {
     s.screen.push_back(&inset->list);
     s.keepOff.push_back(inset->box);
+    if (!inset->mark.empty()) s.keepOff.push_back(inset->mark);
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, ui, s);

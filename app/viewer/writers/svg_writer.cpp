@@ -473,8 +473,9 @@ std::string sceneSvg(const SvgScene& s) {
     writeLabels(s, out);
   }
   writeNote(s, out, visible, stride);
-  for (const DrawList* l : s.screen) writeScreenList(s, *l, out);
   writeLetterbox(s, out);
+  // over the bars: the cube map's inset may sit beside the figure's room
+  for (const DrawList* l : s.screen) writeScreenList(s, *l, out);
   writeSlideBoxes(s, out);
   if (s.legend) writeLegend(s, out);
   out += "</svg>\n";
