@@ -399,13 +399,15 @@ void writeLegend(const SvgScene& s, std::string& out) {
            legendText(x + m.width(g.title) + m.itemGap, m.baseline(top), g.subtitle, s.textMuted) +
            "\n";
   top = m.next(top, m.h);
-  if (!g.classes.empty()) top = m.next(writeClassRows(s, m, x, top, out), 0.0);
+  // the lines under the first start at the padding floored (ImGui's)
+  const double row = std::floor(x);
+  if (!g.classes.empty()) top = m.next(writeClassRows(s, m, row, top, out), 0.0);
   // a row per mark, its swatch at its first line; a mark's lines as one text's, unspaced
   for (const LegendRow& r : g.rows) {
-    out += "  " + swatchSvg(r, x, top, m.h);
+    out += "  " + swatchSvg(r, row, top, m.h);
     const double first = top;
     for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
-      out += legendText(x + swatchAdvance(r, m.h, m.itemGap), m.baseline(top), t, s.text);
+      out += legendText(row + swatchAdvance(r, m.h, m.itemGap), m.baseline(top), t, s.text);
       top += m.h;
     }
     top = m.next(first, top - first);
