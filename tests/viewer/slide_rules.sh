@@ -5,11 +5,12 @@
 # query's x_T and x apart, the page outside every box bare. The first slide and those named
 # after the lecture (one of each layout: a Steps
 # window, a long legend, 3D figures with and without a query, the dual views) at 1280x720,
-# 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5.
-# usage: slide_rules.sh XVFB_RUN VIEWER PIXELS OUTDIR LECTURE:SLIDES[:whole]...
+# 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5. A lecture
+# exported whole has each slide's SVG, rendered by rsvg-convert, within RMSE 0.05 of its PNG.
+# usage: slide_rules.sh XVFB_RUN VIEWER PIXELS COMPARER OUTDIR LECTURE:SLIDES[:whole]...
 set -euo pipefail
-xvfb=$1 viewer=$2 pixels=$3 out=$4
-shift 4
+xvfb=$1 viewer=$2 pixels=$3 compare=$4 out=$5
+shift 5
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$out"
 mkdir -p "$out"
@@ -27,7 +28,13 @@ for spec in "$@"; do
   lecture=${spec%%:*} keep=${spec#*:} whole=
   if [[ $keep == *:whole ]]; then keep=${keep%:whole} whole=1; fi
   name=$(basename "$lecture" .lecture)
-  if [[ -n $whole ]]; then export_at "$lecture" 1280x720 "$out/$name-720"; fi
+  if [[ -n $whole ]]; then
+    export_at "$lecture" 1280x720 "$out/$name-720"
+    for svg in "$out/$name-720"/slide-*.svg; do
+      rsvg-convert "$svg" -o "$svg.png"
+      "$compare" "$svg.png" "${svg%.svg}.png" --max-rmse 0.05 || status=1
+    done
+  fi
   # the subset as a lecture of its own (shape paths made absolute)
   dir=$(cd "$(dirname "$lecture")" && pwd)
   awk -v keep=" 1 $keep " -v dir="$dir" '

@@ -22,7 +22,7 @@ def count(tag, cls):
 assert count("line", "edge") == edges, ("edge lines", count("line", "edge"), edges)
 assert count("polygon", "cell") > 0, "no cell polygons"
 assert count("text", "label") > 0, "no labels"
-captions = [e.text for e in root.iter(ns + "text") if e.get("class") == "caption"]
+captions = ["".join(e.itertext()) for e in root.iter(ns + "text") if e.get("class") == "caption"]
 assert captions == ["edges & cells <as core reports them>"], captions
 print(f"{path}: well-formed, {edges} edges, {count('polygon', 'cell')} cells, "
       f"{count('text', 'label')} labels")

@@ -98,11 +98,18 @@ TEST(CubeInset, DrawnInItsFrameWithTitleZoomAndLeader) {
   cv::DrawList out;
   cv::drawCubeInset(*inset, cells, cv::paletteFor(cv::Theme::Light), frame, 30.0,
                     glm::dvec2(100.0, 500.0), out);
-  ASSERT_EQ(out.labels.size(), 2u);
+  ASSERT_EQ(out.labels.size(), 3u);
   EXPECT_EQ(out.labels[0].text, cv::cubeInsetTitle(*inset));
   EXPECT_LT(out.labels[0].p.y, frame.lo.y);
   EXPECT_EQ(out.labels[1].text, cv::cubeInsetZoomText(*inset));
   EXPECT_GT(out.labels[1].p.y, frame.hi.y);
+  // the leader's end names the face the title names, beyond the ring from the frame
+  const std::string face(convexloc::kCubeFaceNames[static_cast<std::size_t>(inset->cubeFace)]);
+  EXPECT_EQ(out.labels[2].text, face);
+  EXPECT_NE(out.labels[0].text.find("cube face " + face + " "), std::string::npos);
+  const glm::dvec2 middle = 0.5 * (frame.lo + frame.hi);
+  EXPECT_GT(glm::length(glm::dvec2(out.labels[2].p) - middle),
+            glm::length(glm::dvec2(100.0, 500.0) - middle));
   // every line but the leader and its ring inside the frame; the leader from the frame's
   // edge to the anchor
   std::size_t outside = 0;

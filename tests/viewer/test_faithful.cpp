@@ -289,8 +289,20 @@ TEST(ZoomInset, TheTinyEdgesAreDrawnMagnifiedBesideThePolygon) {
   ASSERT_TRUE(inset);
   EXPECT_GE(inset->exponent, 6);
   const convexloc::Box2 box = poly.bounds();
-  // beside the polygon, not over it, and about half its height
-  EXPECT_LT(inset->frame.hi.x, box.lo.x);
+  // beside the polygon, not over it, at the box's corner next to the tiny edges (on their
+  // side, level with their half), and about half its height
+  const auto centre = [](const convexloc::Box2& b) {
+    return Vec2{0.5 * (b.lo.x + b.hi.x), 0.5 * (b.lo.y + b.hi.y)};
+  };
+  const Vec2 source = centre(inset->source), middle = centre(box), frame = centre(inset->frame);
+  EXPECT_TRUE(inset->frame.hi.x < box.lo.x || inset->frame.lo.x > box.hi.x);
+  EXPECT_EQ(source.x > middle.x, frame.x > middle.x);
+  EXPECT_EQ(source.y > middle.y, frame.y > middle.y);
+  // the leader from the source to the frame's facing side runs off the box's sides (the
+  // polygon's edges here), not along one
+  const glm::dvec3 end = cv::zoomLeaderEnd(*inset);
+  EXPECT_TRUE(end.x == inset->frame.lo.x || end.x == inset->frame.hi.x);
+  EXPECT_GT(std::abs(end.y - source.y), 0.1 * (box.hi.y - box.lo.y));
   const double side = inset->frame.hi.x - inset->frame.lo.x, height = box.hi.y - box.lo.y;
   EXPECT_GT(side, 0.2 * height);
   EXPECT_LE(side, 0.5 * height * (1.0 + 1e-9));
@@ -369,8 +381,20 @@ TEST(ZoomInset, AFarOffsetShowsItsDigits) {
   cv::DrawList out;
   cv::buildStructure2D(m.scene2d, cv::paletteFor(m.settings.theme), m.settings.view2d, out);
   bool drawn = false;
-  for (const cv::Label& l : out.labels) drawn |= l.text == *note;
-  EXPECT_TRUE(drawn);
+  for (const cv::Label& l : out.labels) drawn |= l.text == *note && l.essential;
+  EXPECT_TRUE(drawn);  // and never left out for want of room
+  // an essential label in a list of others wins the one spot there is
+  cv::DrawList crowded;
+  crowded.label({15.0, 8.0, 0.0}, "aaaa", {});
+  crowded.label({15.0, 8.0, 0.0}, "note", {});
+  crowded.labels.back().essential = true;
+  const cv::DrawList* lists[] = {&crowded};
+  const auto placed = cv::layoutSceneLabels(
+      lists, 1, [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; },
+      {{0.0, 0.0}, {30.0, 16.0}},
+      [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); }, 1.0, 400, {});
+  ASSERT_FALSE(placed.empty());
+  EXPECT_EQ(placed.front().label->text, "note");
   // near the origin: none
   EXPECT_FALSE(cv::offsetNote(convexloc::ConvexPolygon(
       convexloc::generatePolygon(convexloc::PolygonKind::Regular, 12, 1))));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,12 @@ std::string checkXml(const std::string& xml, std::map<std::string, int>& counts)
 }
 
 // a scene's SVG as the viewer writes it: its draw lists, a fitted camera, a fixed measure
+// the SVG's text as read: a line's words are tspans, each placed where the window draws it
+std::string withoutTspans(const std::string& svg) {
+  static const std::regex tspan("<tspan x=\"[0-9.]+\">|</tspan>");
+  return std::regex_replace(svg, tspan, "");
+}
+
 std::string svgOf(const cv::Scene2D& scene, cv::DrawList& structure, cv::DrawList& overlay,
                   std::size_t maxPoints = 4000) {
   const cv::Palette& pal = cv::paletteFor(cv::Theme::Light);
@@ -150,7 +157,7 @@ TEST(Svg, WellFormedWithOneCellPolygonPerCellAndOneLinePerEdge) {
 TEST(Svg, TextIsEscaped) {
   cv::Scene2D scene;
   cv::DrawList structure, overlay;
-  const std::string svg = svgOf(scene, structure, overlay);
+  const std::string svg = withoutTspans(svgOf(scene, structure, overlay));
   EXPECT_NE(svg.find("Fig. 3 &lt;polar slabs&gt; &amp; &quot;x_T&quot;"), std::string::npos);
   EXPECT_EQ(svg.find("<polar slabs>"), std::string::npos);
   EXPECT_EQ(cv::xmlEscape("a<b&c>'\""), "a&lt;b&amp;c&gt;&apos;&quot;");
@@ -279,9 +286,9 @@ TEST(Svg, TheSlideLayoutsBoxesAreWrittenWithEveryLine) {
   m.font = 14.0;
   m.measure = s.measure;
   s.layout = cv::layoutSlide(c, m);
-  const std::string svg = cv::sceneSvg(s);
+  const std::string svg = withoutTspans(cv::sceneSvg(s));
   std::map<std::string, int> counts;
-  ASSERT_EQ(checkXml(svg, counts), "");
+  ASSERT_EQ(checkXml(cv::sceneSvg(s), counts), "");
   const std::vector<std::string>& lines = s.layout.caption.lines;
   ASSERT_GT(lines.size(), 2u);
   std::string joined;
@@ -314,4 +321,47 @@ TEST(Svg, TheLegendIsWrittenWithItsRows) {
   EXPECT_NE(svg.find("<g id=\"legend\""), std::string::npos);
   EXPECT_NE(svg.find(">octant lines through x_T</text>"), std::string::npos);
   EXPECT_NE(svg.find(">inside</text>"), std::string::npos);
+}
+
+// ImGui draws a line from its top left floored, the baseline its ascent below (0.928 em,
+// floored up a pixel), each glyph at the advance before it: the SVG gives the baseline and
+// places each word (a hyphened word's parts) there, so that its reader's spacing cannot drift
+TEST(Svg, TextIsPlacedWhereTheWindowDrawsIt) {
+  cv::SvgScene s;
+  s.size = {800.0, 600.0};
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
+  s.measure = [](std::string_view t) { return glm::dvec2(7.0 * t.size(), 14.0); };
+  s.fontPixels = 12.0;  // the ascent: floor(11.1 + 1) = 12
+  s.layout.caption.lines = {"ab cd-ef"};
+  s.layout.caption.box = {{100.5, 500.0}, {700.0, 580.0}};
+  s.layout.caption.padding = 10.0;
+  const std::string svg = cv::sceneSvg(s);
+  EXPECT_NE(svg.find("y=\"522.00\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<tspan x=\"110.00\">ab</tspan> <tspan x=\"131.00\">cd-</tspan>"
+                     "<tspan x=\"152.00\">ef</tspan>"),
+            std::string::npos)
+      << svg;
+  EXPECT_EQ(svg.find("dominant-baseline"), std::string::npos);
+}
+
+// a near-boundary spray hugs the edges: its points are written over the lines (as the window
+// draws them), where the lines would hide them; otherwise only the boundary points are
+TEST(Svg, PointsHuggingTheEdgesAreWrittenOverTheLines) {
+  cv::SvgScene s;
+  s.size = {100.0, 100.0};
+  s.project = [](glm::dvec3 p) -> std::optional<glm::dvec3> { return p; };
+  cv::DrawList lines;
+  lines.segment({10.0, 50.0, 0.0}, {90.0, 50.0, 0.0}, {}, 3.0f);
+  s.base = {&lines};
+  const std::vector<convexloc::Location> classes = {convexloc::Location::Inside};
+  s.points.points = {{50.0, 50.0, 0.0}};
+  s.points.classes = classes;
+  for (const bool over : {false, true}) {
+    s.points.overLines = over;
+    const std::string svg = cv::sceneSvg(s);
+    const std::size_t line = svg.find("<line x1=\"10.00\""), point = svg.find("<circle");
+    ASSERT_NE(line, std::string::npos);
+    ASSERT_NE(point, std::string::npos);
+    EXPECT_EQ(point > line, over);
+  }
 }

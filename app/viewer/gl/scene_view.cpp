@@ -5,12 +5,12 @@
 #include <chrono>
 #include <cmath>
 
-#include "logic/teach/build_anim.hpp"
-#include "logic/dual/dual_view2d.hpp"
-#include "logic/dual/dual_view3d.hpp"
 #include "logic/draw/snap_indicator.hpp"
 #include "logic/draw/structure2d.hpp"
 #include "logic/draw/structure3d.hpp"
+#include "logic/dual/dual_view2d.hpp"
+#include "logic/dual/dual_view3d.hpp"
+#include "logic/teach/build_anim.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -348,11 +348,13 @@ void SceneView::drawBaseLayers(Model& model, Renderer& renderer, const FramePara
   FrameParams f = base;
   if (model.dim == Dim::Two) {
     // points over the cells' tints, under the lines and edges; boundary points over those
+    // (all of them where they hug the edges)
+    const bool over = pointsOverLines(model);
     const auto flat = [&](Layer layer, const FrameParams& g) {
       renderer.drawFills(layer, g);
-      renderer.drawPoints(g, PointRange::AllButBoundary);
+      if (!over) renderer.drawPoints(g, PointRange::AllButBoundary);
       renderer.drawSegments(layer, g);
-      renderer.drawPoints(g, PointRange::Boundary);
+      renderer.drawPoints(g, over ? PointRange::All : PointRange::Boundary);
       renderer.drawMarkers(layer, g);
     };
     if (!splitShown(model)) return flat(Layer::Structure, f);

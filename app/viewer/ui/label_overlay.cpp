@@ -106,6 +106,11 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
   std::optional<glm::dvec2> anchor;
   if (const auto a = project(cubeInsetAnchor(*inset, cells))) anchor = glm::dvec2(*a);
   drawCubeInset(*inset, cells, paletteFor(model.settings.theme), *frame, room, anchor, out.list);
+  if (anchor) {  // the scene's labels keep off the ring and the name by it
+    const Label& name = out.list.labels.back();
+    const glm::dvec2 at(name.p), half = 0.5 * measureText(name.text) + glm::dvec2(2.0);
+    out.mark = {glm::min(*anchor - 10.0, at - half), glm::max(*anchor + 10.0, at + half)};
+  }
   // lines as wide as the scene's are drawn
   for (Segment& g : out.list.segments) g.width *= static_cast<float>(model.settings.drawScale());
   return out;
@@ -148,6 +153,7 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   if (const auto inset = cubeInsetOver(model, ui)) {
     paintScreenList(inset->list, dl, paletteFor(model.settings.theme));
     windows.push_back(inset->box);
+    if (!inset->mark.empty()) windows.push_back(inset->mark);
   }
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();

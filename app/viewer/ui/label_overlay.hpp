@@ -24,6 +24,7 @@ std::vector<PixelBox> labelKeepOffs(const UiState& ui);
 struct ScreenInset {
   DrawList list;
   PixelBox box;
+  PixelBox mark;  // the leader's ring and the face's name there (empty: no leader)
 };
 std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui);
 

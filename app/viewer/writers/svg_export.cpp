@@ -1,6 +1,8 @@
 // convexloc-viewer — the SVG export's glue: draw lists, camera and font to writers/svg_writer.
 #include "writers/svg_export.hpp"
 
+#include <cfloat>
+
 #include <imgui.h>
 
 #include "logic/app/legend.hpp"
@@ -26,6 +28,7 @@ void sprayOf(const Scene& scene, const Model& model, const SceneView& view, SvgS
   }
   s.points.classes = scene.classes();
   s.points.visibleMask = model.settings.visibleMask;
+  s.points.overLines = pointsOverLines(model);
   s.points.size = view.pointSize();
   s.points.colours[0] = pal.inside;
   s.points.colours[1] = pal.boundary;
@@ -87,6 +90,9 @@ void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
   const SlideMetrics m = windowMetrics();
   s.layoutPadding = m.padding;
   s.layoutSpacing = m.spacing;
+  s.itemSpacingX = ImGui::GetStyle().ItemSpacing.x;
+  s.windowPaddingY = ImGui::GetStyle().WindowPadding.y;
+  s.cellPadding = {ImGui::GetStyle().CellPadding.x, ImGui::GetStyle().CellPadding.y};
   s.highlight = pal.hoverEdge;
   // the Why O(1) window, its plots as the window draws them
   const UiState::WhyPlots& why = ui.whyPlots;
@@ -127,6 +133,11 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   // 1.164 em high, so the SVG's text takes the window's width at this size
   s.fontPixels = ImGui::GetFontSize() / 1.164;
   s.measure = measureText;
+  s.advance = [](std::string_view t) {
+    const ImVec2 v = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, t.data(),
+                                                     t.data() + t.size());
+    return glm::dvec2(v.x, v.y);
+  };
   s.project = sceneProjection(model);
   s.figureRoom = figureRoomOf(model, ui);
   const ScreenRect area =
@@ -152,6 +163,7 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
   if (inset) {
     s.screen.push_back(&inset->list);
     s.keepOff.push_back(inset->box);
+    if (!inset->mark.empty()) s.keepOff.push_back(inset->mark);
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, ui, s);

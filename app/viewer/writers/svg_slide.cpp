@@ -57,9 +57,10 @@ std::string rectSvg(const ScreenRect& r, Rgba fill, double rounding = 0.0) {
 std::string lineSvg(double x, double top, double scale, const std::string& text, Rgba colour,
                     const SvgScene& s, const char* cls = "line") {
   const double em = scale * s.fontPixels;
-  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(x) + "\" y=\"" +
-         num(top + 0.928 * em) + "\" font-size=\"" + num(em) + "\" xml:space=\"preserve\"" +
-         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+  const glm::dvec2 at = imguiBaseline({x, top}, s.fontPixels, scale);
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(at.x) + "\" y=\"" + num(at.y) +
+         "\" font-size=\"" + num(em) + "\" xml:space=\"preserve\"" + paint("fill", colour) + ">" +
+         wordsSvg(at.x, scale, text, s) + "</text>";
 }
 
 // a text box of the layout: its box, then its lines (the first `large` at its scale, the
@@ -134,6 +135,26 @@ void writeSteps(const SvgScene& s, const StepsLayout& l, std::string& out) {
 
 }  // namespace
 
+std::string wordsSvg(double x, double scale, const std::string& text, const SvgScene& s) {
+  if (text.find_first_of(" -") == std::string::npos) return xmlEscape(text);
+  std::string out;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    const std::size_t hyphen = text.find('-', start);
+    const std::size_t end = hyphen < space ? hyphen + 1 : space;
+    if (end > start) {
+      const std::string_view before(text.data(), start);
+      const double dx = start == 0 ? 0.0 : (s.advance ? s.advance : s.measure)(before).x;
+      out += "<tspan x=\"" + num(x + scale * dx) + "\">" +
+             xmlEscape(std::string_view(text).substr(start, end - start)) + "</tspan>";
+    }
+    if (end == space && end < text.size()) out += " ";
+    start = end == space ? end + 1 : end;
+  }
+  return out;
+}
+
 void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) {
   out += "<g class=\"inset\" stroke-linecap=\"butt\">\n";
   const auto pt = [](glm::dvec3 p) { return num(p.x) + "," + num(p.y); };
@@ -147,12 +168,15 @@ void writeScreenList(const SvgScene& s, const DrawList& list, std::string& out) 
     if (g.dash > 0.0f) out += " stroke-dasharray=\"" + num(g.dash) + "\"";
     out += "/>\n";
   }
-  for (const Label& l : list.labels)
-    out += "  <text x=\"" + num(l.p.x) + "\" y=\"" + num(l.p.y) +
+  for (const Label& l : list.labels) {
+    // centred on its point as the window centres it: its box's top left rounded
+    const glm::dvec2 at =
+        imguiBaseline(glm::round(glm::dvec2(l.p) - 0.5 * s.measure(l.text)), s.fontPixels);
+    out += "  <text x=\"" + num(at.x) + "\" y=\"" + num(at.y) +
            "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(s.fontPixels) +
-           "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
-           paint("fill", readableOn(l.colour, s.background, s.text)) + ">" + xmlEscape(l.text) +
-           "</text>\n";
+           "\"" + paint("fill", readableOn(l.colour, s.background, s.text)) + ">" +
+           xmlEscape(l.text) + "</text>\n";
+  }
   out += "</g>\n";
 }
 

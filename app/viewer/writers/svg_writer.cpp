@@ -184,7 +184,7 @@ std::size_t addPoints(const SvgScene& s, Parts& parts, std::size_t& visible) {
     std::string e = "<circle cx=\"" + num(p->x) + "\" cy=\"" + num(p->y) + "\" r=\"" + num(r) +
                     "\"" + paint("fill", sp.colours[c]);
     if (boundary) e += paint("stroke", sp.rim) + " stroke-width=\"1\"";
-    (boundary ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
+    (boundary || sp.overLines ? parts.highPoints : parts.lowPoints).push_back({p->z, e + "/>"});
   }
   return stride;
 }
@@ -246,10 +246,13 @@ void writeOutlines(const SvgScene& s, std::string& out) {
   out += "</g>\n";
 }
 
-// `text` centred at `c`, with a halo of the background behind it
-std::string textSvg(glm::dvec2 c, std::string_view text, Rgba colour, const char* cls = "label") {
-  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(c.x) + "\" y=\"" + num(c.y) + "\"" +
-         paint("fill", colour) + ">" + xmlEscape(text) + "</text>";
+// `text` centred at `c` as the window centres it (its box's top left rounded), with a halo of
+// the background behind it
+std::string textSvg(const SvgScene& s, glm::dvec2 c, std::string_view text, Rgba colour,
+                    const char* cls = "label") {
+  const glm::dvec2 at = imguiBaseline(glm::round(c - 0.5 * s.measure(text)), s.fontPixels);
+  return "<text class=\"" + std::string(cls) + "\" x=\"" + num(at.x) + "\" y=\"" + num(at.y) +
+         "\"" + paint("fill", colour) + ">" + wordsSvg(at.x, 1.0, std::string(text), s) + "</text>";
 }
 
 void writeLabels(const SvgScene& s, std::string& out) {
@@ -260,18 +263,17 @@ void writeLabels(const SvgScene& s, std::string& out) {
                         s.labelArea.empty() ? PixelBox{{0.0, 0.0}, s.size} : s.labelArea, s.measure,
                         s.scale, 400, s.keepOff);
   out += "<g id=\"labels\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
-         num(s.fontPixels) + "\" text-anchor=\"middle\" dominant-baseline=\"central\"" +
-         paint("stroke", withAlpha(s.background, 0.85f)) +
+         num(s.fontPixels) + "\"" + paint("stroke", withAlpha(s.background, 0.85f)) +
          " stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
   for (const PlacedSceneLabel& p : placed) {
     if (p.place.leader)
       out += "  <line x1=\"" + num(p.anchor.x) + "\" y1=\"" + num(p.anchor.y) + "\" x2=\"" +
              num(p.place.centre.x) + "\" y2=\"" + num(p.place.centre.y) + "\"" +
              paint("stroke", withAlpha(p.label->colour, 0.6f)) + " stroke-width=\"1\"/>\n";
-    out +=
-        "  " +
-        textSvg(p.place.centre, p.label->text, readableOn(p.label->colour, s.background, s.text)) +
-        "\n";
+    out += "  " +
+           textSvg(s, p.place.centre, p.label->text,
+                   readableOn(p.label->colour, s.background, s.text)) +
+           "\n";
   }
   out += "</g>\n";
 }
@@ -286,31 +288,39 @@ void writeNote(const SvgScene& s, std::string& out, std::size_t visible, std::si
          "\"" + paint("fill", withAlpha(s.text, 0.75f)) + ">" + xmlEscape(note) + "</text>\n";
 }
 
-// a legend row's swatch, `h` high, its left edge at x and its middle at y
-std::string swatchSvg(const LegendRow& r, double x, double y, double h) {
-  const double w = 0.7 * h;
+// a legend row's swatch where the window draws it: in a row `h` high (the text's line) whose
+// top left is (x, top)
+std::string swatchSvg(const LegendRow& r, double x, double top, double h) {
+  const double w = 0.7 * h, y = top + 0.5 * h, radius = 0.27 * h;
+  auto line = [&](double x0, double x1) {
+    return "<line x1=\"" + num(x0) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x1) + "\" y2=\"" +
+           num(y) + "\"" + paint("stroke", r.colour) + " stroke-width=\"" + num(r.width) + "\"/>";
+  };
   switch (r.swatch) {
-    case Swatch::Disc:
-      return "<circle cx=\"" + num(x + 0.3 * h) + "\" cy=\"" + num(y) + "\" r=\"" + num(0.27 * h) +
-             "\"" + paint("fill", r.colour) + paint("stroke", r.edge) + " stroke-width=\"1\"/>";
+    case Swatch::Disc:  // a rim a pixel wide round the disc
+      return "<circle cx=\"" + num(x + radius + 1.0) + "\" cy=\"" + num(y) + "\" r=\"" +
+             num(radius + 0.5) + "\"" + paint("fill", r.colour) + paint("stroke", r.edge) +
+             " stroke-width=\"1\"/>";
     case Swatch::Box:
-      return "<rect x=\"" + num(x) + "\" y=\"" + num(y - 0.35 * h) + "\" width=\"" + num(w) +
-             "\" height=\"" + num(0.7 * h) + "\"" + paint("fill", r.colour) +
+      return "<rect x=\"" + num(x + 1.5) + "\" y=\"" + num(top + 0.15 * h + 0.5) + "\" width=\"" +
+             num(w - 1.0) + "\" height=\"" + num(0.7 * h - 1.0) + "\"" + paint("fill", r.colour) +
              paint("stroke", r.edge) + " stroke-width=\"1\"/>";
-    case Swatch::Line:
-    case Swatch::DashedLine: break;
+    case Swatch::Line: return line(x + 1.0, x + w + 1.0);
+    case Swatch::DashedLine: return line(x + 1.0, x + 0.3 * w) + line(x + 0.6 * w, x + w + 1.0);
   }
-  std::string e = "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + w) +
-                  "\" y2=\"" + num(y) + "\"" + paint("stroke", r.colour) + " stroke-width=\"" +
-                  num(r.width) + "\"";
-  if (r.swatch == Swatch::DashedLine) e += " stroke-dasharray=\"" + num(0.3 * w) + "\"";
-  return e + "/>";
+  return "";
+}
+
+// from a swatch's left to its row's text: the swatch, its margin and the window's item gap
+double swatchAdvance(const LegendRow& r, double h, double gap) {
+  return (r.swatch == Swatch::Disc ? 0.54 * h : 0.7 * h) + 4.0 + gap;
 }
 
 // `text` with its baseline at (x, y), anchored at its start or end
 std::string legendText(double x, double y, std::string_view text, Rgba c, bool end = false) {
-  return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" xml:space=\"preserve\"" +
-         paint("fill", c) + (end ? " text-anchor=\"end\"" : "") + ">" + xmlEscape(text) + "</text>";
+  return "<text x=\"" + num(end ? x : std::floor(x)) + "\" y=\"" + num(y) +
+         "\" xml:space=\"preserve\"" + paint("fill", c) + (end ? " text-anchor=\"end\"" : "") +
+         ">" + xmlEscape(text) + "</text>";
 }
 
 // the legend box's paint: the window's own (its panel colour at the legend's 0.82, no
@@ -321,54 +331,86 @@ std::string legendBoxPaint(const SvgScene& s) {
          " stroke-width=\"1\"";
 }
 
+// the legend's metrics as the window lays it out (ImGui: a line is `h` high, lines
+// `gap` apart; the class rows a table whose rows have `cell` padding above and below, its
+// columns `2 cell.x` apart)
+struct LegendMetrics {
+  double k, f, h, gap, itemGap, pad, padY;
+  glm::dvec2 cell;
+  MeasureText measure;
+  double width(const std::string& t) const { return t.empty() ? 0.0 : measure(t).x; }
+  // the next line's top after an item `high` from `top` (ImGui floors it to a pixel)
+  double next(double top, double high) const { return std::floor(top + high + gap); }
+  double em;  // the window's font, before its scale k
+  // a line's baseline from its top, as the window draws it
+  double baseline(double top) const { return imguiBaseline({0.0, top}, em, k).y; }
+};
+
+// the class rows from `top` as the window's table: disc and name, count right-aligned, share
+double writeClassRows(const SvgScene& s, const LegendMetrics& m, double x, double top,
+                      std::string& out) {
+  const Legend& g = *s.legend;
+  double first = 0.0, count = 0.0;
+  for (const LegendRow& r : g.classes) {
+    first = std::max(first, swatchAdvance(r, m.h, m.itemGap) + m.width(r.text));
+    count = std::max(count, m.width(r.count));
+  }
+  const double countEnd = x + first + 2.0 * m.cell.x + count;
+  for (const LegendRow& r : g.classes) {
+    const double t = top + m.cell.y, y = m.baseline(t);
+    out += "  " + swatchSvg(r, x, t, m.h) +
+           legendText(x + swatchAdvance(r, m.h, m.itemGap), y, r.text, s.text);
+    if (!r.count.empty())
+      out += legendText(countEnd, y, r.count, s.text, true) +
+             legendText(countEnd + 2.0 * m.cell.x, y, r.share, s.textMuted);
+    out += "\n";
+    top += m.h + 2.0 * m.cell.y;
+  }
+  return top;
+}
+
 // the legend as the window shows it: title, class rows in columns, a row per mark
 void writeLegend(const SvgScene& s, std::string& out) {
   const Legend& g = *s.legend;
-  // the window's rows: a body line and a spacing each, inside its padding
-  const double k = s.legendScale, f = k * s.fontPixels;
-  const double line = 1.164 * f + k * s.layoutSpacing, pad = k * s.layoutPadding;
-  const double sw = 0.7 * f + 0.5 * f;
-  auto width = [&](const std::string& t) { return t.empty() ? 0.0 : k * s.measure(t).x; };
-  double name = 0.0, count = 0.0;
-  for (const LegendRow& r : g.classes) {
-    name = std::max(name, width(r.text));
-    count = std::max(count, width(r.count));
-  }
-  const MeasureText measure = [&](std::string_view t) { return k * s.measure(t); };
-  const glm::dvec2 box = legendBoxSize(g, measure, 1.164 * f, pad, k * s.layoutSpacing);
+  const double k = s.legendScale;
+  LegendMetrics m{k,
+                  k * s.fontPixels,
+                  1.164 * k * s.fontPixels,
+                  k * s.layoutSpacing,
+                  k * s.itemSpacingX,
+                  k * s.layoutPadding,
+                  k * s.windowPaddingY,
+                  s.cellPadding,
+                  [&](std::string_view t) { return k * s.measure(t); },
+                  s.fontPixels};
+  const glm::dvec2 box = legendBoxSize(g, m.measure, m.h, m.pad, m.gap);
   double w = box.x, h = box.y;
   if (s.legendSize.x > 0.0) w = s.legendSize.x, h = s.legendSize.y;  // the window's own box
   const glm::dvec2 lo = s.legendCorner - glm::dvec2(w, h);
-  out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" + num(f) +
-         "\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) + "\" width=\"" + num(w) +
-         "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * f) + "\"" + legendBoxPaint(s) + "/>\n";
-  double y = lo.y + pad + 0.5 * line;
-  // from a row's middle to its text's baseline (DejaVu Sans: ascent 0.928 em of 1.164)
-  const double shift = 0.346 * f;
-  const double x = lo.x + pad;
-  out += "  " + legendText(x, y + shift, g.title, s.text) + "\n";
+  out += "<g id=\"legend\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\"" +
+         num(m.f) + "\">\n  <rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y) + "\" width=\"" +
+         num(w) + "\" height=\"" + num(h) + "\" rx=\"" + num(0.4 * m.f) + "\"" + legendBoxPaint(s) +
+         "/>\n";
+  const double x = lo.x + m.pad;
+  double top = lo.y + m.padY;
+  out += "  " + legendText(x, m.baseline(top), g.title, s.text) + "\n";
   if (!g.subtitle.empty())
-    out +=
-        "  " + legendText(x + width(g.title) + 0.4 * f, y + shift, g.subtitle, s.textMuted) + "\n";
-  for (const LegendRow& r : g.classes) {
-    y += line;
-    out += "  " + swatchSvg(r, x, y, f) + legendText(x + sw, y + shift, r.text, s.text);
-    if (!r.count.empty())
-      out += legendText(x + sw + name + 0.8 * f + count, y + shift, r.count, s.text, true) +
-             legendText(x + sw + name + 1.4 * f + count, y + shift, r.share, s.textMuted);
-    out += "\n";
-  }
-  // the marks under the classes, a spacing apart; a mark's lines as one text's, unspaced
-  if (!g.rows.empty() && !g.classes.empty()) y += s.layoutSpacing;
+    out += "  " +
+           legendText(x + m.width(g.title) + m.itemGap, m.baseline(top), g.subtitle, s.textMuted) +
+           "\n";
+  top = m.next(top, m.h);
+  // the lines under the first start at the padding floored (ImGui's)
+  const double row = std::floor(x);
+  if (!g.classes.empty()) top = m.next(writeClassRows(s, m, row, top, out), 0.0);
+  // a row per mark, its swatch at its first line; a mark's lines as one text's, unspaced
   for (const LegendRow& r : g.rows) {
-    y += line;
-    out += "  " + swatchSvg(r, x, y, f);
-    bool first = true;
+    out += "  " + swatchSvg(r, row, top, m.h);
+    const double first = top;
     for (const std::string& t : breakAtSpaces(r.text, 1e300, s.measure)) {
-      if (!first) y += 1.164 * f;
-      first = false;
-      out += legendText(x + sw, y + shift, t, s.text);
+      out += legendText(row + swatchAdvance(r, m.h, m.itemGap), m.baseline(top), t, s.text);
+      top += m.h;
     }
+    top = m.next(first, top - first);
     out += "\n";
   }
   out += "</g>\n";
@@ -433,8 +475,9 @@ std::string sceneSvg(const SvgScene& s) {
     writeLabels(s, out);
   }
   writeNote(s, out, visible, stride);
-  for (const DrawList* l : s.screen) writeScreenList(s, *l, out);
   writeLetterbox(s, out);
+  // over the bars: the cube map's inset may sit beside the figure's room
+  for (const DrawList* l : s.screen) writeScreenList(s, *l, out);
   writeSlideBoxes(s, out);
   if (s.legend) writeLegend(s, out);
   out += "</svg>\n";

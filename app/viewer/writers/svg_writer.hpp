@@ -33,6 +33,7 @@ struct SvgPoints {
   float size = 4.0f;          // diameter in window pixels; boundary points 1.7 times it
   Rgba colours[3];            // inside, boundary, outside
   Rgba rim;                   // the boundary points' rim
+  bool overLines = false;     // 2D: all drawn over the lines (a near-boundary spray's)
 };
 
 // the split view: the right half's projection and draw lists over the same points, each
@@ -54,11 +55,12 @@ struct SvgScene {
   bool depthSorted = false;  // 3D: fills, segments and points back to front
   std::optional<glm::dvec3> eye;  // 3D: the headlight, for lit faces
   ScreenProjection project;
-  MeasureText measure;                   // a label's size in pixels at fontPixels
+  MeasureText measure;  // a label's size in pixels at fontPixels
+  MeasureText advance;  // a text's advance unrounded (the next glyph's place); empty: measure
   std::vector<const DrawList*> base;     // drawn first (the renderer's cached layers)
   std::vector<const DrawList*> overlay;  // drawn over everything
   SvgPoints points;
-  std::size_t maxPoints = 4000;
+  std::size_t maxPoints = 10000;  // a spray past it is thinned (a slide's is written whole)
   std::optional<SvgSplit> split;  // 2D: the split view's second half
   // core's cells and the shape's edges, as selectable outlines (drawn neither filled nor
   // stroked: the picture itself comes from the draw lists)
@@ -72,6 +74,9 @@ struct SvgScene {
   Rgba panel;             // the boxes' fill (the window's)
   double rounding = 6.0;
   double layoutPadding = 12.0, layoutSpacing = 6.0;  // the layout's metrics (SlideMetrics)
+  double itemSpacingX = 8.0;         // the window's gap between two items on a line (ImGui's)
+  double windowPaddingY = 10.0;      // the window's padding above its first line (ImGui's)
+  glm::dvec2 cellPadding{4.0, 2.0};  // a table cell's padding (ImGui's): the class rows' gaps
   // the Steps window's colours: each step's line, the current step's highlight and line
   std::vector<Rgba> stepColours;
   Rgba highlight;

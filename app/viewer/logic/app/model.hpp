@@ -185,4 +185,10 @@ class Model {
 // world to window pixels (and depth, in 3D) by the camera of the scene shown
 ScreenProjection sceneProjection(const Model& model);
 
+// 2D: a near-boundary spray's points hug the edges, so all are drawn over the lines (which
+// would hide them), not only the boundary ones
+inline bool pointsOverLines(const Model& model) {
+  return model.dim == Dim::Two && model.scene2d.spraySettings().nearBoundary;
+}
+
 }  // namespace convexloc::viewer

@@ -45,6 +45,7 @@ struct Label {
   std::string text;
   Rgba colour;
   glm::vec2 offset{0.0f};
+  bool essential = false;  // shown even where it must move off its spot (a leader to it)
 };
 
 struct DrawList {

@@ -188,6 +188,13 @@ void drawCubeInset(const CubeInset& inset, std::span<const Cell3D> cells, const 
     out.segment(a + 8.0 * glm::dvec3(std::cos(u), std::sin(u), 0.0),
                 a + 8.0 * glm::dvec3(std::cos(v), std::sin(v), 0.0), pal.text, 1.5f);
   }
+  // the face the inset shows named at the ring, beyond it from the frame: the scene's face
+  // names are drawn through the see-through cube, a far face's over the near one's corner
+  const glm::dvec2 away = *anchor - from;
+  const double length = glm::length(away);
+  const glm::dvec2 dir = length > 0.0 ? away / length : glm::dvec2(0.0, -1.0);
+  out.label(glm::dvec3(*anchor + 0.75 * textRoom * dir, 0.0),
+            std::string(kCubeFaceNames[static_cast<std::size_t>(inset.cubeFace)]), pal.text);
 }
 
 }  // namespace convexloc::viewer

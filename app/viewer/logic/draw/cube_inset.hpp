@@ -59,7 +59,8 @@ std::optional<PixelBox> placeCubeInset(PixelBox area, std::span<const glm::dvec2
 // The inset in window pixels (points (x, y, 0), t upward): the frame's background and
 // border, the cells meeting the patch tinted by the faces they list and outlined, the title
 // centred `textRoom` / 2 over the frame, the zoom as far under it (labels at their text's
-// middle), and a dashed leader from the frame to `anchor` (the patch on screen) when given.
+// middle), and a dashed leader from the frame to `anchor` (the patch on screen) when given,
+// ringed there and the face named beyond the ring (the last label).
 void drawCubeInset(const CubeInset& inset, std::span<const Cell3D> cells, const Palette& palette,
                    PixelBox frame, double textRoom, std::optional<glm::dvec2> anchor,
                    DrawList& out);

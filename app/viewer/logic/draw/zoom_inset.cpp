@@ -75,11 +75,18 @@ std::optional<ZoomInset> tinyEdgesInset(const ConvexPolygon& polygon) {
   const Vec2 mid{0.5 * (tiny.lo.x + tiny.hi.x), 0.5 * (tiny.lo.y + tiny.hi.y)};
   inset.source = {{mid.x - 0.5 * side, mid.y - 0.5 * side},
                   {mid.x + 0.5 * side, mid.y + 0.5 * side}};
-  const double frame = side * inset.magnification;
-  const double right = box.lo.x - kFrameGap * height;
-  const double top = box.hi.y;
-  inset.frame = {{right - frame, top - frame}, {right, top}};
+  // at the box's corner next to the tiny edges, outside the box on their side
+  const double frame = side * inset.magnification, gap = kFrameGap * height;
+  const double x = mid.x > 0.5 * (box.lo.x + box.hi.x) ? box.hi.x + gap : box.lo.x - gap - frame;
+  const double y = mid.y > 0.5 * (box.lo.y + box.hi.y) ? box.hi.y - frame : box.lo.y;
+  inset.frame = {{x, y}, {x + frame, y + frame}};
   return inset;
+}
+
+glm::dvec3 zoomLeaderEnd(const ZoomInset& inset) {
+  const Box2& f = inset.frame;
+  const double cx = 0.5 * (inset.source.lo.x + inset.source.hi.x);
+  return {cx < f.lo.x ? f.lo.x : f.hi.x, 0.5 * (f.lo.y + f.hi.y), 0.0};
 }
 
 std::string magnificationText(const ZoomInset& inset) {
@@ -114,11 +121,12 @@ void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const P
       const Vec2 v = insetPoint(inset, polygon.vertex(i));
       out.marker({v.x, v.y, 0.0}, pal.polygonEdge, 6.0f, MarkerShape::Disc);
     }
-  // where the inset looks (a few pixels wide at the polygon's scale), and a leader to it
+  // where the inset looks (a few pixels wide at the polygon's scale), and a leader from it to
+  // the middle of the frame's side that faces it (off the polygon's edges)
   const Vec2 s{0.5 * (inset.source.lo.x + inset.source.hi.x),
                0.5 * (inset.source.lo.y + inset.source.hi.y)};
   out.marker({s.x, s.y, 0.0}, pal.textMuted, 18.0f, MarkerShape::Ring);
-  out.segment({s.x, s.y, 0.0}, c11, withAlpha(pal.textMuted, 0.7f), 1.0f, 6.0f);
+  out.segment({s.x, s.y, 0.0}, zoomLeaderEnd(inset), withAlpha(pal.textMuted, 0.7f), 1.25f, 6.0f);
   out.label({0.5 * (f.lo.x + f.hi.x), f.hi.y, 0.0}, "zoom " + magnificationText(inset), pal.text,
             {0.0f, -14.0f});
 }
@@ -140,6 +148,7 @@ void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const
   const Vec2 v = polygon.vertex(0);
   out.marker({v.x, v.y, 0.0}, pal.text, 14.0f, MarkerShape::Ring);
   out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
+  out.labels.back().essential = true;  // the shape's point: never left out for a vertex number
 }
 
 void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, DrawList& out) {

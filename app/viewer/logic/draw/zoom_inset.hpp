@@ -24,8 +24,12 @@ struct ZoomInset {
 
 // The inset for a polygon with edges shorter than 10^-4 of its box's diagonal: the square
 // around every such edge, magnified to about half the box's height (rounded down to 1, 2
-// or 5 times a power of ten); none when every edge is long enough to see.
+// or 5 times a power of ten), its frame beside the box at the corner next to them; none
+// when every edge is long enough to see.
 std::optional<ZoomInset> tinyEdgesInset(const ConvexPolygon& polygon);
+
+// where the leader from the source ends: the middle of the frame's side facing it
+glm::dvec3 zoomLeaderEnd(const ZoomInset& inset);
 
 // "×10^9", "×5·10^8": the magnification as the label writes it
 std::string magnificationText(const ZoomInset& inset);

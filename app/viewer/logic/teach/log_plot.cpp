@@ -157,11 +157,14 @@ void svgPath(std::ostringstream& out, const PlotPath& p) {
         << "/>\n";
 }
 
-void svgText(std::ostringstream& out, const PlotText& t) {
+// `t` where the window draws it: its line (`fontPx` high, DejaVu Sans' ascent 0.797 of it)
+// centred on t.p, the baseline given (SVG readers differ on dominant-baseline)
+void svgText(std::ostringstream& out, const PlotText& t, double fontPx) {
   const char* anchor = t.anchor < 0.25f ? "start" : t.anchor > 0.75f ? "end" : "middle";
-  out << "<text x=\"" << num(t.p.x) << "\" y=\"" << num(t.p.y) << "\" text-anchor=\"" << anchor
-      << "\" dominant-baseline=\"central\" fill=\"" << svgColour(t.colour) << "\""
-      << (t.bold ? " font-weight=\"bold\"" : "") << ">" << xmlEscape(t.text) << "</text>\n";
+  const double baseline = std::round(t.p.y - 0.5 * fontPx) + std::floor(0.797 * fontPx + 1.0);
+  out << "<text x=\"" << num(t.p.x) << "\" y=\"" << num(baseline) << "\" text-anchor=\"" << anchor
+      << "\" fill=\"" << svgColour(t.colour) << "\"" << (t.bold ? " font-weight=\"bold\"" : "")
+      << ">" << xmlEscape(t.text) << "</text>\n";
 }
 
 }  // namespace
@@ -198,15 +201,15 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx) {
   std::ostringstream out;
   out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
-      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" << num(fontPx)
-      << "\">\n";
+      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\""
+      << num(fontPx / 1.164) << "\">\n";
   for (const PlotDrawing& d : drawings) {
     out << "<g>\n";
     for (const PlotPath& p : d.paths) svgPath(out, p);
     for (const PlotMark& m : d.marks)
       out << "<circle cx=\"" << num(m.p.x) << "\" cy=\"" << num(m.p.y) << "\" r=\"" << num(m.radius)
           << "\" fill=\"" << svgColour(m.colour) << "\"/>\n";
-    for (const PlotText& t : d.texts) svgText(out, t);
+    for (const PlotText& t : d.texts) svgText(out, t, fontPx);
     out << "</g>\n";
   }
   out << "</g>\n";

@@ -81,7 +81,8 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
 // a decade's label: 1, 10, 100, 1k .. 1T above one, 0.1 .. 1e-9 below
 std::string decadeText(int exponent);
 
-// `drawings` as one SVG group, their (0, 0) moved to `origin`, their text `fontPx` large
+// `drawings` as one SVG group, their (0, 0) moved to `origin`, their text's line `fontPx`
+// high as the window's (ImGui sizes a font by its line: 1.164 em of DejaVu Sans)
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx);
 
 // a standalone SVG document `size` pixels large holding `drawings`

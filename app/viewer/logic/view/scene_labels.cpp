@@ -16,9 +16,10 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
   std::vector<PixelDisc> markers;
   // essential labels first, so that they win their spots
   for (std::size_t pass = 0; pass < 2; ++pass)
-    for (std::size_t k = 0; k < lists.size(); ++k) {
-      if ((k >= essentialFrom) != (pass == 0)) continue;
+    for (std::size_t k = 0; k < lists.size(); ++k)
       for (const Label& l : lists[k]->labels) {
+        const bool essential = k >= essentialFrom || l.essential;
+        if (essential != (pass == 0)) continue;
         if (shown.size() >= budget) break;
         const std::optional<glm::dvec3> s = project(l.p);
         if (!s) continue;
@@ -29,7 +30,6 @@ std::vector<PlacedSceneLabel> layoutSceneLabels(std::span<const DrawList* const>
         shown.push_back({&l, at, {}});
         requests.push_back({at, glm::dvec2(l.offset), l.text, pass == 0});
       }
-    }
   for (const DrawList* list : lists)
     for (const Marker& m : list->markers)
       if (const std::optional<glm::dvec3> s = project(m.p))
