@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -88,12 +87,29 @@ std::string checkXml(const std::string& xml, std::map<std::string, int>& counts)
   return open.empty() && roots == 1 ? "" : "unclosed elements or no root";
 }
 
-// a scene's SVG as the viewer writes it: its draw lists, a fitted camera, a fixed measure
 // the SVG's text as read: a line's words are tspans, each placed where the window draws it
 std::string withoutTspans(const std::string& svg) {
-  static const std::regex tspan("<tspan x=\"[0-9.]+\">|</tspan>");
-  return std::regex_replace(svg, tspan, "");
+  std::string out;
+  std::size_t at = 0;
+  while (at < svg.size()) {
+    const std::size_t tag = svg.find("tspan", at);
+    if (tag == std::string::npos || tag == 0) break;
+    const bool opening = svg[tag - 1] == '<';
+    const bool closing = tag >= 2 && svg.compare(tag - 2, 2, "</") == 0;
+    const std::size_t end = svg.find('>', tag);
+    if ((!opening && !closing) || end == std::string::npos) {
+      out.append(svg, at, tag + 5 - at);
+      at = tag + 5;
+      continue;
+    }
+    out.append(svg, at, tag - (opening ? 1 : 2) - at);
+    at = end + 1;
+  }
+  out.append(svg, at, std::string::npos);
+  return out;
 }
+
+// a scene's SVG as the viewer writes it: its draw lists, a fitted camera, a fixed measure
 
 std::string svgOf(const cv::Scene2D& scene, cv::DrawList& structure, cv::DrawList& overlay,
                   std::size_t maxPoints = 4000) {
