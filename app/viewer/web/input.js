@@ -59,6 +59,10 @@
     return {x: (a.x + b.x) / 2, y: (a.y + b.y) / 2, d: Math.hypot(a.x - b.x, a.y - b.y)};
   }
 
+  // whether the finger has moved from where it went down by more than a tap may
+  const pastSlop = () =>
+    Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y) > SLOP;
+
   // the first finger: the pointer goes to it at once, the press waits for what it becomes
   function begin(p, ms) {
     Object.assign(touch, {mode: 'pending', start: p, last: p, startMs: ms,
@@ -66,8 +70,7 @@
     mouse('mousemove', p);
     touch.timer = setTimeout(() => {
       // a finger already past the slop is a drag waiting for a frame, however slow the page
-      const moved = Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y);
-      if (touch.mode !== 'pending' || moved > SLOP) return;
+      if (touch.mode !== 'pending' || pastSlop()) return;
       mouse('mousedown', touch.start, 2);
       touch.mode = 'right';
       touch.frame = Module.framesDrawn;
@@ -151,7 +154,7 @@
   // that went past it before the viewer drew a frame, a flick (a swipe, never a click).
   function end(ms) {
     clearTimeout(touch.timer);
-    const flick = Math.hypot(touch.last.x - touch.start.x, touch.last.y - touch.start.y) > SLOP;
+    const flick = pastSlop();
     if (touch.mode === 'pending' && flick) {
       touch.overUi = !!Module.pointerOverUi;
       swipe(touch.last, ms);
