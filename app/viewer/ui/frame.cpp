@@ -193,7 +193,9 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   } else {
     // an open drawer covers the scene: nothing floats over it
     const bool drawerOpen = s.drawer && s.drawerOpen;
-    if (s.showLegend && !drawerOpen) legendOverlay(model, ui, area, window, now);
+    // a plots slide has no scene to explain
+    if (s.showLegend && !drawerOpen && !plotsSlide(model, ui))
+      legendOverlay(model, ui, area, window, now);
     if (s.showUi && !drawerOpen && panelsOf(model).inspectable(model))
       floatingInspector(model, ui, area, window);
   }

@@ -148,6 +148,7 @@ void paintScreenList(const DrawList& list, ImDrawList* dl, const Palette& pal) {
 }
 
 void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
+  if (plotsSlide(model, ui)) return;  // its plots are the figure: no scene under them
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   std::vector<PixelBox> windows = labelKeepOffs(ui);
   if (const auto inset = cubeInsetOver(model, ui)) {

@@ -51,6 +51,10 @@ bool onSlide(const Model& model, const UiState& ui) {
   return ui.show.active() || model.settings.present;
 }
 
+bool plotsSlide(const Model& model, const UiState& ui) {
+  return ui.show.active() && model.whyOpen;
+}
+
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window) {
   if (onSlide(model, ui)) return fitPage(window, model.settings.page);
   return {{{0.0, 0.0}, window}, 1.0};
@@ -85,10 +89,12 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   c.shapeAspect = shapeAspect(model);
   if (onSlide(model, ui)) c.captionRoom = 2;
   c.slide = onSlide(model, ui);
+  if (plotsSlide(model, ui)) c.plots = slidePlotCount();
   return layoutSlide(c, m);
 }
 
 ScreenRect figureRoomOf(const Model& model, const UiState& ui) {
+  if (plotsSlide(model, ui)) return ui.layout.scene;
   if (!onSlide(model, ui) || model.whyOpen) return {};
   return ui.layout.scene;
 }

@@ -14,6 +14,10 @@ namespace convexloc::viewer {
 // a slide is shown: a lecture's, a paper figure's, or the presentation mode's
 bool onSlide(const Model& model, const UiState& ui);
 
+// a lecture's slide showing Why O(1): its plots are the slide's figure, drawn by the slide's
+// layout without the window, its widgets or the scene (the window stays for live use)
+bool plotsSlide(const Model& model, const UiState& ui);
+
 // the page in the window: the slide's fixed page (Settings::page, 1920x1080 unless --page
 // gives another) letterboxed on a slide, else the whole window at scale 1
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window);
@@ -27,8 +31,8 @@ SlideMetrics windowMetrics();
 SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window,
                         bool withSteps = true);
 
-// a slide's figure room, which its scene, labels and insets keep to (empty: not a slide with
-// one, as the split view and Why O(1))
+// a slide's figure room, which its scene, labels, insets or plots keep to (empty: not a slide
+// with one, as the split view and the Why O(1) window in presentation mode)
 ScreenRect figureRoomOf(const Model& model, const UiState& ui);
 
 // the bars beside a letterboxed page, and on a slide around its figure room, in the theme's

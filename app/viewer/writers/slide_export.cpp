@@ -87,7 +87,8 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   const ScreenRect page = pageOf(model, ui, window).page;
   r.page = page.size();
   const SlideLayout& l = ui.layout;
-  const bool plots = model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x;
+  const bool whyWindow = model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x;
+  const bool plots = plotsSlide(model, ui) || whyWindow;
   r.kind = plots ? SlideKind::Plots
                  : (model.dim == Dim::Two ? SlideKind::Figure2D : SlideKind::Figure3D);
   if (!l.title.lines.empty()) r.add("title", l.title.box, page.lo);
@@ -95,12 +96,13 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   r.add("steps", rectOf(ui.stepsRect), page.lo);
   r.add("legend", rectOf(ui.legendRect), page.lo);
   // the room the scene is drawn in (the split view: both halves, their headings at the top)
-  r.add("figure", plots ? ui.whyWindow : l.scene, page.lo);
+  r.add("figure", whyWindow ? ui.whyWindow : l.scene, page.lo);
   if (!plots) r.add("shape", shapeBox(model), page.lo);
   if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
   // the body text (the labels') or a slide's smaller text in its boxes
   r.minTextPx = ImGui::GetFontSize() * std::min(1.0, l.columnScale);
+  // the plots' text (a plots slide's tick labels, legends and line under them)
   if (plots && ui.whyPlots.fontPx > 0.0) r.minTextPx = std::min(r.minTextPx, ui.whyPlots.fontPx);
   r.query3d = query3dOf(model, page.lo);
   return r;

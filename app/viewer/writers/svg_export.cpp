@@ -94,9 +94,20 @@ void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
   s.windowPaddingY = ImGui::GetStyle().WindowPadding.y;
   s.cellPadding = {ImGui::GetStyle().CellPadding.x, ImGui::GetStyle().CellPadding.y};
   s.highlight = pal.hoverEdge;
-  // the Why O(1) window, its plots as the window draws them
+  // the Why O(1) window, its plots as the window draws them; a plots slide's from its layout
   const UiState::WhyPlots& why = ui.whyPlots;
-  if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
+  if (plotsSlide(model, ui) && ui.layout.plots) {
+    const ScalingProgress p = model.scaling->snapshot();
+    const PlotsLayout& l = *ui.layout.plots;
+    const PlotStyle style = slidePlotStyle(model.settings.theme, l.fontPx);
+    s.plotsSvg = svgPlots(
+        slideDrawings(p.result, model.scaling->config(), style, l, model.whySolid, p.error),
+        {0.0, 0.0}, l.fontPx, [px = static_cast<float>(l.fontPx)](std::string_view t) {
+          const ImVec2 v =
+              ImGui::GetFont()->CalcTextSizeA(px, FLT_MAX, 0.0f, t.data(), t.data() + t.size());
+          return glm::dvec2(v.x, v.y);
+        });
+  } else if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
     s.window = ui.whyWindow;
     s.windowTitle = "Why O(1): cost against N";
     const ImVec4 bar = ImGui::GetStyleColorVec4(ImGuiCol_TitleBgActive);

@@ -88,6 +88,9 @@ struct SvgScene {
   Rgba windowBar;
   double windowBarHeight = 0.0;
   std::string windowSvg;
+  // a plots slide's figure (Why O(1) drawn by the slide's layout): written in place of the
+  // scene, its labels and the legend; empty: none
+  std::string plotsSvg;
   // the legend, in a box whose lower right corner is at `legendCorner` (window pixels)
   std::optional<Legend> legend;
   glm::dvec2 legendCorner{0.0};

@@ -214,6 +214,13 @@ class LectureReader {
       if (!problem.empty()) return fail(key + ": " + problem);
       if (key == "shape") words.erase(words.begin());
     }
+    // `why PAGE` opens Why O(1) on that page (`why` alone: the scene's)
+    if (key == "why" && words.size() > 1) {
+      if (words.size() > 2)
+        return fail("'why' takes one page, 2d or 3d ('" + leftOver("why-page", words) +
+                    "' is left over)");
+      words[0] = "--why-page";
+    }
     if (!checkLine(key, words)) return;
     slide.keys.push_back(key);
     slide.keyLines.push_back(line_);

@@ -336,6 +336,7 @@ void Model::reset() {
   ++build.version;
   if (whyOpen) scaling->cancel();
   whyOpen = false;
+  whySolid = false;
   planes3d.setEnabled(false);
   requestFit();
 }
@@ -343,6 +344,7 @@ void Model::reset() {
 // === Why O(1), the split view, the build animation
 
 void Model::applyTeachingViews(const Options& o) {
+  whySolid = o.whyPage.empty() ? dim == Dim::Three : o.whyPage == "3d";
   if (!o.whyFrom.empty()) {
     ScalingResult recorded;
     ScalingConfig config;

@@ -96,6 +96,8 @@ class Model {
 
   // === Why O(1), the split view, the build animation
   bool whyOpen = false;  // the Why O(1) window shows
+  // its page: the geodesic spheres (3D) rather than the N-gons (--why-page, else the scene's)
+  bool whySolid = false;
   // its measurement, in a worker thread (held apart so that the model stays movable)
   std::unique_ptr<ScalingWorker> scaling = std::make_unique<ScalingWorker>();
   SecondView split;     // 2D: a second method beside the current one

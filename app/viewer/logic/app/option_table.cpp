@@ -117,6 +117,20 @@ bool applyMethod(const Values& v, Options& o, std::string& why) {
   return false;
 }
 
+// --why-page P: 2d or 3d, which also opens Why O(1)
+bool applyWhyPage(const Values& v, Options& o, std::string& why) {
+  constexpr std::string_view kPages[] = {"2d", "3d"};
+  if (oneOf(v[0], {kPages[0], kPages[1]})) {
+    o.whyPage = v[0];
+    o.why = true;
+    return true;
+  }
+  const std::string near = nearestWord(v[0], kPages);
+  why = "the Why O(1) page is 2d (regular N-gons) or 3d (geodesic spheres), not '" + v[0] + "'" +
+        (near.empty() ? "" : " (did you mean " + near + "?)");
+  return false;
+}
+
 // --line X1 Y1 X2 Y2: two different points
 bool applyLine(const Values& v, Options& o, std::string& why) {
   double c[4] = {};
@@ -406,6 +420,10 @@ const OptionSpec kOptions[] = {
     {"--why", "", 0, kTeaching,
      "open the Why O(1) window and measure every method on regular N-gons", "", false,
      setFlag<&Options::why>},
+    {"--why-page", "PAGE", 1, kTeaching,
+     "open Why O(1) on its page PAGE: 2d (regular N-gons) or 3d (geodesic spheres); a "
+     "lecture's slide says `why 2d` or `why 3d`",
+     "2d or 3d", false, applyWhyPage},
     {"--why-max", "N", 1, kTeaching, "the largest N measured (8 .. 10^6, default 10^6)",
      "a whole number from 8 to 10^6", false,
      [](const Values& v, Options& o, std::string&) {

@@ -76,12 +76,13 @@ struct Options {
   bool cellAuto = false;                  // 3D: --cell auto (a one-face and a crowded cell)
   std::optional<std::size_t> cellSecond;  // 3D: --cell K,L pins L beside K
   // Why O(1), the split view, the build animation
-  bool why = false;                      // open the Why O(1) window and start measuring
-  std::string whySvg;                    // measure without a window, write this SVG, exit
-  std::size_t whyMost = 1000000;         // the largest N measured
-  std::string whyFrom;                   // Why O(1) from this recorded file, not measured
-  std::string whyRecord;                 // measure without a window, record to this file, exit
-  std::optional<std::string> split;      // 2D: this method beside the current one
+  bool why = false;                  // open the Why O(1) window and start measuring
+  std::string whySvg;                // measure without a window, write this SVG, exit
+  std::size_t whyMost = 1000000;     // the largest N measured
+  std::string whyFrom;               // Why O(1) from this recorded file, not measured
+  std::string whyRecord;             // measure without a window, record to this file, exit
+  std::string whyPage;               // Why O(1)'s page: "2d" or "3d" (empty: the scene's dimension)
+  std::optional<std::string> split;  // 2D: this method beside the current one
   std::optional<std::size_t> buildStep;  // 2D: the build animation at this step
   // a lecture's slide with the panels shown (a table to read); excludes --hide-ui, --present
   bool showUi = false;

@@ -45,41 +45,59 @@ struct Axes {
   }
 };
 
-// at most about `most` labelled decades: every k-th one
+// at most about `most` labelled decades (at least two): every k-th one
 int labelStep(const DecadeRange& r, int most) {
+  most = std::max(most, 2);
   return std::max(1, (r.hi - r.lo + most - 1) / most);
+}
+
+// the widest of an axis' decade labels, in characters
+std::size_t widestLabel(const DecadeRange& r, const std::string& unit) {
+  std::size_t w = 0;
+  for (int e = r.lo; e <= r.hi; ++e) w = std::max(w, decadeText(e).size() + unit.size());
+  return w;
+}
+
+// a line `u` nominal pixels wide
+float widthOf(double u, const PlotStyle& st) {
+  return static_cast<float>(u * st.unit);
 }
 
 void axesAndGrid(const LogPlot& plot, const Axes& a, const PlotStyle& st, PlotDrawing& d) {
   const ScreenRect& b = a.box;
-  d.paths.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}, b.lo}, st.frame, 1.0f});
-  const int xs = labelStep(a.x, 8), ys = labelStep(a.y, 7);
+  const float thin = widthOf(1.0, st);
+  const double tick = 5.0 * st.unit;
+  d.paths.push_back({{b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}, b.lo}, st.frame, thin});
+  // labels a label and a half apart at least: fewer where the axis is short
+  const double xLabel = st.charWidth * static_cast<double>(widestLabel(a.x, plot.xUnit));
+  const int xs = labelStep(a.x, std::min(8, static_cast<int>(b.size().x / (1.5 * xLabel))));
+  const int ys = labelStep(a.y, std::min(7, static_cast<int>(b.size().y / (2.0 * st.fontPx))));
   for (int e = a.x.lo; e <= a.x.hi; ++e) {
     const double x = a.px(std::pow(10.0, e));
-    if (e > a.x.lo && e < a.x.hi) d.paths.push_back({{{x, b.lo.y}, {x, b.hi.y}}, st.grid, 1.0f});
-    d.paths.push_back({{{x, b.hi.y}, {x, b.hi.y + 5.0}}, st.frame, 1.0f});
+    if (e > a.x.lo && e < a.x.hi) d.paths.push_back({{{x, b.lo.y}, {x, b.hi.y}}, st.grid, thin});
+    d.paths.push_back({{{x, b.hi.y}, {x, b.hi.y + tick}}, st.frame, thin});
     if ((e - a.x.lo) % xs == 0)
       d.texts.push_back(
-          {{x, b.hi.y + 5.0 + 0.7 * st.fontPx}, decadeText(e) + plot.xUnit, st.text, 0.5f});
+          {{x, b.hi.y + tick + 0.7 * st.fontPx}, decadeText(e) + plot.xUnit, st.text, 0.5f});
   }
   for (int e = a.y.lo; e <= a.y.hi; ++e) {
     const double y = a.py(std::pow(10.0, e));
-    if (e > a.y.lo && e < a.y.hi) d.paths.push_back({{{b.lo.x, y}, {b.hi.x, y}}, st.grid, 1.0f});
-    d.paths.push_back({{{b.lo.x - 5.0, y}, {b.lo.x, y}}, st.frame, 1.0f});
+    if (e > a.y.lo && e < a.y.hi) d.paths.push_back({{{b.lo.x, y}, {b.hi.x, y}}, st.grid, thin});
+    d.paths.push_back({{{b.lo.x - tick, y}, {b.lo.x, y}}, st.frame, thin});
     if ((e - a.y.lo) % ys == 0)
-      d.texts.push_back({{b.lo.x - 8.0, y}, decadeText(e) + plot.yUnit, st.text, 1.0f});
+      d.texts.push_back({{b.lo.x - 1.6 * tick, y}, decadeText(e) + plot.yUnit, st.text, 1.0f});
   }
   d.texts.push_back(
-      {{b.middle().x, b.hi.y + 5.0 + 1.9 * st.fontPx}, plot.xLabel, st.textMuted, 0.5f});
+      {{b.middle().x, b.hi.y + tick + 1.9 * st.fontPx}, plot.xLabel, st.textMuted, 0.5f});
 }
 
-void seriesPaths(const LogPlot& plot, const Axes& a, PlotDrawing& d) {
+void seriesPaths(const LogPlot& plot, const Axes& a, const PlotStyle& st, PlotDrawing& d) {
   for (const PlotSeries& s : plot.series) {
-    PlotPath path{{}, s.colour, 2.0f, s.dashed, true};
+    PlotPath path{{}, s.colour, widthOf(2.0, st), s.dashed, true};
     for (const glm::dvec2 p : s.points) {
       if (!(p.x > 0.0 && p.y > 0.0)) continue;
       path.points.push_back({a.px(p.x), a.py(p.y)});
-      d.marks.push_back({path.points.back(), s.colour, 3.0f});
+      d.marks.push_back({path.points.back(), s.colour, widthOf(3.0, st)});
     }
     d.paths.push_back(std::move(path));
   }
@@ -96,7 +114,8 @@ LegendFlow flowLegend(const LogPlot& plot, const PlotStyle& st, double width) {
   LegendFlow f;
   glm::dvec2 p{0.0, 0.0};
   for (const PlotSeries& s : plot.series) {
-    const double w = swatch + 8.0 + st.charWidth * static_cast<double>(s.name.size()) + 20.0;
+    const double w = swatch + 0.5 * st.fontPx + st.charWidth * static_cast<double>(s.name.size()) +
+                     1.2 * st.fontPx;
     if (p.x > 0.0 && p.x + w > width) p = {0.0, p.y + line};
     f.at.push_back(p);
     p.x += w;
@@ -114,8 +133,8 @@ void legend(const LogPlot& plot, const LegendFlow& flow, glm::dvec2 o, const Plo
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
     const glm::dvec2 p = o + flow.at[i] + glm::dvec2(0.0, 0.5 * line);
-    d.paths.push_back({{p, p + glm::dvec2(swatch, 0.0)}, s.colour, 2.5f, s.dashed});
-    d.texts.push_back({p + glm::dvec2(swatch + 8.0, 0.0), s.name, st.text, 0.0f});
+    d.paths.push_back({{p, p + glm::dvec2(swatch, 0.0)}, s.colour, widthOf(2.5, st), s.dashed});
+    d.texts.push_back({p + glm::dvec2(swatch + 0.5 * st.fontPx, 0.0), s.name, st.text, 0.0f});
     y = p.y + line;
   }
   for (const std::string& n : plot.notes) {
@@ -157,14 +176,61 @@ void svgPath(std::ostringstream& out, const PlotPath& p) {
         << "/>\n";
 }
 
-// `t` where the window draws it: its line (`fontPx` high, DejaVu Sans' ascent 0.797 of it)
-// centred on t.p, the baseline given (SVG readers differ on dominant-baseline)
+// the baseline of a line `fontPx` high (DejaVu Sans' ascent 0.797 of it) centred on y, as
+// the window puts it (SVG readers differ on dominant-baseline)
+double baselineAt(double y, double fontPx) {
+  return std::round(y - 0.5 * fontPx) + std::floor(0.797 * fontPx + 1.0);
+}
+
+// `t` where the window draws it: its line centred on t.p, anchored as asked
 void svgText(std::ostringstream& out, const PlotText& t, double fontPx) {
   const char* anchor = t.anchor < 0.25f ? "start" : t.anchor > 0.75f ? "end" : "middle";
-  const double baseline = std::round(t.p.y - 0.5 * fontPx) + std::floor(0.797 * fontPx + 1.0);
-  out << "<text x=\"" << num(t.p.x) << "\" y=\"" << num(baseline) << "\" text-anchor=\"" << anchor
-      << "\" fill=\"" << svgColour(t.colour) << "\"" << (t.bold ? " font-weight=\"bold\"" : "")
-      << ">" << xmlEscape(t.text) << "</text>\n";
+  out << "<text x=\"" << num(t.p.x) << "\" y=\"" << num(baselineAt(t.p.y, fontPx))
+      << "\" text-anchor=\"" << anchor << "\" fill=\"" << svgColour(t.colour) << "\""
+      << (t.bold ? " font-weight=\"bold\"" : "") << ">" << xmlEscape(t.text) << "</text>\n";
+}
+
+// `t` from its left edge as the window draws it, each word at its advance
+void svgTextPlaced(std::ostringstream& out, const PlotText& t, double fontPx,
+                   const MeasureText& advance) {
+  const double left = std::round(t.p.x - t.anchor * advance(t.text).x);
+  out << "<text y=\"" << num(baselineAt(t.p.y, fontPx)) << "\" xml:space=\"preserve\" fill=\""
+      << svgColour(t.colour) << "\"" << (t.bold ? " font-weight=\"bold\"" : "") << ">";
+  std::size_t start = 0;
+  const std::string& s = t.text;
+  while (start < s.size()) {
+    const std::size_t end = std::min(s.find(' ', start), s.size());
+    if (end > start)
+      out << "<tspan x=\"" << num(left + advance(std::string_view(s).substr(0, start)).x) << "\">"
+          << xmlEscape(std::string_view(s).substr(start, end - start)) << "</tspan>";
+    start = end + 1;
+  }
+  out << "</text>\n";
+}
+
+// the plots' SVG; their texts placed word by word where `advance` is given
+std::string plotsSvg(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
+                     const MeasureText* advance) {
+  std::ostringstream out;
+  out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
+      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\""
+      << num(fontPx / 1.164) << "\">\n";
+  for (const PlotDrawing& d : drawings) {
+    out << "<g>\n";
+    for (const PlotPath& p : d.paths) svgPath(out, p);
+    for (const PlotMark& m : d.marks)
+      out << "<circle cx=\"" << num(m.p.x) << "\" cy=\"" << num(m.p.y) << "\" r=\"" << num(m.radius)
+          << "\" fill=\"" << svgColour(m.colour) << "\"/>\n";
+    for (const PlotText& t : d.texts) {
+      if (advance)
+        svgTextPlaced(out, t, fontPx, *advance);
+      else
+        svgText(out, t, fontPx);
+    }
+    out << "</g>\n";
+  }
+  out << "</g>\n";
+  return out.str();
 }
 
 }  // namespace
@@ -185,35 +251,28 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   Axes a;
   a.x = decadesOf(plot, false);
   a.y = decadesOf(plot, true);
-  const double left = st.charWidth * 5.0 + 14.0;
+  // room for the widest y label left of the axes
+  const double labels = static_cast<double>(std::max<std::size_t>(widestLabel(a.y, plot.yUnit), 5));
+  const double left = st.charWidth * labels + 14.0 * st.unit;
   const LegendFlow flow = flowLegend(plot, st, rect.size().x - left);
   a.box = {{rect.lo.x + left, rect.lo.y + 2.2 * st.fontPx},
            {rect.hi.x - 0.8 * st.fontPx, rect.hi.y - 3.2 * st.fontPx - flow.height}};
   d.texts.push_back(
-      {{rect.lo.x + 4.0, rect.lo.y + 0.8 * st.fontPx}, plot.title, st.text, 0.0f, true});
+      {{rect.lo.x + 4.0, rect.lo.y + 0.8 * st.fontPx}, plot.title, st.text, 0.0f, st.boldTitle});
   d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.7 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
   axesAndGrid(plot, a, st, d);
-  seriesPaths(plot, a, d);
+  seriesPaths(plot, a, st, d);
   legend(plot, flow, {a.box.lo.x, a.box.hi.y + 2.9 * st.fontPx}, st, d);
   return d;
 }
 
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx) {
-  std::ostringstream out;
-  out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
-      << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\""
-      << num(fontPx / 1.164) << "\">\n";
-  for (const PlotDrawing& d : drawings) {
-    out << "<g>\n";
-    for (const PlotPath& p : d.paths) svgPath(out, p);
-    for (const PlotMark& m : d.marks)
-      out << "<circle cx=\"" << num(m.p.x) << "\" cy=\"" << num(m.p.y) << "\" r=\"" << num(m.radius)
-          << "\" fill=\"" << svgColour(m.colour) << "\"/>\n";
-    for (const PlotText& t : d.texts) svgText(out, t, fontPx);
-    out << "</g>\n";
-  }
-  out << "</g>\n";
-  return out.str();
+  return plotsSvg(drawings, origin, fontPx, nullptr);
+}
+
+std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
+                     const MeasureText& advance) {
+  return plotsSvg(drawings, origin, fontPx, &advance);
 }
 
 std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,

@@ -13,6 +13,7 @@
 
 #include "logic/base/colour.hpp"
 #include "logic/base/screen_rect.hpp"
+#include "logic/base/text_layout.hpp"
 #include "logic/base/xml.hpp"
 
 namespace convexloc::viewer {
@@ -38,6 +39,8 @@ struct PlotStyle {
   Rgba background, frame, grid, text, textMuted;
   double fontPx = 14.0;
   double charWidth = 7.5;  // the width of an average character at fontPx, for the legend box
+  double unit = 1.0;       // line widths, marks and ticks are this many times their pixels
+  bool boldTitle = true;   // the title in bold (a slide's is not: the window has no bold)
 };
 
 // a straight line or a polyline in pixels (y down)
@@ -84,6 +87,13 @@ std::string decadeText(int exponent);
 // `drawings` as one SVG group, their (0, 0) moved to `origin`, their text's line `fontPx`
 // high as the window's (ImGui sizes a font by its line: 1.164 em of DejaVu Sans)
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx);
+
+// svgPlots with each text where the window draws it: its left edge at its point less its
+// anchor's share of its width, rounded as ImGui rounds it, and each word at its advance
+// (`advance`: a text's width at fontPx, the window's font), so that an SVG reader's own
+// glyph spacing drifts no further than a word (a slide's plots, compared with its PNG)
+std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
+                     const MeasureText& advance);
 
 // a standalone SVG document `size` pixels large holding `drawings`
 std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,

@@ -18,6 +18,7 @@
 #include "convexloc/locate3d.hpp"
 #include "logic/base/colour.hpp"
 #include "logic/teach/log_plot.hpp"
+#include "logic/teach/slide_layout.hpp"
 
 namespace convexloc::viewer {
 
@@ -181,8 +182,10 @@ PlotStyle plotStyle(Theme theme, double fontPx);
 LogPlot predicatesPlot3D(const ScalingResult& r, const ScalingConfig& c);
 // nanoseconds per query against F
 LogPlot timePlot3D(const ScalingResult& r, const ScalingConfig& c);
+// bytes of each 3D method's tables against F (the cube map's O(F) memory)
+LogPlot memoryPlot3D(const ScalingResult& r, const ScalingConfig& c);
 // The 2D page (`solid` false: predicates, time, memory, the summary) or the 3D page
-// (predicates, time, the summary) laid out `size` pixels large.
+// (predicates, time, memory, the summary) laid out `size` pixels large.
 std::vector<PlotDrawing> scalingDrawings(const ScalingResult& r, const ScalingConfig& c,
                                          const PlotStyle& style, glm::dvec2 size,
                                          bool solid = false);
@@ -194,5 +197,18 @@ bool writeScalingSvg(const std::string& path, const ScalingResult& r, const Scal
                      Theme theme, std::string& error, bool solid = false);
 // where the 3D page goes beside the 2D one: "x.svg" -> "x-3d.svg"
 std::string solidSvgPath(const std::string& path);
+
+// === On a slide (logic/teach/scaling_slide)
+
+// the plots a slide's page holds side by side: predicates, time and memory
+std::size_t slidePlotCount();
+// a slide's plot style at `fontPx`: lines and marks grown with the text, the title not bold
+PlotStyle slidePlotStyle(Theme theme, double fontPx);
+// The 2D or 3D page as a slide's figure laid out by `l` (logic/teach/slide_layout): its plots
+// with short labels and no notes, the measurement in one line under them, or `status` (a
+// measurement under way) where not empty.
+std::vector<PlotDrawing> slideDrawings(const ScalingResult& r, const ScalingConfig& c,
+                                       const PlotStyle& style, const PlotsLayout& l, bool solid,
+                                       const std::string& status = {});
 
 }  // namespace convexloc::viewer

@@ -162,6 +162,13 @@ LogPlot timePlot3D(const ScalingResult& r, const ScalingConfig& c) {
   return titled(plot3D(r, c, nsOf), "Time per query (3D)", "ns per query (batch locate)", " ns");
 }
 
+LogPlot memoryPlot3D(const ScalingResult& r, const ScalingConfig& c) {
+  LogPlot p =
+      titled(plot3D(r, c, [](const ScalingSample& x) { return static_cast<double>(x.bytes); }),
+             "Memory against F", "bytes (the locator's tables)", "B");
+  return p;
+}
+
 Rgba methodColour(Method2D m) {
   // halfplane, wedge, slab, uniform, polar
   constexpr std::uint32_t kColours[] = {0x9A9A9A, 0x56B4E9, 0x009E73, 0xCC79A7, 0xD55E00};
@@ -231,7 +238,8 @@ std::vector<PlotDrawing> scalingDrawings(const ScalingResult& r, const ScalingCo
   const ScreenRect t{{2.0 * gap + w, 2.0 * gap + h}, {2.0 * gap + 2.0 * w, 2.0 * gap + 2.0 * h}};
   if (solid)
     return {layoutLogPlot(predicatesPlot3D(r, c), a, style),
-            layoutLogPlot(timePlot3D(r, c), b, style), summaryDrawing(r, c, m, style, true)};
+            layoutLogPlot(timePlot3D(r, c), b, style), layoutLogPlot(memoryPlot3D(r, c), m, style),
+            summaryDrawing(r, c, t, style, true)};
   return {layoutLogPlot(predicatesPlot(r, c), a, style), layoutLogPlot(timePlot(r, c), b, style),
           layoutLogPlot(memoryPlot(r), m, style), summaryDrawing(r, c, t, style, false)};
 }

@@ -216,7 +216,33 @@ SlideLayout layoutSlideColumn(const SlideContent& c, const SlideMetrics& body) {
 
 }  // namespace
 
+PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx) {
+  PlotsLayout p;
+  p.fontPx = fontPx;
+  const double gap = 1.5 * fontPx, line = 1.6 * fontPx;
+  const glm::dvec2 size = room.size();
+  p.note = {{room.lo.x, room.hi.y - line}, room.hi};
+  if (count == 0) return p;
+  const double n = static_cast<double>(count);
+  const double w = (size.x - (n - 1.0) * gap) / n;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = room.lo.x + static_cast<double>(i) * (w + gap);
+    p.plots.push_back({{x, room.lo.y}, {x + w, p.note.lo.y - 0.5 * fontPx}});
+  }
+  return p;
+}
+
 SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
+  if (c.slide && c.plots > 0) {
+    // a plots slide: the card and the caption as on any slide, the plots in the room between
+    SlideContent bare = c;
+    bare.steps.reset();
+    bare.legend = glm::dvec2(0.0);
+    SlideLayout l = layoutSlideColumn(bare, m);
+    const double font = std::max(m.font * l.columnScale, kSlideTextShare * c.area.size().y);
+    l.plots = layoutPlots(l.scene, c.plots, font);
+    return l;
+  }
   if (c.slide) return layoutSlideColumn(c, m);
   SlideLayout l;
   l.title = titleCard(c, m, l.titleLines);

@@ -108,12 +108,25 @@ struct SlideContent {
   // a slide: the Steps window and the legend in a column on the right, the figure's room
   // the rest between the card and the caption (at least kFigureShare of the page)
   bool slide = false;
+  // a plots slide (Why O(1)): this many plots side by side in the figure's room, a line of
+  // text under them; 0: a scene
+  std::size_t plots = 0;
 };
 
 // the share of the page a slide's figure room keeps at least
 inline constexpr double kFigureShare = 0.56;
 // the smallest text on a slide, as a share of the page's height
 inline constexpr double kSlideTextShare = 0.0225;
+
+// a plots slide's figure: the plots side by side over a line of text, all at `fontPx`
+struct PlotsLayout {
+  std::vector<ScreenRect> plots;  // left to right, each with its title, axes and legend
+  ScreenRect note;                // the line under them ("What was measured")
+  double fontPx = 16.0;           // the plots' text height, at least kSlideTextShare of the page
+};
+
+// `count` plots side by side in `room` over a line of text, their text `fontPx` high
+PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx);
 
 // the boxes of one slide, in window pixels
 struct SlideLayout {
@@ -124,6 +137,7 @@ struct SlideLayout {
   ScreenRect legend;                 // over the lower right corner, above the caption
   ScreenRect scene;                  // the room the shape is fitted into, beside all of them
   double columnScale = 1.0;          // a slide's side column: its text over the body size
+  std::optional<PlotsLayout> plots;  // a plots slide's plots in the scene's room
 };
 
 // The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not

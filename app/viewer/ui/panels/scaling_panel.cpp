@@ -2,6 +2,7 @@
 #include "ui/panels/scaling_panel.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "logic/base/format.hpp"
 #include "logic/teach/scaling_record.hpp"
 #include "ui/scene_area.hpp"
+#include "ui/slide_frame.hpp"
 #include "ui/widgets.hpp"
 
 namespace convexloc::viewer {
@@ -39,16 +41,21 @@ void drawPath(ImDrawList* dl, const PlotPath& p, ImVec2 o) {
   }
 }
 
-// a laid-out plot on ImGui's draw list, `o` its origin in window pixels; series-coloured
-// text darkened where it would not read on the background (the light theme)
+// a laid-out plot on ImGui's draw list, `o` its origin in window pixels, its text
+// style.fontPx high; series-coloured text darkened where it would not read on the
+// background (the light theme)
 void drawPlot(ImDrawList* dl, const PlotDrawing& d, ImVec2 o, const PlotStyle& style) {
   for (const PlotPath& p : d.paths) drawPath(dl, p, o);
   for (const PlotMark& m : d.marks) dl->AddCircleFilled(at(m.p, o), m.radius, packAbgr(m.colour));
+  ImFont* font = ImGui::GetFont();
+  const auto px = static_cast<float>(style.fontPx);
   for (const PlotText& t : d.texts) {
-    const ImVec2 size = ImGui::CalcTextSize(t.text.c_str());
+    const char* text = t.text.c_str();
+    const ImVec2 size = font->CalcTextSizeA(px, FLT_MAX, 0.0f, text, text + t.text.size());
     const ImVec2 p = at(t.p, o);
-    dl->AddText(ImVec2(std::round(p.x - t.anchor * size.x), std::round(p.y - 0.5f * size.y)),
-                packAbgr(readableOn(t.colour, style.background, style.text)), t.text.c_str());
+    dl->AddText(
+        font, px, ImVec2(std::round(p.x - t.anchor * size.x), std::round(p.y - 0.5f * size.y)),
+        packAbgr(readableOn(t.colour, style.background, style.text)), text, text + t.text.size());
   }
 }
 
@@ -117,11 +124,34 @@ void plots(const Model& model, UiState& ui, const ScalingProgress& p, bool solid
 
 }  // namespace
 
+namespace {
+
+// A lecture's Why O(1) slide: the page's plots in the slide's figure room (its layout's
+// PlotsLayout), under the slide's boxes, without the window or its widgets; while a
+// measurement runs, its progress in place of the line under them.
+void scalingSlide(const Model& model, UiState& ui) {
+  if (!ui.layout.plots) return;
+  const PlotsLayout& l = *ui.layout.plots;
+  const ScalingProgress p = model.scaling->snapshot();
+  const std::string status = p.running          ? "measuring " + p.current + " ..."
+                             : !p.error.empty() ? p.error
+                                                : std::string();
+  const PlotStyle style = slidePlotStyle(model.settings.theme, l.fontPx);
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  for (const PlotDrawing& d :
+       slideDrawings(p.result, model.scaling->config(), style, l, model.whySolid, status))
+    drawPlot(dl, d, ImVec2(0.0f, 0.0f), style);
+  ui.whyPlots = {ui.layout.scene, l.fontPx, model.whySolid};
+}
+
+}  // namespace
+
 void scalingWindow(Model& model, UiState& ui) {
   ui.whyPlots = {};
   ui.whyWindow = {};
   if (!model.whyOpen) return;
   model.scaling->step();  // a measurement without a thread goes on a size a frame
+  if (plotsSlide(model, ui)) return scalingSlide(model, ui);
   const ImGuiIO& io = ImGui::GetIO();
   // between a slide's card and its caption, where a lecture shows them (kept there while
   // the panels are hidden), in the page
@@ -158,10 +188,9 @@ void scalingWindow(Model& model, UiState& ui) {
   const bool appearing = ImGui::IsWindowAppearing();
   if (ImGui::BeginTabBar("##dims")) {
     for (const bool solid : {false, true})
-      if (ImGui::BeginTabItem(solid ? "3D: geodesic spheres" : "2D: regular N-gons", nullptr,
-                              appearing && solid == (model.dim == Dim::Three)
-                                  ? ImGuiTabItemFlags_SetSelected
-                                  : 0)) {
+      if (ImGui::BeginTabItem(
+              solid ? "3D: geodesic spheres" : "2D: regular N-gons", nullptr,
+              appearing && solid == model.whySolid ? ImGuiTabItemFlags_SetSelected : 0)) {
         plots(model, ui, p, solid);
         ImGui::EndTabItem();
       }

@@ -82,7 +82,10 @@ void buildControls(Model& model) {
 }
 
 void whyButton(Model& model) {
-  if (ImGui::Button("Why O(1)? Cost against N", ImVec2(-1.0f, 0.0f))) model.whyOpen = true;
+  if (ImGui::Button("Why O(1)? Cost against N", ImVec2(-1.0f, 0.0f))) {
+    model.whyOpen = true;
+    model.whySolid = model.dim == Dim::Three;  // it opens on the scene's page
+  }
 }
 
 void splitHeadings(const Model& model, UiState& ui) {

@@ -1,0 +1,87 @@
+// convexloc-viewer — Why O(1) as a slide's figure: three plots side by side at the slide's
+// text size, short names, the measurement in one line under them.
+#include <algorithm>
+
+#include "logic/base/format.hpp"
+#include "logic/teach/scaling.hpp"
+
+namespace convexloc::viewer {
+namespace {
+
+// the plots a slide shows: predicates, time, memory
+constexpr std::size_t kSlidePlots = 3;
+
+// `p` for a slide: its notes left out (the caption and the notes speak for them), the y axis'
+// label and the series' names where given shorter
+LogPlot forSlide(LogPlot p, std::string yLabel, const std::vector<std::string>& names = {}) {
+  p.notes.clear();
+  p.yLabel = std::move(yLabel);
+  for (std::size_t i = 0; i < names.size() && i < p.series.size(); ++i)
+    if (!names[i].empty()) p.series[i].name = names[i];
+  return p;
+}
+
+// the 2D page's plots
+std::vector<LogPlot> plots2D(const ScalingResult& r, const ScalingConfig& c) {
+  LogPlot predicates = forSlide(predicatesPlot(r, c), "edge + ray tests");
+  if (!predicates.series.empty()) predicates.series.back().name = "polar: edges in its cell";
+  LogPlot memory = forSlide(memoryPlot(r), "bytes",
+                            {"paper: 8 B per slab", "convexloc uniform", "convexloc polar"});
+  memory.title = "Memory against the y-gap";
+  memory.xLabel = "smallest gap between vertex y";
+  return {predicates, forSlide(timePlot(r, c), "ns per query"), memory};
+}
+
+// the 3D page's plots
+std::vector<LogPlot> plots3D(const ScalingResult& r, const ScalingConfig& c) {
+  LogPlot predicates = forSlide(predicatesPlot3D(r, c), "plane + walk-edge tests");
+  LogPlot time = forSlide(timePlot3D(r, c), "ns per query");
+  predicates.title = "Predicates per query";
+  time.title = "Time per query";
+  return {predicates, time, forSlide(memoryPlot3D(r, c), "bytes")};
+}
+
+// what was measured, in a line
+std::string measuredLine(const ScalingConfig& c, bool solid) {
+  const std::vector<std::size_t>& sizes = solid ? c.faces : c.sizes;
+  std::string line = "What was measured: ";
+  if (!sizes.empty())
+    line += (solid ? "geodesic spheres, F = 20 .. " : "regular N-gons, N = 8 .. ") +
+            grouped(sizes.back()) + "; ";
+  return line + grouped(c.tracedPoints) + " random points traced, " + grouped(c.timedPoints) +
+         " located in batches";
+}
+
+}  // namespace
+
+std::size_t slidePlotCount() {
+  return kSlidePlots;
+}
+
+PlotStyle slidePlotStyle(Theme theme, double fontPx) {
+  PlotStyle s = plotStyle(theme, fontPx);
+  s.unit = std::max(1.0, fontPx / 16.0);
+  s.boldTitle = false;
+  return s;
+}
+
+std::vector<PlotDrawing> slideDrawings(const ScalingResult& r, const ScalingConfig& c,
+                                       const PlotStyle& style, const PlotsLayout& l, bool solid,
+                                       const std::string& status) {
+  const std::vector<LogPlot> plots = solid ? plots3D(r, c) : plots2D(r, c);
+  std::vector<PlotDrawing> out;
+  for (std::size_t i = 0; i < plots.size() && i < l.plots.size(); ++i)
+    out.push_back(layoutLogPlot(plots[i], l.plots[i], style));
+  PlotDrawing note;
+  note.rect = l.note;
+  note.background = style.background;
+  note.texts.push_back({{l.note.lo.x + 4.0, l.note.middle().y},
+                        status.empty() ? measuredLine(c, solid) : status,
+                        style.textMuted,
+                        0.0f,
+                        false});
+  out.push_back(std::move(note));
+  return out;
+}
+
+}  // namespace convexloc::viewer
