@@ -52,10 +52,17 @@ def layout_rules(s):
                 bad.append(f"{a} {boxes[a]} overlaps {b} {boxes[b]}")
     if "inset" in boxes and "shape" in boxes and overlap(boxes["inset"], boxes["shape"]) > 1.0:
         bad.append(f"inset {boxes['inset']} overlaps the shape {boxes['shape']}")
-    # Why O(1) is still the interactive window over the slide (its plots' text shrinks with
-    # it); its slide figures are not made yet
-    if s["kind"] != "plots" and s["min_text_px"] < 0.022 * H - 1e-9:
+    if s["min_text_px"] < 0.022 * H - 1e-9:
         bad.append(f"text {s['min_text_px']} px < 2.2% of {H}")
+    if s["kind"] == "plots":
+        # Why O(1)'s plots: the figure room, no scene in it
+        fig = boxes.get("figure")
+        if not fig:
+            return bad + ["a plots slide without a figure box"]
+        if fig[2] * fig[3] < 0.55 * W * H:
+            bad.append(f"figure room {fig} is {fig[2] * fig[3] / (W * H):.0%} of the page")
+        if "shape" in boxes:
+            bad.append("a plots slide with a shape box (a scene drawn under its plots)")
     if s["kind"] in ("figure2d", "figure3d"):
         fig = boxes.get("figure")
         shape = boxes.get("shape")

@@ -4,7 +4,8 @@
 # room at least 56% of the page with the figure filling 80% of its width or height, a 3D
 # query's x_T and x apart, the page outside every box bare. The first slide and those named
 # after the lecture (one of each layout: a Steps
-# window, a long legend, 3D figures with and without a query, the dual views) at 1280x720,
+# window, a long legend, 3D figures with and without a query, the dual views, Why O(1)'s
+# plots) at 1280x720,
 # 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5. A lecture
 # exported whole has each slide's SVG, rendered by rsvg-convert, within RMSE 0.05 of its PNG.
 # usage: slide_rules.sh XVFB_RUN VIEWER PIXELS COMPARER OUTDIR LECTURE:SLIDES[:whole]...

@@ -75,6 +75,15 @@ std::optional<Query3DOnPage> query3dOf(const Model& model, glm::dvec2 pageLo) {
                        onPage(project, exit->faceMiddle, pageLo)};
 }
 
+// the smallest text in a slide's title card and caption box, `font` the body's height
+double boxTextPx(const SlideLayout& l, double font) {
+  double least = std::numeric_limits<double>::infinity();
+  if (!l.title.lines.empty()) least = font * l.title.scale;
+  if (l.title.lines.size() > l.titleLines) least = std::min(least, font * l.title.restScale);
+  if (!l.caption.lines.empty()) least = std::min(least, font * l.caption.scale);
+  return least;
+}
+
 ScreenRect rectOf(const float (&r)[4]) {
   return {{r[0], r[1]}, {r[2], r[3]}};
 }
@@ -100,8 +109,10 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   if (!plots) r.add("shape", shapeBox(model), page.lo);
   if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
-  // the body text (the labels') or a slide's smaller text in its boxes
-  r.minTextPx = ImGui::GetFontSize() * std::min(1.0, l.columnScale);
+  // the body text (the labels') or a slide's smaller text in its boxes; a plots slide has
+  // no labels: its card's, caption's and plots' text
+  r.minTextPx = plotsSlide(model, ui) ? boxTextPx(l, ImGui::GetFontSize())
+                                      : ImGui::GetFontSize() * std::min(1.0, l.columnScale);
   // the plots' text (a plots slide's tick labels, legends and line under them)
   if (plots && ui.whyPlots.fontPx > 0.0) r.minTextPx = std::min(r.minTextPx, ui.whyPlots.fontPx);
   r.query3d = query3dOf(model, page.lo);

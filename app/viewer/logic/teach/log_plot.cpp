@@ -255,11 +255,15 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   const double labels = static_cast<double>(std::max<std::size_t>(widestLabel(a.y, plot.yUnit), 5));
   const double left = st.charWidth * labels + 14.0 * st.unit;
   const LegendFlow flow = flowLegend(plot, st, rect.size().x - left);
-  a.box = {{rect.lo.x + left, rect.lo.y + 2.2 * st.fontPx},
-           {rect.hi.x - 0.8 * st.fontPx, rect.hi.y - 3.2 * st.fontPx - flow.height}};
+  // room for half the last x label right of the axes
+  const double right =
+      std::max(0.8 * st.fontPx,
+               0.5 * st.charWidth * static_cast<double>(widestLabel(a.x, plot.xUnit)) + 2.0);
+  a.box = {{rect.lo.x + left, rect.lo.y + 2.9 * st.fontPx},
+           {rect.hi.x - right, rect.hi.y - 3.2 * st.fontPx - flow.height}};
   d.texts.push_back(
       {{rect.lo.x + 4.0, rect.lo.y + 0.8 * st.fontPx}, plot.title, st.text, 0.0f, st.boldTitle});
-  d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.7 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
+  d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.85 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
   axesAndGrid(plot, a, st, d);
   seriesPaths(plot, a, st, d);
   legend(plot, flow, {a.box.lo.x, a.box.hi.y + 2.9 * st.fontPx}, st, d);

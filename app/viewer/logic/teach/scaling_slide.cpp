@@ -41,15 +41,18 @@ std::vector<LogPlot> plots3D(const ScalingResult& r, const ScalingConfig& c) {
   return {predicates, time, forSlide(memoryPlot3D(r, c), "bytes")};
 }
 
-// what was measured, in a line
-std::string measuredLine(const ScalingConfig& c, bool solid) {
+// what was measured, in a line of at most `columns` characters where a shorter one fits
+std::string measuredLine(const ScalingConfig& c, bool solid, double columns) {
   const std::vector<std::size_t>& sizes = solid ? c.faces : c.sizes;
-  std::string line = "What was measured: ";
+  std::string shapes;
   if (!sizes.empty())
-    line += (solid ? "geodesic spheres, F = 20 .. " : "regular N-gons, N = 8 .. ") +
-            grouped(sizes.back()) + "; ";
-  return line + grouped(c.tracedPoints) + " random points traced, " + grouped(c.timedPoints) +
-         " located in batches";
+    shapes = (solid ? "geodesic spheres, F = 20 .. " : "regular N-gons, N = 8 .. ") +
+             grouped(sizes.back()) + "; ";
+  const std::string line = "What was measured: " + shapes + grouped(c.tracedPoints) +
+                           " random points traced, " + grouped(c.timedPoints) +
+                           " located in batches";
+  if (static_cast<double>(line.size()) <= columns) return line;
+  return shapes + grouped(c.tracedPoints) + " traced, " + grouped(c.timedPoints) + " timed";
 }
 
 }  // namespace
@@ -75,11 +78,12 @@ std::vector<PlotDrawing> slideDrawings(const ScalingResult& r, const ScalingConf
   PlotDrawing note;
   note.rect = l.note;
   note.background = style.background;
-  note.texts.push_back({{l.note.lo.x + 4.0, l.note.middle().y},
-                        status.empty() ? measuredLine(c, solid) : status,
-                        style.textMuted,
-                        0.0f,
-                        false});
+  note.texts.push_back(
+      {{l.note.lo.x + 4.0, l.note.middle().y},
+       status.empty() ? measuredLine(c, solid, l.note.size().x / style.charWidth) : status,
+       style.textMuted,
+       0.0f,
+       false});
   out.push_back(std::move(note));
   return out;
 }

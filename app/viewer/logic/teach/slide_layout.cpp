@@ -232,6 +232,14 @@ PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx) {
   return p;
 }
 
+double plotsTextPx(ScreenRect room, std::size_t count, double body, double pageHeight) {
+  const double n = static_cast<double>(std::max<std::size_t>(count, 1));
+  // an average character about 0.56 of the text's height (DejaVu Sans); the gaps 1.5 of it
+  const double across = room.size().x / (n * kPlotColumns * 0.56 + (n - 1.0) * 1.5);
+  const double down = room.size().y / kPlotRows;
+  return std::max(std::min({body, across, down}), kSlideTextShare * pageHeight);
+}
+
 SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
   if (c.slide && c.plots > 0) {
     // a plots slide: the card and the caption as on any slide, the plots in the room between
@@ -239,7 +247,7 @@ SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
     bare.steps.reset();
     bare.legend = glm::dvec2(0.0);
     SlideLayout l = layoutSlideColumn(bare, m);
-    const double font = std::max(m.font * l.columnScale, kSlideTextShare * c.area.size().y);
+    const double font = plotsTextPx(l.scene, c.plots, m.font * l.columnScale, c.area.size().y);
     l.plots = layoutPlots(l.scene, c.plots, font);
     return l;
   }

@@ -128,6 +128,13 @@ struct PlotsLayout {
 // `count` plots side by side in `room` over a line of text, their text `fontPx` high
 PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx);
 
+// the plots' text height on a slide: the slide's `body` text, smaller where a plot would hold
+// fewer than kPlotColumns characters across or the room fewer than kPlotRows lines down, never
+// under kSlideTextShare of the page's height `pageHeight`
+double plotsTextPx(ScreenRect room, std::size_t count, double body, double pageHeight);
+inline constexpr double kPlotColumns = 34.0;  // a legend's longest name and its swatch
+inline constexpr double kPlotRows = 22.0;     // title, axes, labels and a legend of six rows
+
 // the boxes of one slide, in window pixels
 struct SlideLayout {
   TextBox title;                     // the title card (with a figure's caption under the title)
