@@ -102,11 +102,13 @@ void slideBoxes(const Model& model, const UiState& ui, SvgScene& s) {
     const PlotStyle style = slidePlotStyle(model.settings.theme, l.fontPx);
     s.plotsSvg = svgPlots(
         slideDrawings(p.result, model.scaling->config(), style, l, model.whySolid, p.error),
-        {0.0, 0.0}, l.fontPx, [px = static_cast<float>(l.fontPx)](std::string_view t) {
+        {0.0, 0.0}, l.fontPx,
+        [px = static_cast<float>(l.fontPx)](std::string_view t) {
           const ImVec2 v =
               ImGui::GetFont()->CalcTextSizeA(px, FLT_MAX, 0.0f, t.data(), t.data() + t.size());
           return glm::dvec2(v.x, v.y);
-        });
+        },
+        ImGui::GetFont()->Ascent * l.fontPx / ImGui::GetFont()->FontSize);
   } else if (model.whyOpen && ui.whyWindow.hi.x > ui.whyWindow.lo.x) {
     s.window = ui.whyWindow;
     s.windowTitle = "Why O(1): cost against N";

@@ -159,7 +159,10 @@ std::string num(double v) {
   return buf;
 }
 
-void svgPath(std::ostringstream& out, const PlotPath& p) {
+// a line or polyline where the window draws it: ImGui's AddLine draws from half a pixel
+// right of and below its points, on the pixels' centres
+void svgPath(std::ostringstream& out, PlotPath p) {
+  for (glm::dvec2& q : p.points) q += glm::dvec2(0.5);
   const std::string stroke = " fill=\"none\" stroke=\"" + svgColour(p.colour) +
                              "\" stroke-opacity=\"" + num(p.colour.a) + "\" stroke-width=\"" +
                              num(p.width) + "\"" + (p.dashed ? " stroke-dasharray=\"6 4\"" : "");
@@ -192,10 +195,11 @@ void svgText(std::ostringstream& out, const PlotText& t, double fontPx) {
 
 // `t` from its left edge as the window draws it, each word at its advance
 void svgTextPlaced(std::ostringstream& out, const PlotText& t, double fontPx,
-                   const MeasureText& advance) {
+                   const MeasureText& advance, double ascent) {
   const double left = std::round(t.p.x - t.anchor * advance(t.text).x);
-  out << "<text y=\"" << num(baselineAt(t.p.y, fontPx)) << "\" xml:space=\"preserve\" fill=\""
-      << svgColour(t.colour) << "\"" << (t.bold ? " font-weight=\"bold\"" : "") << ">";
+  const double baseline = std::round(t.p.y - 0.5 * fontPx) + ascent;
+  out << "<text y=\"" << num(baseline) << "\" xml:space=\"preserve\" fill=\"" << svgColour(t.colour)
+      << "\"" << (t.bold ? " font-weight=\"bold\"" : "") << ">";
   std::size_t start = 0;
   const std::string& s = t.text;
   while (start < s.size()) {
@@ -210,7 +214,7 @@ void svgTextPlaced(std::ostringstream& out, const PlotText& t, double fontPx,
 
 // the plots' SVG; their texts placed word by word where `advance` is given
 std::string plotsSvg(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
-                     const MeasureText* advance) {
+                     const MeasureText* advance, double ascent) {
   std::ostringstream out;
   out << "<g transform=\"translate(" << num(origin.x) << " " << num(origin.y)
       << ")\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\""
@@ -223,7 +227,7 @@ std::string plotsSvg(std::span<const PlotDrawing> drawings, glm::dvec2 origin, d
           << "\" fill=\"" << svgColour(m.colour) << "\"/>\n";
     for (const PlotText& t : d.texts) {
       if (advance)
-        svgTextPlaced(out, t, fontPx, *advance);
+        svgTextPlaced(out, t, fontPx, *advance, ascent);
       else
         svgText(out, t, fontPx);
     }
@@ -244,23 +248,36 @@ std::string decadeText(int e) {
   return s + kSuffix[group];
 }
 
-PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& st) {
+namespace {
+
+// the room left of the axes: the widest y label's
+double leftMargin(const LogPlot& plot, const PlotStyle& st) {
+  const std::size_t widest = widestLabel(decadesOf(plot, true), plot.yUnit);
+  return st.charWidth * static_cast<double>(std::max<std::size_t>(widest, 5)) + 14.0 * st.unit;
+}
+
+}  // namespace
+
+double legendHeight(const LogPlot& plot, ScreenRect rect, const PlotStyle& st) {
+  return flowLegend(plot, st, rect.size().x - leftMargin(plot, st)).height;
+}
+
+PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& st,
+                          double legendRoom) {
   PlotDrawing d;
   d.rect = rect;
   d.background = st.background;
   Axes a;
   a.x = decadesOf(plot, false);
   a.y = decadesOf(plot, true);
-  // room for the widest y label left of the axes
-  const double labels = static_cast<double>(std::max<std::size_t>(widestLabel(a.y, plot.yUnit), 5));
-  const double left = st.charWidth * labels + 14.0 * st.unit;
+  const double left = leftMargin(plot, st);
   const LegendFlow flow = flowLegend(plot, st, rect.size().x - left);
   // room for half the last x label right of the axes
   const double right =
       std::max(0.8 * st.fontPx,
                0.5 * st.charWidth * static_cast<double>(widestLabel(a.x, plot.xUnit)) + 2.0);
   a.box = {{rect.lo.x + left, rect.lo.y + 2.9 * st.fontPx},
-           {rect.hi.x - right, rect.hi.y - 3.2 * st.fontPx - flow.height}};
+           {rect.hi.x - right, rect.hi.y - 3.2 * st.fontPx - std::max(flow.height, legendRoom)}};
   d.texts.push_back(
       {{rect.lo.x + 4.0, rect.lo.y + 0.8 * st.fontPx}, plot.title, st.text, 0.0f, st.boldTitle});
   d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.85 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
@@ -271,12 +288,12 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
 }
 
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx) {
-  return plotsSvg(drawings, origin, fontPx, nullptr);
+  return plotsSvg(drawings, origin, fontPx, nullptr, 0.0);
 }
 
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
-                     const MeasureText& advance) {
-  return plotsSvg(drawings, origin, fontPx, &advance);
+                     const MeasureText& advance, double ascent) {
+  return plotsSvg(drawings, origin, fontPx, &advance, ascent);
 }
 
 std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,

@@ -78,8 +78,12 @@ struct PlotDrawing {
 };
 
 // Lays `plot` out inside `rect`: axes over the decades covering every positive value,
-// a tick and a grid line at each decade, the series, the legend in the upper left.
-PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& style);
+// a tick and a grid line at each decade, the series, the legend under the x axis' label
+// (`legendRoom` high at least: plots side by side keep their axes level).
+PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& style,
+                          double legendRoom = 0.0);
+// the height of `plot`'s legend laid out in `rect`
+double legendHeight(const LogPlot& plot, ScreenRect rect, const PlotStyle& style);
 
 // a decade's label: 1, 10, 100, 1k .. 1T above one, 0.1 .. 1e-9 below
 std::string decadeText(int exponent);
@@ -91,9 +95,11 @@ std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, d
 // svgPlots with each text where the window draws it: its left edge at its point less its
 // anchor's share of its width, rounded as ImGui rounds it, and each word at its advance
 // (`advance`: a text's width at fontPx, the window's font), so that an SVG reader's own
-// glyph spacing drifts no further than a word (a slide's plots, compared with its PNG)
+// glyph spacing drifts no further than a word, the baseline `ascent` below the line's top
+// (the window's font, loaded at another size, scaled to fontPx) (a slide's plots, compared
+// with its PNG)
 std::string svgPlots(std::span<const PlotDrawing> drawings, glm::dvec2 origin, double fontPx,
-                     const MeasureText& advance);
+                     const MeasureText& advance, double ascent);
 
 // a standalone SVG document `size` pixels large holding `drawings`
 std::string svgDocument(std::span<const PlotDrawing> drawings, glm::dvec2 size, Rgba background,

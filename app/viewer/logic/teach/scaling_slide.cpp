@@ -73,8 +73,12 @@ std::vector<PlotDrawing> slideDrawings(const ScalingResult& r, const ScalingConf
                                        const std::string& status) {
   const std::vector<LogPlot> plots = solid ? plots3D(r, c) : plots2D(r, c);
   std::vector<PlotDrawing> out;
+  // the legends' room the tallest one's, so that the axes stand level
+  double room = 0.0;
   for (std::size_t i = 0; i < plots.size() && i < l.plots.size(); ++i)
-    out.push_back(layoutLogPlot(plots[i], l.plots[i], style));
+    room = std::max(room, legendHeight(plots[i], l.plots[i], style));
+  for (std::size_t i = 0; i < plots.size() && i < l.plots.size(); ++i)
+    out.push_back(layoutLogPlot(plots[i], l.plots[i], style, room));
   PlotDrawing note;
   note.rect = l.note;
   note.background = style.background;
