@@ -288,3 +288,61 @@ TEST(LectureProblems, TheDocumentedExampleIsACleanLecture) {
   EXPECT_EQ(p.lecture.slides[0].options.step, 2);
   EXPECT_EQ(p.lecture.slides[0].notes.size(), 2u);
 }
+
+// `why PAGE` opens Why O(1) on that page on any slide: the 3D page over a 2D scene, the 2D
+// page over a 3D one; without a page, the scene's
+TEST(LectureProblems, WhyNamesThePageOnAnySlide) {
+  const std::string record = std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/why-o1.txt";
+  const cv::ParsedLecture p =
+      cv::parseLecture("slide A\nwhy 3d\nwhy-from " + record + "\nslide B\n3d\nwhy-from " + record +
+                           "\nslide C\n3d\nwhy 2d\nwhy-from " + record + "\nslide D\nspray 10\n",
+                       "t.lecture");
+  ASSERT_TRUE(p.clean()) << p.problems.front();
+  EXPECT_EQ(p.lecture.slides[0].options.whyPage, "3d");
+  EXPECT_TRUE(p.lecture.slides[0].options.why);
+  EXPECT_EQ(p.lecture.slides[1].options.whyPage, "");
+  cv::Model m;
+  cv::SlideShow show;
+  show.lecture = p.lecture;
+  const struct {
+    bool open, solid;
+  } expected[] = {{true, true}, {true, true}, {true, false}, {false, false}};
+  for (std::size_t k = 0; k < std::size(expected); ++k) {
+    ASSERT_EQ(show.go(m, static_cast<std::ptrdiff_t>(k)), "");
+    EXPECT_EQ(m.whyOpen, expected[k].open) << "slide " << k + 1;
+    EXPECT_EQ(m.whySolid, expected[k].solid) << "slide " << k + 1;
+  }
+  EXPECT_EQ(m.dim, cv::Dim::Two);  // slide A's 2D scene stayed under its 3D page
+  // the command line's name for it
+  const cv::ParsedOptions o = cv::parseOptions(std::vector<std::string_view>{"--why-page", "3d"});
+  EXPECT_EQ(o.error, "");
+  EXPECT_EQ(o.options.whyPage, "3d");
+}
+
+// --check reports a page that is not one at its line, with the nearest page, and a second
+// page as left over
+TEST(LectureProblems, ABadWhyPageIsReportedAtItsLine) {
+  const fs::path dir = scratchDir("why");
+  writeFile(dir / "talk.lecture",
+            "slide One\n"     // 1
+            "method polar\n"  // 2
+            "why 3D\n"        // 3: not a page
+            "slide Two\n"     // 4
+            "why 2d 3d\n"     // 5: two pages
+            "slide Three\n"   // 6
+            "why solid\n");   // 7: nothing near
+  cv::Options o;
+  o.checkFile = (dir / "talk.lecture").string();
+  std::string out, err;
+  EXPECT_EQ(cv::lectureReport(o, out, err), 1) << out;
+  const std::string file = o.checkFile;
+  EXPECT_TRUE(contains(out, file + ":3: the Why O(1) page is 2d (regular N-gons) or 3d (geodesic "
+                                   "spheres), not '3D' (did you mean 3d?)\n"))
+      << out;
+  EXPECT_TRUE(contains(out, file + ":5: 'why' takes one page, 2d or 3d ('3d' is left over)\n"))
+      << out;
+  EXPECT_TRUE(contains(out, file + ":7: the Why O(1) page is 2d (regular N-gons) or 3d (geodesic "
+                                   "spheres), not 'solid'\n"))
+      << out;
+  EXPECT_TRUE(contains(out, "3 problems; 3 slides, 3 of them not shown as written")) << out;
+}

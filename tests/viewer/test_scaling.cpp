@@ -7,10 +7,11 @@
 #include <string_view>
 #include <vector>
 
-#include "logic/teach/log_plot.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
+#include "logic/teach/log_plot.hpp"
 #include "logic/teach/scaling.hpp"
+#include "logic/teach/scaling_record.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Method2D;
@@ -141,7 +142,7 @@ TEST(Scaling, SolidsOnGeodesicSpheres) {
   const std::string svg = cv::scalingSvg(p.result, c, cv::Theme::Dark, true);
   std::string why;
   EXPECT_TRUE(wellFormed(svg, why)) << why;
-  EXPECT_EQ(countOf(svg, "<polyline"), 3u + 3u);
+  EXPECT_EQ(countOf(svg, "<polyline"), 3u + 3u + 3u);  // tests, time, memory
   EXPECT_EQ(cv::solidSvgPath("/tmp/why.svg"), "/tmp/why-3d.svg");
 }
 
@@ -293,4 +294,52 @@ TEST(ScalingOptions, SplitAndBuildApplyToTheModel) {
   EXPECT_EQ(model.build.step, 4u);
   o.split = "cubemap";
   EXPECT_FALSE(model.apply(o).empty());
+}
+
+// A slide's pages from the shipped record: three plots (the 3D page's third the memory of
+// each 3D method against F), every line, mark and text (its width estimated from the style's
+// character width) inside its plot, the text at the layout's size
+TEST(ScalingSlide, PagesFromTheRecordKeepInsideTheirPlots) {
+  cv::ScalingResult r;
+  cv::ScalingConfig c;
+  std::string error;
+  ASSERT_TRUE(cv::readScalingRecord(
+      std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/why-o1.txt", r, c, error))
+      << error;
+  for (const double page : {720.0, 1080.0, 2160.0})
+    for (const bool solid : {false, true}) {
+      const double font = cv::kSlideTextShare * page;
+      const cv::ScreenRect room{{0.02 * page, 0.1 * page}, {1.76 * page, 0.85 * page}};
+      const cv::PlotsLayout l = cv::layoutPlots(room, cv::slidePlotCount(), font);
+      const cv::PlotStyle st = cv::slidePlotStyle(cv::Theme::Light, font);
+      const std::vector<cv::PlotDrawing> d = cv::slideDrawings(r, c, st, l, solid);
+      ASSERT_EQ(d.size(), 4u);  // three plots and the line under them
+      const auto in = [](glm::dvec2 p, const cv::ScreenRect& b) {
+        return p.x >= b.lo.x - 1e-6 && p.x <= b.hi.x + 1e-6 && p.y >= b.lo.y - 1e-6 &&
+               p.y <= b.hi.y + 1e-6;
+      };
+      for (const cv::PlotDrawing& dr : d) {
+        for (const cv::PlotPath& p : dr.paths)
+          for (const glm::dvec2 q : p.points) EXPECT_TRUE(in(q, dr.rect)) << page << solid;
+        for (const cv::PlotText& t : dr.texts) {
+          const double w = st.charWidth * static_cast<double>(t.text.size());
+          const glm::dvec2 lo{t.p.x - t.anchor * w, t.p.y - 0.5 * font};
+          EXPECT_TRUE(in(lo, dr.rect) && in(lo + glm::dvec2(w, font), dr.rect))
+              << "'" << t.text << "' at " << page << (solid ? " 3D" : " 2D");
+          EXPECT_FALSE(t.bold);  // the window draws no bold
+        }
+      }
+      // the third plot: the memory, one curve per method (the 3D page's per 3D method)
+      const std::size_t curves = std::count_if(d[2].paths.begin(), d[2].paths.end(),
+                                               [](const cv::PlotPath& p) { return p.series; });
+      EXPECT_EQ(curves, solid ? r.series3d.size() : 3u);
+    }
+  // the memory against F holds each 3D sample's bytes
+  const cv::LogPlot m = cv::memoryPlot3D(r, c);
+  ASSERT_EQ(m.series.size(), r.series3d.size());
+  for (std::size_t i = 0; i < m.series.size(); ++i) {
+    ASSERT_EQ(m.series[i].points.size(), r.series3d[i].samples.size());
+    for (std::size_t k = 0; k < m.series[i].points.size(); ++k)
+      EXPECT_EQ(m.series[i].points[k].y, static_cast<double>(r.series3d[i].samples[k].bytes));
+  }
 }

@@ -288,3 +288,55 @@ TEST(SlideLayout, ACutStepListSaysWhichStepsItShows) {
   EXPECT_EQ(all.shown.size(), 12u);
   EXPECT_NE(all.heading.back().rfind("steps ", 0), 0u);
 }
+
+// Why O(1) on a slide: its plots side by side and the line under them in the figure room, the
+// room its share of the page, no Steps window or legend, the plots' text at least the slide
+// rule's share of the page and no larger than what a plot's width and the room's height hold
+TEST(SlideLayout, APlotsSlidesPlotsFillItsFigureAtSlideTextSize) {
+  for (const glm::dvec2 window : {glm::dvec2(1280.0, 720.0), glm::dvec2(1280.0, 800.0),
+                                  glm::dvec2(1920.0, 1080.0), glm::dvec2(3840.0, 2160.0)})
+    for (const double text : {0.75, 1.0, 1.5, 2.0}) {
+      const cv::PageFit fit = cv::fitPage(window);
+      cv::SlideContent c;
+      c.area = fit.page;
+      c.title = "18 / 27: Why O(1): cost against N";
+      c.caption =
+          "Tests per query grow with N (half-planes), lg N (wedges); slab compares y values: its "
+          "tests stay flat, its time grows; uniform, polar: flat.";
+      c.steps = stepsOf(8, 2);  // a plots slide draws neither
+      c.legend = glm::dvec2(330.0, 260.0) * fit.scale * text;
+      c.captionRoom = 2;
+      c.slide = true;
+      c.plots = 3;
+      const cv::SlideMetrics m = metricsAt(fit.scale * text);
+      const cv::SlideLayout l = cv::layoutSlide(c, m);
+      const std::string at = std::to_string(window.x) + "x" + std::to_string(window.y) + " text " +
+                             std::to_string(text);
+      ASSERT_TRUE(l.plots) << at;
+      EXPECT_FALSE(l.steps) << at;
+      EXPECT_EQ(l.legend.size(), glm::dvec2(0.0)) << at;
+      const glm::dvec2 room = l.scene.size(), page = fit.page.size();
+      EXPECT_GE(room.x * room.y, cv::kFigureShare * page.x * page.y * (1.0 - 1e-9)) << at;
+      const cv::PlotsLayout& p = *l.plots;
+      ASSERT_EQ(p.plots.size(), 3u) << at;
+      std::vector<std::pair<std::string, cv::ScreenRect>> boxes = {
+          {"title", l.title.box}, {"caption", l.caption.box}, {"note", p.note}};
+      for (std::size_t i = 0; i < p.plots.size(); ++i) {
+        EXPECT_TRUE(inside(p.plots[i], l.scene)) << "plot " << i << " at " << at;
+        EXPECT_GT(p.plots[i].size().y, 0.5 * room.y) << at;
+        boxes.emplace_back("plot " + std::to_string(i), p.plots[i]);
+      }
+      EXPECT_TRUE(inside(p.note, l.scene)) << at;
+      for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+          EXPECT_FALSE(overlap(boxes[i].second, boxes[j].second))
+              << boxes[i].first << " and " << boxes[j].first << " at " << at;
+      EXPECT_GE(p.fontPx, 0.022 * page.y) << at;
+      const double floor = cv::kSlideTextShare * page.y;
+      EXPECT_LE(p.fontPx, std::max(m.font, floor) + 1e-9) << at;
+      // above the floor, a plot holds kPlotColumns characters across
+      if (p.fontPx > floor + 1e-9) {
+        EXPECT_GE(p.plots[0].size().x, cv::kPlotColumns * 0.56 * p.fontPx * (1.0 - 1e-9)) << at;
+      }
+    }
+}
