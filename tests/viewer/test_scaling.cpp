@@ -313,7 +313,8 @@ TEST(ScalingSlide, PagesFromTheRecordKeepInsideTheirPlots) {
       const cv::PlotsLayout l = cv::layoutPlots(room, cv::slidePlotCount(), font);
       const cv::PlotStyle st = cv::slidePlotStyle(cv::Theme::Light, font);
       const std::vector<cv::PlotDrawing> d = cv::slideDrawings(r, c, st, l, solid);
-      ASSERT_EQ(d.size(), 4u);  // three plots and the line under them
+      // three plots, the legend the first two share (the 3D page: all three), the line under
+      ASSERT_EQ(d.size(), 5u);
       const auto in = [](glm::dvec2 p, const cv::ScreenRect& b) {
         return p.x >= b.lo.x - 1e-6 && p.x <= b.hi.x + 1e-6 && p.y >= b.lo.y - 1e-6 &&
                p.y <= b.hi.y + 1e-6;
@@ -329,10 +330,20 @@ TEST(ScalingSlide, PagesFromTheRecordKeepInsideTheirPlots) {
           EXPECT_FALSE(t.bold);  // the window draws no bold
         }
       }
-      // the third plot: the memory, one curve per method (the 3D page's per 3D method)
-      const std::size_t curves = std::count_if(d[2].paths.begin(), d[2].paths.end(),
+      // the memory plot: one curve per method (the 3D page's per 3D method)
+      const auto memory = std::find_if(d.begin(), d.end(), [](const cv::PlotDrawing& dr) {
+        return !dr.texts.empty() && dr.texts.front().text.starts_with("Memory against");
+      });
+      ASSERT_NE(memory, d.end());
+      const std::size_t curves = std::count_if(memory->paths.begin(), memory->paths.end(),
                                                [](const cv::PlotPath& p) { return p.series; });
       EXPECT_EQ(curves, solid ? r.series3d.size() : 3u);
+      // every series named once in a legend on the page
+      std::size_t names = 0;
+      for (const cv::PlotDrawing& dr : d)
+        for (const cv::PlotText& t : dr.texts)
+          names += t.text == "walk  O(sqrt F)" || t.text == "wedge  O(log N)";
+      EXPECT_EQ(names, 1u) << page << solid;
     }
   // the memory against F holds each 3D sample's bytes
   const cv::LogPlot m = cv::memoryPlot3D(r, c);

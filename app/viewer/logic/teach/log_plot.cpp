@@ -248,18 +248,21 @@ std::string decadeText(int e) {
   return s + kSuffix[group];
 }
 
-namespace {
-
-// the room left of the axes: the widest y label's
-double leftMargin(const LogPlot& plot, const PlotStyle& st) {
+double axesLeft(const LogPlot& plot, const PlotStyle& st) {
   const std::size_t widest = widestLabel(decadesOf(plot, true), plot.yUnit);
   return st.charWidth * static_cast<double>(std::max<std::size_t>(widest, 5)) + 14.0 * st.unit;
 }
 
-}  // namespace
+double legendHeight(const LogPlot& plot, double width, const PlotStyle& st) {
+  return flowLegend(plot, st, width).height;
+}
 
-double legendHeight(const LogPlot& plot, ScreenRect rect, const PlotStyle& st) {
-  return flowLegend(plot, st, rect.size().x - leftMargin(plot, st)).height;
+PlotDrawing layoutLegend(const LogPlot& plot, ScreenRect rect, const PlotStyle& st) {
+  PlotDrawing d;
+  d.rect = rect;
+  d.background = st.background;
+  legend(plot, flowLegend(plot, st, rect.size().x), rect.lo, st, d);
+  return d;
 }
 
 PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& st,
@@ -270,8 +273,8 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   Axes a;
   a.x = decadesOf(plot, false);
   a.y = decadesOf(plot, true);
-  const double left = leftMargin(plot, st);
-  const LegendFlow flow = flowLegend(plot, st, rect.size().x - left);
+  const double left = axesLeft(plot, st);
+  const LegendFlow flow = plot.legend ? flowLegend(plot, st, rect.size().x - left) : LegendFlow{};
   // room for half the last x label right of the axes
   const double right =
       std::max(0.8 * st.fontPx,
@@ -283,7 +286,7 @@ PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle&
   d.texts.push_back({{a.box.lo.x, rect.lo.y + 1.85 * st.fontPx}, plot.yLabel, st.textMuted, 0.0f});
   axesAndGrid(plot, a, st, d);
   seriesPaths(plot, a, st, d);
-  legend(plot, flow, {a.box.lo.x, a.box.hi.y + 2.9 * st.fontPx}, st, d);
+  if (plot.legend) legend(plot, flow, {a.box.lo.x, a.box.hi.y + 2.9 * st.fontPx}, st, d);
   return d;
 }
 

@@ -32,6 +32,7 @@ struct LogPlot {
   std::string xUnit, yUnit;  // appended to the tick labels ("B"), or empty
   std::vector<PlotSeries> series;
   std::vector<std::string> notes;  // lines under the legend ("halfplane: N <= 262 144")
+  bool legend = true;  // its legend under it (false: one shared with its neighbours, elsewhere)
 };
 
 // the colours and sizes a layout uses
@@ -82,8 +83,13 @@ struct PlotDrawing {
 // (`legendRoom` high at least: plots side by side keep their axes level).
 PlotDrawing layoutLogPlot(const LogPlot& plot, ScreenRect rect, const PlotStyle& style,
                           double legendRoom = 0.0);
-// the height of `plot`'s legend laid out in `rect`
-double legendHeight(const LogPlot& plot, ScreenRect rect, const PlotStyle& style);
+// the room left of a plot's axes: its widest y label's
+double axesLeft(const LogPlot& plot, const PlotStyle& style);
+// the height of `plot`'s legend flowed into rows `width` wide
+double legendHeight(const LogPlot& plot, double width, const PlotStyle& style);
+// `plot`'s legend alone, flowed from rect's top left into its width (a legend plots side by
+// side share, under their x axes' labels)
+PlotDrawing layoutLegend(const LogPlot& plot, ScreenRect rect, const PlotStyle& style);
 
 // a decade's label: 1, 10, 100, 1k .. 1T above one, 0.1 .. 1e-9 below
 std::string decadeText(int exponent);

@@ -55,6 +55,33 @@ std::string measuredLine(const ScalingConfig& c, bool solid, double columns) {
   return shapes + grouped(c.tracedPoints) + " traced, " + grouped(c.timedPoints) + " timed";
 }
 
+// plots side by side that share one legend: the first's series name every later one's
+struct LegendGroup {
+  std::size_t first = 0, last = 0;
+  double width = 0.0;  // the legend's width: from the first plot's axes across the last plot
+};
+
+// whether every series of `b` is named in `a`'s legend
+bool namedIn(const LogPlot& b, const LogPlot& a) {
+  return std::all_of(b.series.begin(), b.series.end(), [&a](const PlotSeries& s) {
+    return std::any_of(a.series.begin(), a.series.end(),
+                       [&s](const PlotSeries& t) { return t.name == s.name; });
+  });
+}
+
+std::vector<LegendGroup> legendGroups(const std::vector<LogPlot>& plots, const PlotsLayout& l,
+                                      const PlotStyle& style) {
+  std::vector<LegendGroup> groups;
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    if (groups.empty() || !namedIn(plots[i], plots[groups.back().first]))
+      groups.push_back({i, i, 0.0});
+    LegendGroup& g = groups.back();
+    g.last = i;
+    g.width = l.plots[i].hi.x - l.plots[g.first].lo.x - axesLeft(plots[g.first], style);
+  }
+  return groups;
+}
+
 }  // namespace
 
 std::size_t slidePlotCount() {
@@ -71,14 +98,27 @@ PlotStyle slidePlotStyle(Theme theme, double fontPx) {
 std::vector<PlotDrawing> slideDrawings(const ScalingResult& r, const ScalingConfig& c,
                                        const PlotStyle& style, const PlotsLayout& l, bool solid,
                                        const std::string& status) {
-  const std::vector<LogPlot> plots = solid ? plots3D(r, c) : plots2D(r, c);
-  std::vector<PlotDrawing> out;
+  std::vector<LogPlot> plots = solid ? plots3D(r, c) : plots2D(r, c);
+  plots.resize(std::min(plots.size(), l.plots.size()));
+  const std::vector<LegendGroup> groups = legendGroups(plots, l, style);
   // the legends' room the tallest one's, so that the axes stand level
   double room = 0.0;
-  for (std::size_t i = 0; i < plots.size() && i < l.plots.size(); ++i)
-    room = std::max(room, legendHeight(plots[i], l.plots[i], style));
-  for (std::size_t i = 0; i < plots.size() && i < l.plots.size(); ++i)
-    out.push_back(layoutLogPlot(plots[i], l.plots[i], style, room));
+  for (const LegendGroup& g : groups)
+    room = std::max(room, legendHeight(plots[g.first], g.width, style));
+  std::vector<PlotDrawing> out;
+  for (const LegendGroup& g : groups) {
+    const LogPlot shared = plots[g.first];
+    for (std::size_t i = g.first; i <= g.last; ++i) {
+      plots[i].legend = g.first == g.last;
+      out.push_back(layoutLogPlot(plots[i], l.plots[i], style, room));
+    }
+    if (g.first == g.last) continue;
+    // under the group's x labels, from the first plot's axes across the last plot
+    const double top = l.plots[g.first].hi.y - 0.3 * style.fontPx - room;
+    out.push_back(layoutLegend(
+        shared, {{l.plots[g.last].hi.x - g.width, top}, {l.plots[g.last].hi.x, top + room}},
+        style));
+  }
   PlotDrawing note;
   note.rect = l.note;
   note.background = style.background;
