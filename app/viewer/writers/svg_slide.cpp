@@ -209,4 +209,12 @@ void writeSlideBoxes(const SvgScene& s, std::string& out) {
   if (l.steps) writeSteps(s, *l.steps, out);
 }
 
+std::string plotsSlideSvg(const SvgScene& s) {
+  std::string out;
+  writeLetterbox(s, out);
+  out += s.plotsSvg;
+  writeSlideBoxes(s, out);
+  return out + "</svg>\n";
+}
+
 }  // namespace convexloc::viewer

@@ -43,5 +43,8 @@ void writeLetterbox(const SvgScene& scene, std::string& out);
 void writeScreenList(const SvgScene& scene, const DrawList& list, std::string& out);
 // the layout's title card, caption and Steps window, each a group of a box and its lines
 void writeSlideBoxes(const SvgScene& scene, std::string& out);
+// a plots slide's picture after its background, to the document's end: the bars, its plots
+// (its figure: no scene under them) and its boxes
+std::string plotsSlideSvg(const SvgScene& scene);
 
 }  // namespace convexloc::viewer

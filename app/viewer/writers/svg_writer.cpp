@@ -466,13 +466,7 @@ std::string sceneSvg(const SvgScene& s) {
   out += "<!-- convexloc-viewer: the scene as drawn, in window pixels -->\n";
   out += "<rect id=\"background\" width=\"100%\" height=\"100%\"" + paint("fill", s.background) +
          "/>\n";
-  if (!s.plotsSvg.empty()) {  // a plots slide: its plots are its figure, no scene under them
-    writeLetterbox(s, out);
-    out += s.plotsSvg;
-    writeSlideBoxes(s, out);
-    out += "</svg>\n";
-    return out;
-  }
+  if (!s.plotsSvg.empty()) return out + plotsSlideSvg(s);
   writeOutlines(s, out);
   std::size_t visible = 0, stride = 1;
   if (s.split) {

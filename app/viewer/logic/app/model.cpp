@@ -335,8 +335,7 @@ void Model::reset() {
   build.active = build.playing = false;
   ++build.version;
   if (whyOpen) scaling->cancel();
-  whyOpen = false;
-  whySolid = false;
+  whyOpen = whySolid = false;
   planes3d.setEnabled(false);
   requestFit();
 }
@@ -346,15 +345,9 @@ void Model::reset() {
 void Model::applyTeachingViews(const Options& o) {
   whySolid = o.whyPage.empty() ? dim == Dim::Three : o.whyPage == "3d";
   if (!o.whyFrom.empty()) {
-    ScalingResult recorded;
-    ScalingConfig config;
     std::string problem;
-    if (readScalingRecord(o.whyFrom, recorded, config, problem)) {
-      whyOpen = true;
-      scaling->show(std::move(config), std::move(recorded));
-    } else {
-      note("why-from: " + problem);
-    }
+    whyOpen = showScalingRecord(o.whyFrom, *scaling, problem);
+    if (!whyOpen) note("why-from: " + problem);
   } else if (o.why) {
     whyOpen = true;
     scaling->start(scalingConfig(o.whyMost));

@@ -186,4 +186,12 @@ bool writeScalingRecord(const std::string& path, const ScalingResult& r, const S
   return true;
 }
 
+bool showScalingRecord(const std::string& path, ScalingWorker& worker, std::string& error) {
+  ScalingResult r;
+  ScalingConfig c;
+  if (!readScalingRecord(path, r, c, error)) return false;
+  worker.show(std::move(c), std::move(r));
+  return true;
+}
+
 }  // namespace convexloc::viewer

@@ -27,6 +27,10 @@ bool parseScalingRecord(const std::string& text, const std::string& source, Scal
 bool readScalingRecord(const std::string& path, ScalingResult& r, ScalingConfig& c,
                        std::string& error);
 
+// reads the record file at `path` into `worker`, shown as if just measured; false and
+// `error` when it cannot be read or is not one
+bool showScalingRecord(const std::string& path, ScalingWorker& worker, std::string& error);
+
 // writes scalingRecord to `path`; false and `error` when it cannot be written
 bool writeScalingRecord(const std::string& path, const ScalingResult& r, const ScalingConfig& c,
                         std::string& error);
