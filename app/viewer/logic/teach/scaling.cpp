@@ -32,16 +32,15 @@ auto measurerOn(const ScalingConfig& c, std::shared_ptr<const Shape> shape, Gene
 
 // the measurer of every 2D method on core's regular n-gon
 std::function<ScalingSample(Method2D)> measurer2D(const ScalingConfig& c, std::size_t n) {
-  return measurerOn(
-      c, std::make_shared<const ConvexPolygon>(generatePolygon(PolygonKind::Regular, n, c.seed)),
-      generatePoints, measureMethod);
+  return measurerOn(c, std::make_shared<const ConvexPolygon>(
+                           generatePolygon(PolygonKind::Regular, n, c.seed)),
+                    generatePoints, measureMethod);
 }
 
 // the measurer of every 3D method on core's geodesic sphere of about f faces
 std::function<ScalingSample(Method3D)> measurer3D(const ScalingConfig& c, std::size_t f) {
-  return measurerOn(c,
-                    std::make_shared<const ConvexPolyhedron>(
-                        generatePolyhedron(PolyhedronKind::Geodesic, f, c.seed)),
+  return measurerOn(c, std::make_shared<const ConvexPolyhedron>(
+                           generatePolyhedron(PolyhedronKind::Geodesic, f, c.seed)),
                     generatePoints3D, measureMethod3D);
 }
 
