@@ -85,12 +85,31 @@ TEST(Lecture, SlidesKeysAndCaptions) {
   ASSERT_TRUE(a.options.probe);
   EXPECT_EQ(a.options.probe->y, 0.25);
   EXPECT_TRUE(a.gives("probe"));
-  EXPECT_FALSE(a.gives("theme"));
+  // the first slide gives the lecture the slides' look unless it names its own
+  EXPECT_TRUE(a.gives("theme"));
+  EXPECT_EQ(a.options.theme, cv::Theme::Light);
+  EXPECT_EQ(a.options.fontScale, 2.0f);
+  EXPECT_TRUE(a.options.hideUi);
   // figure 4's settings, overridden by the key after it
   const cv::Slide& b = p.lecture.slides[1];
   EXPECT_EQ(b.options.figure, 4);
   EXPECT_EQ(b.options.method, "uniform");
   EXPECT_EQ(b.options.resolution, 9u);
+}
+
+TEST(Lecture, AFirstSlidesOwnLookIsKept) {
+  const cv::ParsedLecture dark =
+      cv::parseLecture("slide A\ntheme dark\nfont-scale 1.5\nslide B\n", "t.lecture");
+  ASSERT_TRUE(dark.clean()) << joined(dark);
+  const cv::Slide& a = dark.lecture.slides[0];
+  EXPECT_EQ(a.options.theme, cv::Theme::Dark);
+  EXPECT_EQ(a.options.fontScale, 1.5f);
+  EXPECT_TRUE(a.options.hideUi);
+  // a first slide with a table to read keeps its panels and gets no hide-ui beside show-ui
+  const cv::ParsedLecture table = cv::parseLecture("slide A\nshow-ui\n", "t.lecture");
+  ASSERT_TRUE(table.clean()) << joined(table);
+  EXPECT_FALSE(table.lecture.slides[0].gives("hide-ui"));
+  EXPECT_FALSE(table.lecture.slides[0].options.hideUi);
 }
 
 TEST(Lecture, ErrorsNameFileAndLine) {
@@ -349,8 +368,7 @@ TEST(Lecture, AShowUiSlideShowsThePanelsForItselfAlone) {
 // slide's look all the same
 TEST(Lecture, AShowOpenedAtALaterSlideHasTheLecturesLook) {
   const cv::ParsedLecture p = cv::parseLecture(
-      "slide A\ntheme light\nfont-scale 2\nhide-ui\nslide B\nmethod wedge\nslide C\n",
-      "t.lecture");
+      "slide A\ntheme light\nfont-scale 2\nhide-ui\nslide B\nmethod wedge\nslide C\n", "t.lecture");
   ASSERT_TRUE(p.clean()) << joined(p);
   cv::Model m;
   cv::SlideShow show;

@@ -107,6 +107,53 @@ TEST(LectureProblems, TheSceneRefusalsGetTheLineOfTheirKey) {
   EXPECT_TRUE(contains(out, "2 problems; 3 slides, 2 of them not shown as written")) << out;
 }
 
+TEST(LectureProblems, EverySceneProblemOfASlideIsReportedAtItsKeysLineInOrder) {
+  const fs::path dir = scratchDir("keys");
+  writeFile(dir / "talk.lecture",
+            "slide Cube\n"         // 1
+            "generate geodesic\n"  // 2
+            "method cubemap\n"     // 3
+            "probe 0.5,0.5\n"      // 4: two numbers on a polyhedron
+            "resolution 100000\n"  // 5: past the cube map's largest
+            "slide Polygon\n"      // 6
+            "generate regular\n"   // 7
+            "cell 3\n"             // 8: a 3D key on a polygon
+            "method cubemap\n"     // 9: a 3D method on a polygon
+            "slide Pinned\n"       // 10
+            "generate geodesic\n"  // 11
+            "method cubemap\n"     // 12
+            "cell 999999\n");      // 13: no such cell
+  cv::ParsedLecture p = cv::loadLecture((dir / "talk.lecture").string());
+  ASSERT_TRUE(p.clean()) << p.problems.front();
+  cv::Model scratch;
+  cv::checkSlides(p, scratch);
+  const std::string file = (dir / "talk.lecture").string();
+  ASSERT_EQ(p.problems.size(), 5u);
+  EXPECT_EQ(p.problems[0].rfind(file + ":4: slide 'Cube': probe X,Y is for a 2D scene", 0), 0u)
+      << p.problems[0];
+  EXPECT_EQ(p.problems[1].rfind(file + ":5: slide 'Cube': ", 0), 0u) << p.problems[1];
+  EXPECT_TRUE(contains(p.problems[1], "resolution")) << p.problems[1];
+  EXPECT_EQ(p.problems[2].rfind(file + ":8: slide 'Polygon': cell is for a 3D scene", 0), 0u)
+      << p.problems[2];
+  EXPECT_EQ(p.problems[3].rfind(file + ":9: slide 'Polygon': 'cubemap' is a 3D method", 0), 0u)
+      << p.problems[3];
+  EXPECT_EQ(p.problems[4].rfind(file + ":13: slide 'Pinned': cell 999999: the scene has ", 0), 0u)
+      << p.problems[4];
+  EXPECT_TRUE(contains(p.problems[4], " cells (0 .. ")) << p.problems[4];
+}
+
+TEST(LectureProblems, ACameraElevationPastTheVerticalIsNamed) {
+  const fs::path dir = scratchDir("camera");
+  writeFile(dir / "talk.lecture",
+            "slide Cube\ngenerate geodesic\ncamera 30,95,fit\n"
+            "slide Down\ngenerate geodesic\ncamera 30,-90,fit\n");
+  const cv::ParsedLecture p = cv::loadLecture((dir / "talk.lecture").string());
+  const std::string file = (dir / "talk.lecture").string();
+  ASSERT_EQ(p.problems.size(), 1u);
+  EXPECT_EQ(p.problems[0], file + ":3: camera: the elevation 95 is not within -90 .. 90 degrees");
+  EXPECT_TRUE(p.lecture.slides[1].good());
+}
+
 TEST(LectureProblems, CheckExitsZeroWithOneLineOnTheShippedLecture) {
   cv::Options o;
   o.checkFile = std::string(CONVEXLOC_SOURCE_DIR) + "/assets/lectures/paper.lecture";

@@ -17,6 +17,9 @@ namespace {
 
 // the keys that set a slide's look: the first slide's are the lecture's, a later one's
 // its own
+// a slide's text scale unless the lecture gives its own (32 px text on the 1080p page, as the
+// paper's figures have)
+constexpr float kSlideFontScale = 2.0f;
 constexpr std::string_view kLookKeys[] = {"theme", "font-scale", "hide-ui", "show-ui", "present"};
 
 // the line without the blanks around it
@@ -262,6 +265,28 @@ class LectureReader {
   std::size_t line_ = 0;
 };
 
+// A lecture looks like slides unless its first slide says otherwise: the light theme, text
+// of 2.2% of the page or more (font-scale 2: 32 px on the 1080p page), no panels. The look
+// is the first slide's, so it becomes the whole lecture's.
+void giveTheSlideLook(Slide& first) {
+  const auto give = [&first](std::string_view key) {
+    first.keys.emplace_back(key);
+    first.keyLines.push_back(first.line);
+  };
+  if (!first.gives("theme")) {
+    first.options.theme = Theme::Light;
+    give("theme");
+  }
+  if (!first.gives("font-scale")) {
+    first.options.fontScale = kSlideFontScale;
+    give("font-scale");
+  }
+  if (!first.gives("hide-ui") && !first.gives("show-ui") && !first.gives("present")) {
+    first.options.hideUi = true;
+    give("hide-ui");
+  }
+}
+
 }  // namespace
 
 bool Slide::gives(std::string_view key) const {
@@ -295,6 +320,7 @@ ParsedLecture parseLecture(std::string_view text, const std::string& source,
   }
   ParsedLecture r = reader.finish();
   r.lecture.path = source;
+  if (!r.lecture.slides.empty()) giveTheSlideLook(r.lecture.slides.front());
   return r;
 }
 

@@ -2,6 +2,8 @@
 // model, --check's report and --notes's text.
 #include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "convexloc/error.hpp"
 #include "logic/app/lecture.hpp"
@@ -10,21 +12,11 @@
 namespace convexloc::viewer {
 namespace {
 
-// the keys whose values a scene's problem may come from, most specific first
-constexpr std::string_view kSceneKeys[] = {"shape", "preset",   "generate", "method",
-                                           "split", "why-from", "figure"};
-
-// The line of the key a scene's problem comes from: the shape when its path is named, else
-// the first key the problem names; the slide's own line when none.
-std::size_t lineOfProblem(const Slide& s, const std::string& problem) {
-  for (std::string_view key : kSceneKeys) {
-    const auto at = std::find(s.keys.begin(), s.keys.end(), key);
-    if (at == s.keys.end()) continue;
-    const bool named = key == "shape" ? problem.find(s.options.shape) != std::string::npos
-                                      : problem.find(key) != std::string::npos;
-    if (named) return s.keyLines[static_cast<std::size_t>(at - s.keys.begin())];
-  }
-  return s.line;
+// The line of the key a scene's problem comes from: the key the model names, else the slide's
+// own line (a key the slide does not give, such as a shape a preset chose).
+std::size_t lineOfKey(const Slide& s, std::string_view key) {
+  const auto at = std::find(s.keys.begin(), s.keys.end(), key);
+  return at == s.keys.end() ? s.line : s.keyLines[static_cast<std::size_t>(at - s.keys.begin())];
 }
 
 }  // namespace
@@ -36,10 +28,13 @@ void checkSlides(ParsedLecture& parsed, Model& model) {
     Options o = s.options;
     o.why = false;  // what is measured cannot be wrong; a recorded file can
     model.reset();
-    const std::string problem = model.apply(o);
-    if (!problem.empty())
-      s.problems.push_back(
-          located(lecture.path, lineOfProblem(s, problem), "slide '" + s.title + "': " + problem));
+    model.apply(o);
+    std::vector<std::pair<std::size_t, std::string>> found;
+    for (const ApplyProblem& p : model.applyProblems())
+      found.emplace_back(lineOfKey(s, p.key), "slide '" + s.title + "': " + p.text);
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [line, text] : found) s.problems.push_back(located(lecture.path, line, text));
   }
   model.reset();
   parsed.problems = lecture.allProblems();

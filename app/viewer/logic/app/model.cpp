@@ -35,6 +35,14 @@ unsigned visibleMaskFor(const std::string& show) {
   return kAllClasses;
 }
 
+// a pinned cell's number out of range, with the range
+std::string cellProblem(std::size_t k, std::size_t cells) {
+  std::string text =
+      "cell " + std::to_string(k) + ": the scene has " + std::to_string(cells) + " cells";
+  if (cells > 0) text += " (0 .. " + std::to_string(cells - 1) + ")";
+  return text;
+}
+
 }  // namespace
 
 float autoPointSize(std::size_t count, double areaPx) {
@@ -123,18 +131,18 @@ bool Model::applyPreset(std::string_view name) {
   return true;
 }
 
-void Model::note(const std::string& problem) {
-  if (firstProblem_.empty()) firstProblem_ = problem;
+void Model::note(const std::string& problem, std::string_view key) {
+  problems_.push_back({problem, std::string(key)});
   fail(problem);
 }
 
-void Model::noteSceneError() {
+void Model::noteSceneError(std::string_view key) {
   collectErrors();
-  note(error_);
+  note(error_, key);
 }
 
 std::string Model::apply(const Options& o) {
-  firstProblem_.clear();
+  problems_.clear();
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
   // the page stays until another is given (reset() keeps it): a lecture's is its first slide's
@@ -151,7 +159,8 @@ std::string Model::apply(const Options& o) {
   const bool method3d = o.method && parseMethod3D(*o.method).has_value();
   if (o.method && !method3d && !parseMethod2D(*o.method))
     note("unknown method '" + *o.method +
-         "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)");
+             "' (halfplane, wedge, slab, uniform, polar; halfspace, walk, cubemap)",
+         "method");
   applyShape(o, method3d);
   if (dim == Dim::Two)
     apply2d(o, method3d);
@@ -165,15 +174,15 @@ std::string Model::apply(const Options& o) {
   applyTeachingViews(o);
   collectErrors();
   requestFit();
-  return firstProblem_;
+  return problems_.empty() ? std::string() : problems_.front().text;
 }
 
 void Model::applyShape(const Options& o, bool method3d) {
   Traits3D::hullOfFiles = o.hull;
   if (!o.shape.empty()) {
-    if (!open(o.shape)) note(error_);
+    if (!open(o.shape)) note(error_, "shape");
   } else if (o.preset) {
-    if (!applyPreset(*o.preset)) note(error_);
+    if (!applyPreset(*o.preset)) note(error_, "preset");
   } else if (o.generate) {
     applyGenerator(o, method3d);
   } else if (o.solid || method3d || o.plane) {
@@ -188,20 +197,20 @@ void Model::applyGenerator(const Options& o, bool method3d) {
   const auto k3 = parsePolyhedronKind(*o.generate);
   if (k3 && (!k2 || method3d || o.solid)) {
     if (!scene3d().generate(*k3, o.n.value_or(320), seed))
-      noteSceneError();
+      noteSceneError("generate");
     else
       dim = Dim::Three;
   } else if (k2) {
-    if (!scene2d.generate(*k2, o.n.value_or(16), seed)) noteSceneError();
+    if (!scene2d.generate(*k2, o.n.value_or(16), seed)) noteSceneError("generate");
   } else {
-    note("unknown generator kind '" + *o.generate + "'");
+    note("unknown generator kind '" + *o.generate + "'", "generate");
   }
 }
 
 template <class Scene, class Method>
 void Model::applyToScene(Scene& scene, const Options& o, std::optional<Method> method) {
   if (method) scene.setMethod(*method);
-  if (o.resolution && !scene.setResolution(*o.resolution)) noteSceneError();
+  if (o.resolution && !scene.setResolution(*o.resolution)) noteSceneError("resolution");
   if (o.spray || o.seed || o.nearBoundary) {
     SpraySettings s = scene.spraySettings();
     if (o.spray) s.count = *o.spray;
@@ -212,7 +221,7 @@ void Model::applyToScene(Scene& scene, const Options& o, std::optional<Method> m
 }
 
 void Model::apply2d(const Options& o, bool method3d) {
-  if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon");
+  if (method3d) note("'" + *o.method + "' is a 3D method; the scene is a polygon", "method");
   applyToScene(scene2d, o, o.method ? parseMethod2D(*o.method) : std::nullopt);
   if (o.probe) scene2d.place(*o.probe);
   if (o.hover) scene2d.hover(*o.hover);
@@ -223,13 +232,16 @@ void Model::apply2d(const Options& o, bool method3d) {
     lines2d.frameLine();
     lines2d.sync(scene2d);
   }
-  if (o.probe3 || o.slice || o.cell) note("--probe X,Y,Z, --slice and --cell are for a 3D scene");
-  if (o.plane) note("--plane is for a 3D scene; the scene is a polygon");
+  if (o.probe3) note("probe X,Y,Z is for a 3D scene; the scene is a polygon (give X,Y)", "probe");
+  if (o.slice) note("slice is for a 3D scene; the scene is a polygon", "slice");
+  if (o.cell) note("cell is for a 3D scene; the scene is a polygon", "cell");
+  if (o.plane) note("plane is for a 3D scene; the scene is a polygon", "plane");
 }
 
 void Model::apply3d(const Options& o, bool method3d) {
   Scene3D& s3 = scene3d();
-  if (o.method && !method3d) note("'" + *o.method + "' is a 2D method; the scene is a polyhedron");
+  if (o.method && !method3d)
+    note("'" + *o.method + "' is a 2D method; the scene is a polyhedron", "method");
   applyToScene(s3, o, o.method ? parseMethod3D(*o.method) : std::nullopt);
   if (o.slice) s3.setSlice(*o.slice);
   if (o.probe3) s3.place(*o.probe3);
@@ -238,10 +250,11 @@ void Model::apply3d(const Options& o, bool method3d) {
     if (*o.cell < s3.cells().size())
       s3.pin(static_cast<std::ptrdiff_t>(*o.cell));
     else
-      note("--cell " + std::to_string(*o.cell) + ": the scene has " +
-           std::to_string(s3.cells().size()) + " cells");
+      note(cellProblem(*o.cell, s3.cells().size()), "cell");
   }
-  if (o.probe || o.hover || o.line) note("--probe X,Y, --hover and --line are for a 2D scene");
+  if (o.probe) note("probe X,Y is for a 2D scene; the scene is a polyhedron (give X,Y,Z)", "probe");
+  if (o.hover) note("hover is for a 2D scene; the scene is a polyhedron", "hover");
+  if (o.line) note("line is for a 2D scene; the scene is a polyhedron (see plane)", "line");
   // the Planes mode with the plane asked
   if (o.plane) {
     setPlanesMode(true);
@@ -303,8 +316,7 @@ void Model::applyFigureOptions(const Options& o) {
   } else if (*o.cellSecond < s3.cells().size()) {
     s3.pinSecond(static_cast<std::ptrdiff_t>(*o.cellSecond));
   } else {
-    note("--cell " + std::to_string(*o.cellSecond) + ": the scene has " +
-         std::to_string(s3.cells().size()) + " cells");
+    note(cellProblem(*o.cellSecond, s3.cells().size()), "cell");
   }
 }
 
@@ -347,7 +359,7 @@ void Model::applyTeachingViews(const Options& o) {
   if (!o.whyFrom.empty()) {
     std::string problem;
     whyOpen = showScalingRecord(o.whyFrom, *scaling, problem);
-    if (!whyOpen) note("why-from: " + problem);
+    if (!whyOpen) note("why-from: " + problem, "why-from");
   } else if (o.why) {
     whyOpen = true;
     scaling->start(scalingConfig(o.whyMost));
@@ -360,7 +372,7 @@ void Model::applyTeachingViews(const Options& o) {
       split.setMethod(*m);
       split.sync(scene2d);
     } else {
-      note("--split needs a 2D method (halfplane, wedge, slab, uniform, polar)");
+      note("split needs a 2D method (halfplane, wedge, slab, uniform, polar)", "split");
     }
   }
   if (o.buildStep) {

@@ -68,6 +68,12 @@ struct Settings {
 // the point diameter in pixels that keeps `count` points readable over `areaPx` pixels
 float autoPointSize(std::size_t count, double areaPx);
 
+// what Model::apply() could not do, and the option (a lecture's key, without "--") it comes from
+struct ApplyProblem {
+  std::string text;
+  std::string key;
+};
+
 class Model {
  public:
   Model() = default;
@@ -113,6 +119,8 @@ class Model {
   // Applies the command line's scene settings (shape, method, spray, probe, ...). Returns
   // an empty string, or what went wrong (the scene then keeps what could be applied).
   std::string apply(const Options& o);
+  // every problem the last apply() met, in order, each with the key it comes from
+  const std::vector<ApplyProblem>& applyProblems() const { return problems_; }
   // Puts back the viewer's default scenes and drawing options (not the theme, the text
   // size, the panels or the recent files), so that what one slide set does not leak into
   // the next.
@@ -172,10 +180,11 @@ class Model {
   void applyFigureOptions(const Options& o);
   // --why, --split, --build-step
   void applyTeachingViews(const Options& o);
-  // a problem apply() reports (the first one is returned), and a scene's last error as one
-  void note(const std::string& problem);
-  void noteSceneError();
-  std::string firstProblem_;
+  // a problem apply() reports, with the option (lecture key) it comes from, and a scene's last
+  // error as one
+  void note(const std::string& problem, std::string_view key);
+  void noteSceneError(std::string_view key);
+  std::vector<ApplyProblem> problems_;
   std::unique_ptr<Scene3D> scene3d_;
   std::uint64_t seen3d_ = 0;
   bool fitPending_ = true;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
@@ -45,7 +46,7 @@ bool oneOf(const std::string& v, std::initializer_list<std::string_view> choices
 
 // --slice AXIS=V or none
 // --camera AZ,EL,DIST or AZ,EL,fit
-bool applyCamera(const Values& v, Options& o, std::string&) {
+bool applyCamera(const Values& v, Options& o, std::string& why) {
   const std::string& t = v[0];
   const std::size_t last = t.rfind(',');
   if (last == std::string::npos) return false;
@@ -54,6 +55,11 @@ bool applyCamera(const Values& v, Options& o, std::string&) {
   if (tail == "fit") {
     if (!parsePoint3(t.substr(0, last) + ",1", q)) return false;
   } else if (!parsePoint3(t, q) || !(q.z > 0.0)) {
+    return false;
+  }
+  if (!(std::abs(q.y) <= 90.0)) {
+    why = "camera: the elevation " + t.substr(t.find(',') + 1, last - t.find(',') - 1) +
+          " is not within -90 .. 90 degrees";
     return false;
   }
   o.camera.angles = glm::dvec2(q.x, q.y);
