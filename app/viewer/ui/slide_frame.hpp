@@ -27,6 +27,12 @@ SlideMetrics windowMetrics();
 SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window,
                         bool withSteps = true);
 
+// What a slide draws apart from the live window: its tiny edges' zoom inset in the corner
+// its layout keeps (not beside the polygon), the name of only the cube face its query is on
+// (none without one: a cube inset names its face at its leader's end). Set before the fit
+// and each frame's drawing.
+void slideDrawOptions(Model& model, const UiState& ui);
+
 // a slide's figure room, which its scene, labels and insets keep to (empty: not a slide with
 // one, as the split view and Why O(1))
 ScreenRect figureRoomOf(const Model& model, const UiState& ui);

@@ -97,7 +97,7 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   // the room the scene is drawn in (the split view: both halves, their headings at the top)
   r.add("figure", plots ? ui.whyWindow : l.scene, page.lo);
   if (!plots) r.add("shape", shapeBox(model), page.lo);
-  if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))
+  if (const std::optional<ScreenInset> inset = sceneInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
   // the body text (the labels') or a slide's smaller text in its boxes
   r.minTextPx = ImGui::GetFontSize() * std::min(1.0, l.columnScale);

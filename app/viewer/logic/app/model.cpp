@@ -399,7 +399,8 @@ Box2 Model::figureBox2() const {
              {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
   }
   // a zoom inset beside the polygon (tiny edges) is fitted in view too
-  if (const auto inset = tinyEdgesInset(scene2d.polygon()); inset && !lines2d.enabled())
+  if (const auto inset = tinyEdgesInset(scene2d.polygon());
+      inset && !lines2d.enabled() && settings.view2d.zoomInset)
     box = {{std::min(box.lo.x, inset->frame.lo.x), std::min(box.lo.y, inset->frame.lo.y)},
            {std::max(box.hi.x, inset->frame.hi.x), std::max(box.hi.y, inset->frame.hi.y)}};
   return box;

@@ -162,6 +162,29 @@ double columnWidth(const SlideContent& c, const SlideMetrics& m, double band, do
   return wanted;
 }
 
+// The inset's corner of the figure room: toward what it magnifies, as wide as the shape
+// fitted to the room's height leaves beside it (at least a third of the room's height, at
+// most 45% of it with its text where that is more), the shape's room the rest.
+void reserveInset(const InsetWish& w, double aspect, const SlideMetrics& m, SlideLayout& l) {
+  const ScreenRect room = l.scene;
+  const glm::dvec2 size = room.size();
+  const double text = w.textRoom * (w.linesOver + w.linesUnder);
+  const double beside = size.x - std::min(size.x, size.y * aspect) - m.margin;
+  const double least = std::min(size.y / 3.0, size.y - text);
+  const double most = std::max(0.45 * size.y - text, least);
+  double side = std::clamp(beside, least, most);
+  const double width = std::max(side, std::min(w.textWidth, std::max(beside, side)));
+  side = std::min(side, width);
+  const bool right = w.toward.x >= 0.0, upper = w.toward.y <= 0.0;
+  l.inset.lo = {right ? room.hi.x - width : room.lo.x, upper ? room.lo.y : room.hi.y - side - text};
+  l.inset.hi = l.inset.lo + glm::dvec2(width, side + text);
+  // the frame a little inside its box: its border's width is drawn outside the square
+  const double pad = 0.1 * w.textRoom;
+  l.insetFrame.lo = {l.inset.middle().x - 0.5 * side + pad,
+                     l.inset.lo.y + w.textRoom * w.linesOver + pad};
+  l.insetFrame.hi = l.insetFrame.lo + glm::dvec2(side - 2.0 * pad);
+}
+
 // A slide with its text `scale` times the body size (`m` already scaled; `body` the
 // unscaled): the card and the caption as elsewhere, the Steps window at the top and the
 // legend at the bottom of a column on the right between them, the figure's room the rest.
@@ -197,6 +220,7 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   }
   const double left = width > 0.0 ? right - width - m.margin : right;
   l.scene = {{c.area.lo.x + m.margin, top}, {left, bottom}};
+  if (c.inset) reserveInset(*c.inset, c.shapeAspect, m, l);
   const glm::dvec2 room = l.scene.size(), a = c.area.size();
   return width <= most && room.x * room.y >= kFigureShare * a.x * a.y;
 }
@@ -215,6 +239,17 @@ SlideLayout layoutSlideColumn(const SlideContent& c, const SlideMetrics& body) {
 }
 
 }  // namespace
+
+ScreenRect SlideLayout::shapeRoom() const {
+  if (inset.hi.x <= inset.lo.x) return scene;
+  ScreenRect r = scene;
+  const double gap = 0.5 * (insetFrame.lo.y - inset.lo.y);  // the text's room apart
+  if (inset.middle().x > scene.middle().x)
+    r.hi.x = std::max(r.lo.x, inset.lo.x - gap);
+  else
+    r.lo.x = std::min(r.hi.x, inset.hi.x + gap);
+  return r;
+}
 
 SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {
   if (c.slide) return layoutSlideColumn(c, m);

@@ -93,6 +93,15 @@ struct TextBox {
   double padding = -1.0;   // the inner padding (negative: the window's own)
 };
 
+// a zoom inset a slide keeps a corner of its figure room for (tiny edges or faces
+// magnified): the corner is the one toward what it magnifies
+struct InsetWish {
+  glm::dvec2 toward{0.0};             // from the shape's middle toward what it magnifies, on screen
+  double textWidth = 0.0;             // its widest text line, window pixels
+  double textRoom = 0.0;              // a text line's room over or under the frame
+  int linesOver = 1, linesUnder = 1;  // text lines over and under the frame
+};
+
 // everything on a slide (or in the live scene) that the layout places
 struct SlideContent {
   ScreenRect area;          // the scene's area: the page (or window) less the panels
@@ -108,6 +117,7 @@ struct SlideContent {
   // a slide: the Steps window and the legend in a column on the right, the figure's room
   // the rest between the card and the caption (at least kFigureShare of the page)
   bool slide = false;
+  std::optional<InsetWish> inset;  // a slide's zoom inset
 };
 
 // the share of the page a slide's figure room keeps at least
@@ -122,8 +132,13 @@ struct SlideLayout {
   TextBox caption;                   // the caption box, centred at the bottom
   std::optional<StepsLayout> steps;  // over the lower left corner, above the caption
   ScreenRect legend;                 // over the lower right corner, above the caption
-  ScreenRect scene;                  // the room the shape is fitted into, beside all of them
+  ScreenRect scene;                  // the figure's room, beside all of them
   double columnScale = 1.0;          // a slide's side column: its text over the body size
+  // a slide's zoom inset: its box (the frame with its text) in the figure room's corner
+  // toward what it magnifies, and its frame; empty without one
+  ScreenRect inset, insetFrame;
+  // the room the shape is fitted into: the figure room less the inset's strip beside it
+  ScreenRect shapeRoom() const;
 };
 
 // The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not
