@@ -4,8 +4,9 @@
 # room at least 56% of the page with the figure filling 80% of its width or height, a 3D
 # query's x_T and x apart, the page outside every box bare. The first slide and those named
 # after the lecture (one of each layout: a Steps
-# window, a long legend, 3D figures with and without a query, the dual views) at 1280x720,
-# 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5. A lecture
+# window, a long legend, 3D figures with and without a query, the dual views, the split
+# view, the zoom insets) at 1280x720, 1280x800, 1920x1080 and 3840x2160, and at 1280x720
+# with --font-scale 0.75, 1.5 and 2. A lecture
 # exported whole has each slide's SVG, rendered by rsvg-convert, within RMSE 0.05 of its PNG,
 # and each slide's first frame alike to its settled one (first_frame.sh).
 # usage: slide_rules.sh XVFB_RUN VIEWER PIXELS COMPARER OUTDIR LECTURE:SLIDES[:whole]...
@@ -46,6 +47,8 @@ for spec in "$@"; do
   for size in 1280x720 1280x800 1920x1080 3840x2160; do
     export_at "$out/$name-subset.lecture" "$size" "$out/$name-$size"
   done
-  export_at "$out/$name-subset.lecture" 1280x720 "$out/$name-font1.5" --font-scale 1.5
+  for scale in 0.75 1.5 2; do
+    export_at "$out/$name-subset.lecture" 1280x720 "$out/$name-font$scale" --font-scale "$scale"
+  done
 done
 exit $status

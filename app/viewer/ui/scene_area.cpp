@@ -59,10 +59,10 @@ ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
   // the split view's halves share the whole area (its Steps window stays over it), below
   // the halves' headings (logic/teach/slide_layout's splitHeading: 2.2 body heights high)
   ScreenRect room = frameLayout(model, ui, window, false).scene;
-  const double font = ImGui::GetFontSize();
   // (a slide's halves are its figure room, the same room)
   const double top = onSlide(model, ui) ? room.lo.y : sceneArea(model, ui, window).lo.y;
-  room.lo.y = std::max(room.lo.y, top + 2.2 * font + 0.625 * font);
+  room.lo.y = std::max(
+      room.lo.y, top + splitHeadingBand(windowMetrics(), splitHeadingScale(model, ui, window)));
   return room;
 }
 

@@ -130,6 +130,12 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   return layoutSlide(c, m);
 }
 
+double splitHeadingScale(const Model& model, const UiState& ui, glm::dvec2 window) {
+  if (!onSlide(model, ui)) return 1.0;
+  const double page = pageOf(model, ui, window).page.size().y;
+  return std::min(1.0, kSplitHeadingShare * page / ImGui::GetFontSize());
+}
+
 void slideDrawOptions(Model& model, const UiState& ui) {
   const bool slide = onSlide(model, ui);
   model.settings.view2d.zoomInset = !slide;

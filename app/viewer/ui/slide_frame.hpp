@@ -33,6 +33,10 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
 // and each frame's drawing.
 void slideDrawOptions(Model& model, const UiState& ui);
 
+// the split view's headings' text over the body size: a slide's kSplitHeadingShare of the
+// page's height where that is smaller, else 1
+double splitHeadingScale(const Model& model, const UiState& ui, glm::dvec2 window);
+
 // a slide's figure room, which its scene, labels and insets keep to (empty: not a slide with
 // one, as the split view and Why O(1))
 ScreenRect figureRoomOf(const Model& model, const UiState& ui);

@@ -88,16 +88,22 @@ std::vector<ScreenRect> barsAround(ScreenRect outer, ScreenRect inner) {
   return bars;
 }
 
-TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m) {
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m,
+                     double scale) {
   TextBox t;
   if (text.empty()) return t;
   t.lines = {text};
-  const double pad = 0.6 * m.font;
-  const glm::dvec2 size = m.measure(text);
+  t.scale = scale;
+  const double pad = 0.6 * m.font * scale;
+  const glm::dvec2 size = m.measure(text) * scale;
   const glm::dvec2 at{std::max(half.middle().x - 0.5 * size.x, half.lo.x + 2.0 * pad),
-                      half.lo.y + 1.5 * pad};
+                      half.lo.y + pad};
   t.box = {at - glm::dvec2(pad, 0.5 * pad), at + size + glm::dvec2(pad, 0.5 * pad)};
   return t;
+}
+
+double splitHeadingBand(const SlideMetrics& m, double scale) {
+  return 2.2 * m.font * scale;
 }
 
 double SlideMetrics::widthAt(std::string_view text, double scale) const {
@@ -197,6 +203,7 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   l.title.restScale = scale;
   l.title.scale *= scale;
   l.caption.scale *= scale;
+  l.caption.restScale = scale;  // its lines' gap: every line is at its first size
   const double top = (l.title.lines.empty() ? c.area.lo.y : l.title.box.hi.y) + m.margin;
   double bottom = (c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y) - m.margin;
   if (c.captionRoom > 0)

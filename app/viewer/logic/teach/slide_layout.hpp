@@ -89,7 +89,7 @@ struct TextBox {
   ScreenRect box;
   std::vector<std::string> lines;
   double scale = 1.0;      // the first lines' size (the title's, or every caption line's)
-  double restScale = 1.0;  // the rest's (a figure's caption under its title)
+  double restScale = 1.0;  // the rest's (a figure's caption under its title), and the gaps
   double padding = -1.0;   // the inner padding (negative: the window's own)
 };
 
@@ -157,9 +157,16 @@ StepsLayout layoutStepsInColumn(const StepsContent& steps, const SlideMetrics& m
 Rgba stepColour(const Step& step, const Palette& pal, Rgba result);
 
 // The split view's heading over a half (`half`, window pixels): `text` centred over it,
-// never starting left of it, near its top; the box is the text and a padding of 0.6 body
-// heights around it (half that above and below). The window and the SVG draw it from here.
-TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics);
+// never starting left of it, 0.3 text heights under its top; the box is the text and a
+// padding of 0.6 text heights around it (half that above and below); the text `scale` times
+// the body size. The window and the SVG draw it from here.
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics,
+                     double scale = 1.0);
+// the band the halves' headings take over them: the box and 0.3 text heights over and under
+double splitHeadingBand(const SlideMetrics& metrics, double scale = 1.0);
+// a slide's halves' headings: text 2.4% of the page's height (a slide's figure keeps the
+// height the halves need to fill their room)
+inline constexpr double kSplitHeadingShare = 0.024;
 
 // the title card's, caption's and legend's text sizes relative to the body text
 inline constexpr double kTitleScale = 1.3;
