@@ -152,7 +152,7 @@ void drawZoomInsetOnScreen(const ConvexPolygon& polygon, const ZoomInset& inset,
       out.segment(at(p), at(q), pal.polygonEdge, 2.25f);
   }
   // the vertices as small discs (markers are world-drawn: these are short crosses of fills)
-  const double r = std::max(2.0, 0.18 * textRoom);
+  const double r = std::max(2.0, std::min(0.18 * textRoom, 0.02 * (frame.hi.x - frame.lo.x)));
   for (std::size_t i = 0; i < polygon.size(); ++i)
     if (inBox(src, polygon.vertex(i))) {
       const glm::dvec3 v = at(polygon.vertex(i));

@@ -170,16 +170,20 @@ double columnWidth(const SlideContent& c, const SlideMetrics& m, double band, do
 
 // The inset's corner of the figure room: toward what it magnifies, as wide as the shape
 // fitted to the room's height leaves beside it (at least a third of the room's height, at
-// most 45% of it with its text where that is more), the shape's room the rest.
+// most 45% of it with its text where that is more; in a narrow room at most 40% of its
+// width), the shape's room the rest.
 void reserveInset(const InsetWish& w, double aspect, const SlideMetrics& m, SlideLayout& l) {
   const ScreenRect room = l.scene;
   const glm::dvec2 size = room.size();
   const double text = w.textRoom * (w.linesOver + w.linesUnder);
   const double beside = size.x - std::min(size.x, size.y * aspect) - m.margin;
-  const double least = std::min(size.y / 3.0, size.y - text);
-  const double most = std::max(0.45 * size.y - text, least);
+  // (a narrow room: the inset at most 40% of its width, the shape the rest)
+  const double narrow = 0.4 * size.x;
+  const double least = std::min({size.y / 3.0, size.y - text, narrow});
+  const double most = std::min(std::max(0.45 * size.y - text, least), narrow);
   double side = std::clamp(beside, least, most);
-  const double width = std::max(side, std::min(w.textWidth, std::max(beside, side)));
+  const double width =
+      std::min(std::max(side, std::min(w.textWidth, std::max(beside, side))), narrow);
   side = std::min(side, width);
   const bool right = w.toward.x >= 0.0, upper = w.toward.y <= 0.0;
   l.inset.lo = {right ? room.hi.x - width : room.lo.x, upper ? room.lo.y : room.hi.y - side - text};
