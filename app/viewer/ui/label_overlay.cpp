@@ -57,8 +57,8 @@ std::vector<PixelBox> labelKeepOffs(const UiState& ui) {
   std::vector<PixelBox> boxes;
   for (const float* w : {ui.legendRect, ui.stepsRect})
     if (w[2] > w[0]) boxes.push_back({{w[0], w[1]}, {w[2], w[3]}});
-  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.splitHeadings[0].box,
-                              ui.splitHeadings[1].box})
+  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.layout.note.box,
+                              ui.splitHeadings[0].box, ui.splitHeadings[1].box})
     if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) boxes.push_back({r.lo, r.hi});
   return boxes;
 }

@@ -127,6 +127,13 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   if (onSlide(model, ui)) c.captionRoom = 2;
   c.slide = onSlide(model, ui);
   if (c.slide) c.inset = insetWish(model);
+  if (c.slide && model.dim == Dim::Two && !model.lines2d.enabled() && !model.split.enabled())
+    if (const auto note = offsetNote(model.scene2d.polygon())) {
+      // the corner on vertex 0's side of the polygon (it is ringed there)
+      const Box2 b = model.scene2d.polygon().bounds();
+      c.note = *note;
+      c.noteRight = model.scene2d.polygon().vertex(0).x >= 0.5 * (b.lo.x + b.hi.x);
+    }
   return layoutSlide(c, m);
 }
 
@@ -138,7 +145,7 @@ double splitHeadingScale(const Model& model, const UiState& ui, glm::dvec2 windo
 
 void slideDrawOptions(Model& model, const UiState& ui) {
   const bool slide = onSlide(model, ui);
-  model.settings.view2d.zoomInset = !slide;
+  model.settings.view2d.zoomInset = !slide;  // (and the offset note: a slide boxes it)
   unsigned names = 0x3fu;
   if (slide) {
     names = 0u;

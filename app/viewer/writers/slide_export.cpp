@@ -99,6 +99,8 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   if (!plots) r.add("shape", shapeBox(model), page.lo);
   if (const std::optional<ScreenInset> inset = sceneInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
+  else if (!l.note.lines.empty())
+    r.add("inset", l.note.box, page.lo);  // a note on the figure, in the inset's corner
   // the body text (the labels') or a slide's smaller text in its boxes
   r.minTextPx = ImGui::GetFontSize() * std::min(1.0, l.columnScale);
   if (plots && ui.whyPlots.fontPx > 0.0) r.minTextPx = std::min(r.minTextPx, ui.whyPlots.fontPx);

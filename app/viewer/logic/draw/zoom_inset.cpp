@@ -201,6 +201,7 @@ void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const
   const Box2 box = polygon.bounds();
   const Vec2 v = polygon.vertex(0);
   out.marker({v.x, v.y, 0.0}, pal.text, 14.0f, MarkerShape::Ring);
+  if (note.empty()) return;
   out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
   out.labels.back().essential = true;  // the shape's point: never left out for a vertex number
 }
@@ -209,7 +210,7 @@ void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, Draw
                           bool zoom) {
   if (const auto inset = tinyEdgesInset(polygon); inset && zoom)
     drawZoomInset(polygon, *inset, pal, out);
-  if (const auto note = offsetNote(polygon)) drawOffsetNote(polygon, *note, pal, out);
+  if (const auto note = offsetNote(polygon)) drawOffsetNote(polygon, zoom ? *note : "", pal, out);
 }
 
 }  // namespace convexloc::viewer

@@ -51,7 +51,8 @@ void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const P
 // none for a polygon near the origin.
 std::optional<std::string> offsetNote(const ConvexPolygon& polygon);
 
-// the note over the middle of the polygon's box, and a ring at vertex 0
+// the note over the middle of the polygon's box (none where it is empty), and a ring at
+// vertex 0
 void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const Palette& palette,
                     DrawList& out);
 
@@ -65,8 +66,8 @@ void drawZoomInsetOnScreen(const ConvexPolygon& polygon, const ZoomInset& inset,
                            const std::function<std::optional<glm::dvec2>(Vec2)>& project,
                            DrawList& out);
 
-// the zoom inset where the polygon has tiny edges (`zoom`: beside it in world units), the
-// offset note where it lies far out
+// the zoom inset where the polygon has tiny edges and the offset note where it lies far out
+// (`zoom`: both in world units, else vertex 0's ring alone: a slide draws them in its layout)
 void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& palette, DrawList& out,
                           bool zoom = true);
 

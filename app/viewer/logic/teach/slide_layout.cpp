@@ -195,6 +195,19 @@ void reserveInset(const InsetWish& w, double aspect, const SlideMetrics& m, Slid
   l.insetFrame.hi = l.insetFrame.lo + glm::dvec2(side - 2.0 * pad);
 }
 
+// The note's box in the figure room's upper corner, its lines at most 40% of the room wide.
+void noteBox(const SlideContent& c, const SlideMetrics& m, double scale, SlideLayout& l) {
+  TextBox& t = l.note;
+  const ScreenRect room = l.scene;
+  t.lines = wrapAt(c.note, 0.4 * room.size().x - 2.0 * m.padding, 1.0, m);
+  t.scale = t.restScale = scale;
+  t.padding = m.padding;
+  const glm::dvec2 size = glm::dvec2(widest(t.lines, 1.0, m), linesHeight(t.lines.size(), 1.0, m)) +
+                          glm::dvec2(2.0 * m.padding);
+  t.box.lo = {c.noteRight ? room.hi.x - size.x : room.lo.x, room.lo.y};
+  t.box.hi = t.box.lo + size;
+}
+
 // A slide with its text `scale` times the body size (`m` already scaled; `body` the
 // unscaled): the card and the caption as elsewhere, the Steps window at the top and the
 // legend at the bottom of a column on the right between them, the figure's room the rest.
@@ -232,6 +245,7 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   const double left = width > 0.0 ? right - width - m.margin : right;
   l.scene = {{c.area.lo.x + m.margin, top}, {left, bottom}};
   if (c.inset) reserveInset(*c.inset, c.shapeAspect, m, l);
+  if (!c.note.empty()) noteBox(c, m, scale, l);
   const glm::dvec2 room = l.scene.size(), a = c.area.size();
   return width <= most && room.x * room.y >= kFigureShare * a.x * a.y;
 }
@@ -252,13 +266,16 @@ SlideLayout layoutSlideColumn(const SlideContent& c, const SlideMetrics& body) {
 }  // namespace
 
 ScreenRect SlideLayout::shapeRoom() const {
-  if (inset.hi.x <= inset.lo.x) return scene;
   ScreenRect r = scene;
-  const double gap = 0.5 * (insetFrame.lo.y - inset.lo.y);  // the text's room apart
-  if (inset.middle().x > scene.middle().x)
-    r.hi.x = std::max(r.lo.x, inset.lo.x - gap);
+  // the inset's (or the note's) strip off, a line's room apart
+  const bool framed = inset.hi.x > inset.lo.x;
+  const ScreenRect strip = framed ? inset : note.box;
+  if (strip.hi.x <= strip.lo.x) return r;
+  const double gap = framed ? 0.5 * (insetFrame.lo.y - inset.lo.y) : note.padding;
+  if (strip.middle().x > scene.middle().x)
+    r.hi.x = std::max(r.lo.x, strip.lo.x - gap);
   else
-    r.lo.x = std::min(r.hi.x, inset.hi.x + gap);
+    r.lo.x = std::min(r.hi.x, strip.hi.x + gap);
   return r;
 }
 

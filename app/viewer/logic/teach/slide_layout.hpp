@@ -118,6 +118,10 @@ struct SlideContent {
   // the rest between the card and the caption (at least kFigureShare of the page)
   bool slide = false;
   std::optional<InsetWish> inset;  // a slide's zoom inset
+  // a slide's note on its figure (a far polygon's digits): a box in the figure room's upper
+  // corner on the side `noteRight` names, its text the slide's box text
+  std::string note;
+  bool noteRight = true;
 };
 
 // the share of the page a slide's figure room keeps at least
@@ -137,7 +141,9 @@ struct SlideLayout {
   // a slide's zoom inset: its box (the frame with its text) in the figure room's corner
   // toward what it magnifies, and its frame; empty without one
   ScreenRect inset, insetFrame;
-  // the room the shape is fitted into: the figure room less the inset's strip beside it
+  TextBox note;  // a slide's note on its figure, in the figure room's upper corner
+  // the room the shape is fitted into: the figure room less the inset's or the note's strip
+  // beside it
   ScreenRect shapeRoom() const;
 };
 
