@@ -158,15 +158,14 @@ void drawScene(cv::Model& model, cv::Renderer& renderer, cv::SceneView& view,
   view.drawOverlay(model, renderer, fb, size.pixelRatio);
 }
 
-// the pointer's gestures and the keys' actions on the scene (a window with hands only)
-void takeInput(const cv::Window& window, cv::Interaction& interaction, cv::Model& model,
-               cv::UiState& ui) {
+// the pointer's gestures on the scene (a window with hands only)
+void takePointer(const cv::Window& window, cv::Interaction& interaction, cv::Model& model,
+                 cv::UiState& ui) {
   cv::PointerInput pointer = cv::pointerInput(window.hovered());
   // after a clicker's slide change the resting pointer hovers nothing until it moves
   if (pointer.delta != glm::dvec2(0.0)) ui.pointerStill = false;
   if (ui.pointerStill) pointer.hovering = false;
   interaction.update(model.split.toLeft(pointer), model);
-  for (const cv::Action& a : cv::keyActions()) cv::perform(a, model, ui);
 }
 
 // The frame's files: the next slide of --export, the screenshot and SVG asked for (by a key,
@@ -254,7 +253,7 @@ int Viewer::start(const char* argv0) {
   if (!cv::startLecture(model_, ui_, options_, headless_)) return 1;
   // the web page: what the link asked for and could not be shown, in the page's message box
   if (ui_.webPage && !model_.error().empty()) cv::showPageProblem(model_.error());
-  exporter_ = std::make_unique<cv::SlideExporter>(options_.exportDir);
+  exporter_ = std::make_unique<cv::SlideExporter>(options_.exportDir, options_.exportFirst);
   style_ = std::make_unique<cv::StyleKeeper>(model_.settings, window_.contentScale());
   const std::string shaderDir = shaderDirFor(options_, argv0);
   if (!renderer_.init(shaderDir)) {
@@ -272,6 +271,11 @@ bool Viewer::frame() {
   // the web page, idle: nothing new to draw, the picture on the page stays
   if (!window_.takeEvents(!headless_ && idle_.idle())) return true;
   model_.settings.drawer = window_.narrow();
+  // the keys' actions (a window with hands), or --export's next slide, before the frame's
+  // text size, fit and layout: a slide shown now is final on its first frame
+  if (!headless_)
+    for (const cv::Action& a : cv::keyActions()) cv::perform(a, model_, ui_);
+  if (!exporter_->turnPage(model_, ui_)) exitCode_ = 1;
   // a slide's page scales with the window; outside the ImGui frame, a new text size on
   // screen (a new page scale, zoom or text size) makes the font again and refits the scene
   model_.settings.pageScale =
@@ -284,7 +288,7 @@ bool Viewer::frame() {
   model_.camera3d.setViewport(size.window);
   const bool dropped = openDropped(model_, ui_);
   if (model_.takeFitRequest()) cv::fitScene(model_, ui_, size.window, stats_.seconds());
-  if (!headless_) takeInput(window_, interaction_, model_, ui_);
+  if (!headless_) takePointer(window_, interaction_, model_, ui_);
   if (options_.animate && stats_.frames() > 0) nudgeCamera(model_);
   model_.lines2d.sync(model_.scene2d);
   model_.collectErrors();

@@ -3,15 +3,16 @@
 # well-formed SVG; a lecture whose only slide is bad must exit 1 and write nothing, one with
 # some bad slides writes the others and exits 1.
 # With PIXELS (viewer_layout_pixels), every slide's layout.json record is checked against
-# the slide rules and its PNG (slide_rules.py).
-# usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR [PIXELS]
+# the slide rules and its PNG (slide_rules.py); with COMPARER (viewer_image_compare), every
+# slide's first frame against its settled one (first_frame.sh).
+# usage: lecture_export.sh XVFB_RUN VIEWER CHECKER LECTURE OUTDIR [PIXELS [COMPARER]]
 set -euo pipefail
-xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5 pixels=${6:-}
+xvfb=$1 viewer=$2 checker=$3 lecture=$4 out=$5 pixels=${6:-} compare=${7:-}
 rm -rf "$out"
 "$xvfb" -a -s "-screen 0 1280x800x24" "$viewer" --lecture "$lecture" --export "$out/good" \
-  --size 960x540
+  --size 960x540 ${compare:+--export-first}
 slides=$(grep -c '^slide ' "$lecture")
-pngs=$(find "$out/good" -name 'slide-*.png' | wc -l)
+pngs=$(find "$out/good" -name 'slide-??.png' | wc -l)
 if [[ $slides -ne $pngs ]]; then
   echo "expected $slides slides, found $pngs PNGs" >&2
   exit 1
@@ -24,11 +25,14 @@ fi
 for svg in "$out"/good/slide-*.svg; do
   python3 -c 'import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])' "$svg"
 done
-for png in "$out"/good/slide-*.png; do
+for png in "$out"/good/slide-??.png; do
   "$checker" "$png" --size 960x540 --not-uniform 0.0,0.0,1.0,1.0
 done
 if [[ -n $pixels ]]; then
   python3 "$(dirname "$0")/slide_rules.py" "$out/good" "$pixels"
+fi
+if [[ -n $compare ]]; then
+  "$(dirname "$0")/first_frame.sh" "$compare" "$out/good"
 fi
 # a bad lecture: FILE:LINE on stderr, exit 1, no PNG
 mkdir -p "$out"

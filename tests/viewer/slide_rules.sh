@@ -4,10 +4,11 @@
 # room at least 56% of the page with the figure filling 80% of its width or height, a 3D
 # query's x_T and x apart, the page outside every box bare. The first slide and those named
 # after the lecture (one of each layout: a Steps
-# window, a long legend, 3D figures with and without a query, the dual views, Why O(1)'s
-# plots) at 1280x720,
-# 1280x800, 1920x1080 and 3840x2160, and at 1280x720 with --font-scale 1.5. A lecture
-# exported whole has each slide's SVG, rendered by rsvg-convert, within RMSE 0.05 of its PNG.
+# window, a long legend, 3D figures with and without a query, the dual views, the split
+# view, the zoom insets, Why O(1)'s plots) at 1280x720, 1280x800, 1920x1080 and 3840x2160,
+# and at 1280x720 with --font-scale 0.75, 1.5 and 2. A lecture
+# exported whole has each slide's SVG, rendered by rsvg-convert, within RMSE 0.05 of its PNG,
+# and each slide's first frame alike to its settled one (first_frame.sh).
 # usage: slide_rules.sh XVFB_RUN VIEWER PIXELS COMPARER OUTDIR LECTURE:SLIDES[:whole]...
 set -euo pipefail
 xvfb=$1 viewer=$2 pixels=$3 compare=$4 out=$5
@@ -30,7 +31,8 @@ for spec in "$@"; do
   if [[ $keep == *:whole ]]; then keep=${keep%:whole} whole=1; fi
   name=$(basename "$lecture" .lecture)
   if [[ -n $whole ]]; then
-    export_at "$lecture" 1280x720 "$out/$name-720"
+    export_at "$lecture" 1280x720 "$out/$name-720" --export-first
+    "$here/first_frame.sh" "$compare" "$out/$name-720" || status=1
     for svg in "$out/$name-720"/slide-*.svg; do
       rsvg-convert "$svg" -o "$svg.png"
       "$compare" "$svg.png" "${svg%.svg}.png" --max-rmse 0.05 || status=1
@@ -45,6 +47,8 @@ for spec in "$@"; do
   for size in 1280x720 1280x800 1920x1080 3840x2160; do
     export_at "$out/$name-subset.lecture" "$size" "$out/$name-$size"
   done
-  export_at "$out/$name-subset.lecture" 1280x720 "$out/$name-font1.5" --font-scale 1.5
+  for scale in 0.75 1.5 2; do
+    export_at "$out/$name-subset.lecture" 1280x720 "$out/$name-font$scale" --font-scale "$scale"
+  done
 done
 exit $status

@@ -8,8 +8,8 @@
 #include "logic/app/interaction.hpp"
 #include "logic/app/model.hpp"
 #include "logic/app/options.hpp"
-#include "logic/scene/scene3d.hpp"
 #include "logic/draw/structure3d.hpp"
+#include "logic/scene/scene3d.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Location;
@@ -93,10 +93,10 @@ TEST(Scene3D, StlAndPlyOpenAndAPointCloudShowsItsHull) {
 TEST(Scene3D, HullOpensAMeshWhoseFaceIsNotPlanar) {
   // a cube of quads with one corner pushed off its top face: refused as given, named; with
   // --hull the viewer opens the convex hull of its corners
-  const std::string off = writeTemp(
-      "viewer_bent.off",
-      "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 1 -1\n-1 -1 1\n1 -1 1\n-1 1 1\n"
-      "1 1 0.999999\n4 7 6 4 5\n4 0 2 3 1\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
+  const std::string off =
+      writeTemp("viewer_bent.off",
+                "OFF\n8 6 0\n-1 -1 -1\n1 -1 -1\n-1 1 -1\n1 1 -1\n-1 -1 1\n1 -1 1\n-1 1 1\n"
+                "1 1 0.999999\n4 7 6 4 5\n4 0 2 3 1\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n");
   cv::Model m;
   EXPECT_FALSE(m.open(off));
   EXPECT_NE(m.error().find("is not planar"), std::string::npos) << m.error();
@@ -339,4 +339,25 @@ TEST(Interaction3D, AClickPlacesNoPointOnAHiddenPlane) {
   m.settings.view3d.showSlice = true;
   clickAt(ia, m, p.screen);
   EXPECT_TRUE(s.probe());
+}
+
+// a slide names only the cube faces it asks for (its query's), the live view all six
+TEST(Structure3D, OnlyTheCubeFacesAskedForAreNamed) {
+  cv::Scene3D s;
+  const cv::Palette& pal = cv::paletteFor(cv::Theme::Dark);
+  const auto faceNames = [&](unsigned mask) {
+    cv::View3DOptions opt;
+    opt.faceNames = mask;
+    cv::DrawList out;
+    cv::buildStructure3D(s, pal, opt, 0b111111u, out);
+    std::vector<std::string> names;
+    for (const cv::Label& l : out.labels)
+      for (const std::string_view n : convexloc::kCubeFaceNames)
+        if (l.text == n) names.push_back(l.text);
+    return names;
+  };
+  EXPECT_EQ(faceNames(0x3fu).size(), 6u);
+  EXPECT_TRUE(faceNames(0u).empty());
+  EXPECT_EQ(faceNames(1u << 3),
+            std::vector<std::string>{std::string(convexloc::kCubeFaceNames[3])});
 }

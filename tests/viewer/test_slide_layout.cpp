@@ -340,3 +340,44 @@ TEST(SlideLayout, APlotsSlidesPlotsFillItsFigureAtSlideTextSize) {
       }
     }
 }
+
+// a zoom inset keeps the figure room's corner toward what it magnifies, off every other
+// box, and the shape is fitted beside it, keeping the room's height
+TEST(SlideLayout, AnInsetKeepsTheCornerTowardWhatItMagnifies) {
+  for (const glm::dvec2 window : {glm::dvec2(1280.0, 720.0), glm::dvec2(3840.0, 2160.0)})
+    for (const double text : {0.75, 1.0, 2.0})
+      for (const glm::dvec2 toward : {glm::dvec2(1.0, -1.0), glm::dvec2(-3.0, 0.5)}) {
+        const cv::PageFit fit = cv::fitPage(window);
+        cv::SlideContent c;
+        c.area = fit.page;
+        c.title = "24 / 27: Degenerate in 3D: tiny faces";
+        c.caption = "A corner rounded by tiny triangles: the cube map refines its cells there.";
+        c.legend = glm::dvec2(330.0, 260.0) * fit.scale * text;
+        c.captionRoom = 2;
+        c.slide = true;
+        const cv::SlideMetrics m = metricsAt(fit.scale * text);
+        c.inset = cv::InsetWish{toward, 14.0 * m.font * 0.55, 1.6 * m.font, 2, 1};
+        const cv::SlideLayout l = cv::layoutSlide(c, m);
+        const std::string at = std::to_string(window.x) + " text " + std::to_string(text);
+        ASSERT_GT(l.inset.size().x, 0.0) << at;
+        // in the figure room, at the corner toward the tiny things
+        EXPECT_TRUE(inside(l.inset, l.scene)) << at;
+        EXPECT_DOUBLE_EQ(toward.x > 0.0 ? l.inset.hi.x : l.inset.lo.x,
+                         toward.x > 0.0 ? l.scene.hi.x : l.scene.lo.x)
+            << at;
+        EXPECT_DOUBLE_EQ(toward.y < 0.0 ? l.inset.lo.y : l.inset.hi.y,
+                         toward.y < 0.0 ? l.scene.lo.y : l.scene.hi.y)
+            << at;
+        EXPECT_TRUE(inside(l.insetFrame, l.inset)) << at;
+        EXPECT_GE(l.insetFrame.size().x, l.scene.size().y / 3.0 - 0.2 * 1.6 * m.font - 1e-9) << at;
+        // off the other boxes and the shape's room, which keeps the figure room's height
+        for (const auto& [name, box] : boxesOf(l))
+          if (name != "scene") {
+            EXPECT_FALSE(overlap(l.inset, box)) << name << " at " << at;
+          }
+        const cv::ScreenRect shape = l.shapeRoom();
+        EXPECT_FALSE(overlap(l.inset, shape)) << at;
+        EXPECT_DOUBLE_EQ(shape.size().y, l.scene.size().y) << at;
+        EXPECT_GE(shape.size().x, 0.8 * l.scene.size().y) << at;
+      }
+}

@@ -18,13 +18,13 @@ namespace {
 bool same(const View2DOptions& a, const View2DOptions& b) {
   return a.showStructure == b.showStructure && a.showTints == b.showTints &&
          a.showBox == b.showBox && a.showOctants == b.showOctants && a.showLabels == b.showLabels &&
-         a.showHandles == b.showHandles;
+         a.showHandles == b.showHandles && a.zoomInset == b.zoomInset;
 }
 
 bool same(const View3DOptions& a, const View3DOptions& b) {
   return a.showMesh == b.showMesh && a.transparent == b.transparent && a.wireframe == b.wireframe &&
          a.showCube == b.showCube && a.showTints == b.showTints && a.showSlice == b.showSlice &&
-         a.showLabels == b.showLabels;
+         a.showLabels == b.showLabels && a.faceNames == b.faceNames;
 }
 
 // the camera has wandered so far from the origin, in pixels, that floats would blur

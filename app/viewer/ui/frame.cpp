@@ -179,6 +179,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   const glm::dvec2 window{io.DisplaySize.x, io.DisplaySize.y};
   // the slide laid out once for this frame: every box below, the labels and the SVG use it
   tickStepPlayer(model, now);
+  slideDrawOptions(model, ui);
   ui.layout = frameLayout(model, ui, window);
   refitOnNewRoom(model, ui, window, now);
   drawLetterbox(model, ui, window);

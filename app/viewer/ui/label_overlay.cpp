@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "logic/draw/cube_inset.hpp"
+#include "logic/draw/zoom_inset.hpp"
 #include "logic/view/scene_labels.hpp"
 #include "ui/panels/views_panel.hpp"
 #include "ui/scene_area.hpp"
@@ -56,16 +57,17 @@ std::vector<PixelBox> labelKeepOffs(const UiState& ui) {
   std::vector<PixelBox> boxes;
   for (const float* w : {ui.legendRect, ui.stepsRect})
     if (w[2] > w[0]) boxes.push_back({{w[0], w[1]}, {w[2], w[3]}});
-  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.splitHeadings[0].box,
-                              ui.splitHeadings[1].box})
+  for (const ScreenRect& r : {ui.layout.title.box, ui.layout.caption.box, ui.layout.note.box,
+                              ui.splitHeadings[0].box, ui.splitHeadings[1].box})
     if (r.hi.x > r.lo.x && r.hi.y > r.lo.y) boxes.push_back({r.lo, r.hi});
   return boxes;
 }
 
-std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) {
+const std::optional<CubeInset>& cubeInsetFound(const Model& model) {
+  static const std::optional<CubeInset> none;
   if (model.dim != Dim::Three || !model.hasScene3d() || model.planes3d.enabled() ||
       !model.settings.view3d.showCube)
-    return std::nullopt;
+    return none;
   const Scene3D& scene = model.scene3d();
   const auto& cells = scene.cells();
   // the patch, found again only when the cells change (a scan of every cell)
@@ -79,40 +81,116 @@ std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) 
     found.cells = &cells;
     found.structure = scene.versions().structure;
   }
-  const std::optional<CubeInset>& inset = found.inset;
-  const auto centre = scene.centre();
-  if (!inset || !centre) return std::nullopt;
+  return found.inset;
+}
+
+std::optional<ZoomInset> zoomInsetFound(const Model& model) {
+  if (model.dim != Dim::Two || model.lines2d.enabled() || model.split.enabled()) return {};
+  return tinyEdgesInset(model.scene2d.polygon());
+}
+
+namespace {
+
+// the cube inset's frame: a slide's corner kept for it, else the free corner found
+std::optional<PixelBox> cubeInsetFrame(const Model& model, const UiState& ui,
+                                       const CubeInset& inset, const ScreenProjection& project,
+                                       double room) {
+  if (ui.layout.insetFrame.hi.x > ui.layout.insetFrame.lo.x)
+    return PixelBox{ui.layout.insetFrame.lo, ui.layout.insetFrame.hi};
   // the cube on screen: its eight corners
-  const ScreenProjection project = sceneProjection(model);
+  const Scene3D& scene = model.scene3d();
   const double h = scene.cubeHalfSize();
   std::vector<glm::dvec2> cube;
   for (int k = 0; k < 8; ++k) {
     const glm::dvec3 corner =
-        toGlm(*centre) + h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+        toGlm(*scene.centre()) + h * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
     if (const auto p = project(corner)) cube.emplace_back(*p);
   }
-  const glm::dvec2 vp = model.camera3d.viewport();
-  const ScreenRect figure = figureRoomOf(model, ui);
-  const ScreenRect area = figure.hi.x > figure.lo.x ? figure : sceneArea(model, ui, vp);
   if (cube.size() < 8) return std::nullopt;  // a corner behind the eye
-  const double room = 1.6 * measureText("Ag").y;
+  const ScreenRect figure = figureRoomOf(model, ui);
+  const ScreenRect area =
+      figure.hi.x > figure.lo.x ? figure : sceneArea(model, ui, model.camera3d.viewport());
   const double wide =
-      std::max(measureText(cubeInsetTitle(*inset)).x, measureText(cubeInsetZoomText(*inset)).x);
-  const std::vector<PixelBox> keepOff = labelKeepOffs(ui);
-  const auto frame = placeCubeInset({area.lo, area.hi}, cube, keepOff, {wide + 8.0, room});
+      std::max(measureText(cubeInsetTitle(inset)).x, measureText(cubeInsetZoomText(inset)).x);
+  return placeCubeInset({area.lo, area.hi}, cube, labelKeepOffs(ui), {wide + 8.0, room});
+}
+
+// the cube map's inset (logic/draw/cube_inset) in window pixels
+std::optional<ScreenInset> cubeInsetOver(const Model& model, const UiState& ui) {
+  const std::optional<CubeInset>& inset = cubeInsetFound(model);
+  if (!inset || !model.scene3d().centre()) return std::nullopt;
+  const auto& cells = model.scene3d().cells();
+  const ScreenProjection project = sceneProjection(model);
+  const double room = insetTextRoom();
+  const auto frame = cubeInsetFrame(model, ui, *inset, project, room);
   if (!frame) return std::nullopt;
   ScreenInset out;
   out.box = {frame->lo - glm::dvec2(0.0, room), frame->hi + glm::dvec2(0.0, room)};
+  // a slide's corner: the title in two lines over the frame
+  const bool corner = ui.layout.inset.hi.x > ui.layout.inset.lo.x;
+  if (corner) out.box = {ui.layout.inset.lo, ui.layout.inset.hi};
   std::optional<glm::dvec2> anchor;
   if (const auto a = project(cubeInsetAnchor(*inset, cells))) anchor = glm::dvec2(*a);
-  drawCubeInset(*inset, cells, paletteFor(model.settings.theme), *frame, room, anchor, out.list);
+  drawCubeInset(*inset, cells, paletteFor(model.settings.theme), *frame, room, anchor, out.list,
+                corner);
   if (anchor) {  // the scene's labels keep off the ring and the name by it
     const Label& name = out.list.labels.back();
     const glm::dvec2 at(name.p), half = 0.5 * measureText(name.text) + glm::dvec2(2.0);
     out.mark = {glm::min(*anchor - 10.0, at - half), glm::max(*anchor + 10.0, at + half)};
   }
-  // lines as wide as the scene's are drawn
-  for (Segment& g : out.list.segments) g.width *= static_cast<float>(model.settings.drawScale());
+  return out;
+}
+
+// the tiny edges' inset on a slide, in the corner its layout keeps (off a slide it is drawn
+// beside the polygon, in world units)
+std::optional<ScreenInset> zoomInsetOver(const Model& model, const UiState& ui) {
+  const ScreenRect frame = ui.layout.insetFrame;
+  const std::optional<ZoomInset> inset = zoomInsetFound(model);
+  if (!inset || !(frame.hi.x > frame.lo.x)) return std::nullopt;
+  const double room = insetTextRoom();
+  ScreenInset out;
+  out.box = {ui.layout.inset.lo, ui.layout.inset.hi};
+  const Camera2D& camera = model.camera2d;
+  const auto project = [&camera](Vec2 p) -> std::optional<glm::dvec2> {
+    return camera.toScreen({p.x, p.y});
+  };
+  drawZoomInsetOnScreen(model.scene2d.polygon(), *inset, paletteFor(model.settings.theme),
+                        {frame.lo, frame.hi}, room, project, out.list);
+  if (const auto s = project({0.5 * (inset->source.lo.x + inset->source.hi.x),
+                              0.5 * (inset->source.lo.y + inset->source.hi.y)}))
+    out.mark = {*s - room, *s + room};
+  return out;
+}
+
+}  // namespace
+
+std::vector<PixelBox> ScreenInset::keepOff() const {
+  std::vector<PixelBox> boxes = leader;
+  boxes.push_back(box);
+  if (!mark.empty()) boxes.push_back(mark);
+  return boxes;
+}
+
+double insetTextRoom() {
+  return 1.6 * measureText("Ag").y;
+}
+
+std::optional<ScreenInset> sceneInsetOver(const Model& model, const UiState& ui) {
+  std::optional<ScreenInset> out =
+      model.dim == Dim::Three ? cubeInsetOver(model, ui) : zoomInsetOver(model, ui);
+  if (!out) return out;
+  const double step = 0.5 * insetTextRoom();
+  for (Segment& g : out->list.segments) {
+    g.width *= static_cast<float>(model.settings.drawScale());  // as wide as the scene's
+    if (g.dash <= 0.0f) continue;
+    // the leader (the dashed line): boxes a half line apart along it
+    const glm::dvec2 a(g.a), b(g.b);
+    const int n = static_cast<int>(glm::length(b - a) / step) + 1;
+    for (int k = 0; k <= n; ++k) {
+      const glm::dvec2 p = a + (static_cast<double>(k) / n) * (b - a);
+      out->leader.push_back({p - 0.5 * step, p + 0.5 * step});
+    }
+  }
   return out;
 }
 
@@ -151,10 +229,9 @@ void drawLabels(Model& model, const UiState& ui, const SceneView& view) {
   if (plotsSlide(model, ui)) return;  // its plots are the figure: no scene under them
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   std::vector<PixelBox> windows = labelKeepOffs(ui);
-  if (const auto inset = cubeInsetOver(model, ui)) {
+  if (const auto inset = sceneInsetOver(model, ui)) {
     paintScreenList(inset->list, dl, paletteFor(model.settings.theme));
-    windows.push_back(inset->box);
-    if (!inset->mark.empty()) windows.push_back(inset->mark);
+    for (const PixelBox& b : inset->keepOff()) windows.push_back(b);
   }
   const glm::dvec2 vp =
       model.dim == Dim::Two ? model.camera2d.viewport() : model.camera3d.viewport();

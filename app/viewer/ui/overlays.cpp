@@ -127,6 +127,9 @@ void captionBox(Model& model, UiState& ui, ScreenRect area) {
   // a caption of another height (a new slide's) leaves the scene other room: refit
   if (std::abs(ui.captionHeight - before) > 1.0f) model.requestFit();
   layoutBox("##caption", t, t.lines.size(), paletteFor(model.settings.theme).text);
+  const TextBox& note = ui.layout.note;  // a slide's note on its figure
+  if (!note.lines.empty())
+    layoutBox("##note", note, note.lines.size(), paletteFor(model.settings.theme).text);
 }
 
 void toast(Model& model, UiState& ui, ScreenRect area, double now) {

@@ -54,18 +54,20 @@ float rightPanelWidth(const Model& model, glm::dvec2 window) {
 ScreenRect fitRoom(const Model& model, const UiState& ui, glm::dvec2 window,
                    const SlideLayout* thisFrame) {
   const bool split = model.dim == Dim::Two && model.split.enabled() && !model.lines2d.enabled();
-  if (!split) return thisFrame ? thisFrame->scene : frameLayout(model, ui, window).scene;
+  if (!split)
+    return thisFrame ? thisFrame->shapeRoom() : frameLayout(model, ui, window).shapeRoom();
   // the split view's halves share the whole area (its Steps window stays over it), below
   // the halves' headings (logic/teach/slide_layout's splitHeading: 2.2 body heights high)
   ScreenRect room = frameLayout(model, ui, window, false).scene;
-  const double font = ImGui::GetFontSize();
   // (a slide's halves are its figure room, the same room)
   const double top = onSlide(model, ui) ? room.lo.y : sceneArea(model, ui, window).lo.y;
-  room.lo.y = std::max(room.lo.y, top + 2.2 * font + 0.625 * font);
+  room.lo.y = std::max(
+      room.lo.y, top + splitHeadingBand(windowMetrics(), splitHeadingScale(model, ui, window)));
   return room;
 }
 
 void fitScene(Model& model, UiState& ui, glm::dvec2 window, double now) {
+  slideDrawOptions(model, ui);
   const ScreenRect room = fitRoom(model, ui, window);
   model.fit(room, onSlide(model, ui));
   ui.fittedScene = room;

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include "logic/app/legend.hpp"
+#include "ui/label_overlay.hpp"
 #include "ui/scene_area.hpp"
 #include "ui/widgets.hpp"
 
@@ -34,6 +35,46 @@ std::optional<StepsContent> stepsContent(const Model& model, const UiState& ui) 
   c.controls = !onSlide(model, ui);  // a slide's steps move by its keys
   c.codeWanted = ui.stepsCode;
   return c;
+}
+
+// the 3D inset's wish: toward the patch from the cube's middle as the camera sees them
+std::optional<InsetWish> cubeInsetWish(const Model& model) {
+  const std::optional<CubeInset>& inset = cubeInsetFound(model);
+  const auto centre = inset ? model.scene3d().centre() : std::nullopt;
+  if (!centre) return std::nullopt;
+  const ScreenProjection project = sceneProjection(model);
+  InsetWish w;
+  const auto a = project(cubeInsetAnchor(*inset, model.scene3d().cells()));
+  const auto c = project(toGlm(*centre));
+  w.toward = a && c ? glm::dvec2(*a - *c) : glm::dvec2(1.0, -1.0);
+  w.textWidth = measureText(cubeInsetZoomText(*inset)).x;
+  for (const std::string& line : cubeInsetTitleLines(*inset))
+    w.textWidth = std::max(w.textWidth, measureText(line).x);
+  w.linesOver = 2;
+  return w;
+}
+
+// the 2D inset's wish: toward the tiny edges from the polygon's middle (y down on screen)
+std::optional<InsetWish> zoomInsetWish(const Model& model) {
+  const std::optional<ZoomInset> inset = zoomInsetFound(model);
+  if (!inset) return std::nullopt;
+  const Box2 b = model.scene2d.polygon().bounds(), s = inset->source;
+  InsetWish w;
+  w.toward = {s.lo.x + s.hi.x - b.lo.x - b.hi.x, b.lo.y + b.hi.y - s.lo.y - s.hi.y};
+  w.textWidth = measureText("zoom " + magnificationText(*inset)).x;
+  w.linesUnder = 0;
+  return w;
+}
+
+// a slide's zoom inset, where its shape has one
+std::optional<InsetWish> insetWish(const Model& model) {
+  std::optional<InsetWish> w =
+      model.dim == Dim::Three ? cubeInsetWish(model) : zoomInsetWish(model);
+  if (w) {
+    w->textRoom = insetTextRoom();
+    w->textWidth += 8.0;
+  }
+  return w;
 }
 
 // the slide card's title: "4 / 27: Wedges" in a lecture, the figure's own title alone
@@ -90,7 +131,35 @@ SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window
   if (onSlide(model, ui)) c.captionRoom = 2;
   c.slide = onSlide(model, ui);
   if (plotsSlide(model, ui)) c.plots = slidePlotCount();
+  if (c.slide) c.inset = insetWish(model);
+  if (c.slide && model.dim == Dim::Two && !model.lines2d.enabled() && !model.split.enabled())
+    if (const auto note = offsetNote(model.scene2d.polygon())) {
+      // the corner on vertex 0's side of the polygon (it is ringed there)
+      const Box2 b = model.scene2d.polygon().bounds();
+      c.note = *note;
+      c.noteRight = model.scene2d.polygon().vertex(0).x >= 0.5 * (b.lo.x + b.hi.x);
+    }
   return layoutSlide(c, m);
+}
+
+double splitHeadingScale(const Model& model, const UiState& ui, glm::dvec2 window) {
+  if (!onSlide(model, ui)) return 1.0;
+  const double page = pageOf(model, ui, window).page.size().y;
+  return std::min(1.0, kSplitHeadingShare * page / ImGui::GetFontSize());
+}
+
+void slideDrawOptions(Model& model, const UiState& ui) {
+  const bool slide = onSlide(model, ui);
+  model.settings.view2d.zoomInset = !slide;  // (and the offset note: a slide boxes it)
+  unsigned names = 0x3fu;
+  if (slide) {
+    names = 0u;
+    if (model.dim == Dim::Three && model.hasScene3d()) {
+      const auto& probe = model.scene3d().probe();
+      if (probe && probe->trace.cubeFace >= 0) names |= 1u << probe->trace.cubeFace;
+    }
+  }
+  model.settings.view3d.faceNames = names;
 }
 
 ScreenRect figureRoomOf(const Model& model, const UiState& ui) {

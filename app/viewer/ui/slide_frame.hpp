@@ -31,6 +31,16 @@ SlideMetrics windowMetrics();
 SlideLayout frameLayout(const Model& model, const UiState& ui, glm::dvec2 window,
                         bool withSteps = true);
 
+// What a slide draws apart from the live window: its tiny edges' zoom inset in the corner
+// its layout keeps (not beside the polygon), the name of only the cube face its query is on
+// (none without one: a cube inset names its face at its leader's end). Set before the fit
+// and each frame's drawing.
+void slideDrawOptions(Model& model, const UiState& ui);
+
+// the split view's headings' text over the body size: a slide's kSplitHeadingShare of the
+// page's height where that is smaller, else 1
+double splitHeadingScale(const Model& model, const UiState& ui, glm::dvec2 window);
+
 // a slide's figure room, which its scene, labels, insets or plots keep to (empty: not a slide
 // with one, as the split view and the Why O(1) window in presentation mode)
 ScreenRect figureRoomOf(const Model& model, const UiState& ui);

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "logic/view/label_layout.hpp"
 #include "logic/app/legend.hpp"
 #include "logic/scene/presets.hpp"
+#include "logic/view/label_layout.hpp"
 
 namespace convexloc::viewer {
 
@@ -186,16 +186,33 @@ void swatch(const LegendRow& r) {
   }
 }
 
+// the width a row's swatch takes in the text flow, its gap after it included
+float swatchWidth(const LegendRow& r) {
+  const float h = ImGui::GetTextLineHeight();
+  const float w = r.swatch == Swatch::Disc ? 0.54f * h : 0.7f * h;
+  return w + 4.0f + ImGui::GetStyle().ItemSpacing.x;
+}
+
 // The class rows: disc and name, the count right-aligned, the share; with `toggles`, a
 // check box before each that shows or hides the class.
 void classTable(const std::vector<LegendRow>& rows, Model* toggles) {
   const Location order[3] = {Location::Inside, Location::Boundary, Location::Outside};
   const bool counted = !rows.empty() && !rows[0].count.empty();
-  // name, count and share in columns that fit their text (auto-sized windows too)
-  if (!ImGui::BeginTable("classes", counted ? 3 : 1, ImGuiTableFlags_SizingFixedFit)) return;
-  float countWidth = 0.0f;
-  for (const LegendRow& r : rows)
+  // name, count and share in columns as wide as their text from the first frame on (a
+  // table left to fit them learns their widths a frame late)
+  float nameWidth = 0.0f, countWidth = 0.0f, shareWidth = 0.0f;
+  for (const LegendRow& r : rows) {
+    nameWidth = std::max(nameWidth, swatchWidth(r) + ImGui::CalcTextSize(r.text.c_str()).x);
     countWidth = std::max(countWidth, ImGui::CalcTextSize(r.count.c_str()).x);
+    shareWidth = std::max(shareWidth, ImGui::CalcTextSize(r.share.c_str()).x);
+  }
+  if (toggles) nameWidth += ImGui::GetFrameHeight() + ImGui::GetStyle().ItemSpacing.x;
+  if (!ImGui::BeginTable("classes", counted ? 3 : 1, ImGuiTableFlags_SizingFixedFit)) return;
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, nameWidth);
+  if (counted) {
+    ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed, countWidth);
+    ImGui::TableSetupColumn("share", ImGuiTableColumnFlags_WidthFixed, shareWidth);
+  }
   for (std::size_t i = 0; i < rows.size() && i < 3; ++i) {
     const LegendRow& r = rows[i];
     ImGui::PushID(static_cast<int>(i));

@@ -107,8 +107,10 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
   // the room the scene is drawn in (the split view: both halves, their headings at the top)
   r.add("figure", whyWindow ? ui.whyWindow : l.scene, page.lo);
   if (!plots) r.add("shape", shapeBox(model), page.lo);
-  if (const std::optional<ScreenInset> inset = cubeInsetOver(model, ui))
+  if (const std::optional<ScreenInset> inset = sceneInsetOver(model, ui))
     r.add("inset", {inset->box.lo, inset->box.hi}, page.lo);
+  else if (!l.note.lines.empty())
+    r.add("inset", l.note.box, page.lo);  // a note on the figure, in the inset's corner
   // the body text (the labels') or a slide's smaller text in its boxes; a plots slide has
   // no labels: its card's, caption's and plots' text
   r.minTextPx = plotsSlide(model, ui) ? boxTextPx(l, ImGui::GetFontSize())
@@ -121,16 +123,18 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
 
 bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui, int width,
                                int height) {
-  if (!active() || finished_) return true;
+  if (!active() || finished_ || next_) return true;
   // a slide measuring Why O(1) is written with its plots finished
   if (model.whyOpen && model.scaling->running()) return true;
-  if (++frames_ < kFramesPerSlide) return true;
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   char name[32];
   std::snprintf(name, sizeof name, "slide-%02zu", ui.show.current + 1);
   const std::string path = (std::filesystem::path(dir_) / name).string();
-  std::string problem = saveScreenshot(path + ".png", width, height);
+  std::string problem;
+  if (++frames_ == 1 && first_) problem = saveScreenshot(path + "-first.png", width, height);
+  if (problem.empty() && frames_ < kFramesPerSlide) return true;
+  if (problem.empty()) problem = saveScreenshot(path + ".png", width, height);
   if (problem.empty()) writeSceneSvg(model, view, ui, path + ".svg", problem);
   records_.push_back(recordSlide(model, ui, {width, height}));
   // the next slide that can be shown as written (the others were reported at the start)
@@ -144,16 +148,21 @@ bool SlideExporter::afterFrame(Model& model, const SceneView& view, UiState& ui,
   }
   ++written_;
   frames_ = 0;
-  if (next >= ui.show.lecture.slides.size()) {
+  if (next >= ui.show.lecture.slides.size())
     finished_ = true;
-    return true;
-  }
-  problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(next));
-  if (!problem.empty()) {
-    std::cerr << "convexloc-viewer: slide " << next + 1 << ": " << problem << "\n";
-    return false;
-  }
+  else
+    next_ = next;
   return true;
+}
+
+bool SlideExporter::turnPage(Model& model, UiState& ui) {
+  if (!next_) return true;
+  const std::size_t next = *next_;
+  next_.reset();
+  const std::string problem = showSlideNow(model, ui, static_cast<std::ptrdiff_t>(next));
+  if (problem.empty()) return true;
+  std::cerr << "convexloc-viewer: slide " << next + 1 << ": " << problem << "\n";
+  return false;
 }
 
 }  // namespace convexloc::viewer

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,19 +25,26 @@ SlideRecord recordSlide(const Model& model, const UiState& ui, glm::dvec2 window
 
 class SlideExporter {
  public:
-  // exports to `dir` (made when missing) when it is not empty; inactive otherwise
-  explicit SlideExporter(std::string dir) : dir_(std::move(dir)) {}
+  // exports to `dir` (made when missing) when it is not empty; inactive otherwise; `first`:
+  // each slide's first frame is written too, as slide-NN-first.png
+  explicit SlideExporter(std::string dir, bool first = false)
+      : dir_(std::move(dir)), first_(first) {}
   bool active() const { return !dir_.empty(); }
   // Called after each frame is drawn (before the swap): writes the slide once its frames
-  // are done and shows the next. False on a problem, printed on stderr.
+  // are done (and its first frame where asked). False on a problem, printed on stderr.
   bool afterFrame(Model& model, const SceneView& view, UiState& ui, int width, int height);
+  // Called where a window takes its keys, before the frame's fit and layout: the next slide
+  // is shown there, as PageDown shows it. False on a problem, printed on stderr.
+  bool turnPage(Model& model, UiState& ui);
   // every slide written
   bool finished() const { return finished_; }
   std::size_t written() const { return written_; }
 
  private:
   std::string dir_;
+  bool first_ = false;
   int frames_ = 0;
+  std::optional<std::size_t> next_;  // the slide to show at the next frame's start
   std::size_t written_ = 0;
   std::vector<SlideRecord> records_;
   bool finished_ = false;

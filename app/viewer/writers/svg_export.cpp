@@ -172,11 +172,10 @@ bool writeSceneSvg(const Model& model, const SceneView& view, const UiState& ui,
     }
   }
   // the cube map's zoom inset, where the window draws it; the labels keep off it
-  const std::optional<ScreenInset> inset = cubeInsetOver(model, ui);
+  const std::optional<ScreenInset> inset = sceneInsetOver(model, ui);
   if (inset) {
     s.screen.push_back(&inset->list);
-    s.keepOff.push_back(inset->box);
-    if (!inset->mark.empty()) s.keepOff.push_back(inset->mark);
+    for (const PixelBox& b : inset->keepOff()) s.keepOff.push_back(b);
   }
   if (model.dim == Dim::Two)
     scene2d(model, view, ui, s);

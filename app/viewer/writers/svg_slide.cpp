@@ -206,6 +206,7 @@ void writeSlideBoxes(const SvgScene& s, std::string& out) {
   }
   writeTextBox(s, "title", l.title, l.titleLines, s.text, out);
   writeTextBox(s, "caption", l.caption, l.caption.lines.size(), s.text, out);
+  if (!l.note.lines.empty()) writeTextBox(s, "note", l.note, l.note.lines.size(), s.text, out);
   if (l.steps) writeSteps(s, *l.steps, out);
 }
 

@@ -444,9 +444,9 @@ void writeSplit(const SvgScene& s, std::string& out, std::size_t& visible, std::
   out += "</g>\n<line id=\"divider\" x1=\"" + num(split.right.lo.x) + "\" y1=\"" +
          num(split.right.lo.y) + "\" x2=\"" + num(split.right.lo.x) + "\" y2=\"" +
          num(split.right.hi.y) + "\"" + paint("stroke", s.textMuted) + " stroke-width=\"2\"/>\n";
-  const double em = s.fontPixels;
   for (const TextBox& t : split.headings) {
     if (t.lines.empty()) continue;
+    const double em = s.fontPixels * t.scale;
     const double pad = 0.6 * 1.164 * em;
     out += "<g class=\"heading\"><rect x=\"" + num(t.box.lo.x) + "\" y=\"" + num(t.box.lo.y) +
            "\" width=\"" + num(t.box.size().x) + "\" height=\"" + num(t.box.size().y) +

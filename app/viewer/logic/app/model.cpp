@@ -406,7 +406,8 @@ Box2 Model::figureBox2() const {
              {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)}};
   }
   // a zoom inset beside the polygon (tiny edges) is fitted in view too
-  if (const auto inset = tinyEdgesInset(scene2d.polygon()); inset && !lines2d.enabled())
+  if (const auto inset = tinyEdgesInset(scene2d.polygon());
+      inset && !lines2d.enabled() && settings.view2d.zoomInset)
     box = {{std::min(box.lo.x, inset->frame.lo.x), std::min(box.lo.y, inset->frame.lo.y)},
            {std::max(box.hi.x, inset->frame.hi.x), std::max(box.hi.y, inset->frame.hi.y)}};
   return box;
@@ -448,7 +449,9 @@ void Model::fit(ScreenRect area, bool tight) {
   }
   if (dim == Dim::Two) {
     lines2d.sync(scene2d);
-    camera2d.fit(figureBox2(), area, tight ? 0.09 : 0.13);
+    // a slide's halves: a narrower margin (the headings take a band over them)
+    const bool halves = split.enabled() && !lines2d.enabled();
+    camera2d.fit(figureBox2(), area, tight ? (halves ? 0.05 : 0.09) : 0.13);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
       const double scale = area.size().x / pendingView->width;

@@ -358,6 +358,10 @@ const OptionSpec kOptions[] = {
      "and DIR/slide-NN.svg (PNG and SVG), and exit; a slide with problems is reported and "
      "left out, the exit code then 1",
      "a directory", true, setText<&Options::exportDir>},
+    {"--export-first", "", 0, kLectures,
+     "with --export: also write each slide's first frame after it is shown, as "
+     "DIR/slide-NN-first.png (a slide's layout and camera are final on it)",
+     "", true, setFlag<&Options::exportFirst>},
     {"--check", "FILE", 1, kLectures,
      "list every problem of the lecture FILE as FILE:LINE: problem and exit 1 (0 and a "
      "one-line summary when it has none); needs no display",

@@ -115,6 +115,7 @@ std::string conflicts(const Options& o) {
   if (o.preset && o.generate) return "give --preset or --generate, not both";
   if (!o.exportDir.empty() && o.lecture.empty() && !o.figure)
     return "--export needs --lecture FILE or --figure N";
+  if (o.exportFirst && o.exportDir.empty()) return "--export-first needs --export DIR";
   if (o.showUi && (o.hideUi || o.present))
     return "--show-ui shows the panels: give it or --hide-ui / --present, not both";
   return {};

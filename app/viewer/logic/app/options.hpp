@@ -69,6 +69,7 @@ struct Options {
   std::string lecture;                    // --lecture FILE: a slide show
   int slide = 1;                          // --slide K: the lecture starts at slide K
   std::string exportDir;                  // --export DIR: every slide (or the figure) as PNG
+  bool exportFirst = false;               // --export-first: each slide's first frame too
   std::string checkFile;                  // --check FILE: list a lecture's problems and exit
   std::string notesFile;                  // --notes FILE: print a lecture's notes and exit
   bool yGap = false;                      // 2D: mark the smallest y-gap and its slab count

@@ -105,6 +105,12 @@ std::string cubeInsetTitle(const CubeInset& inset) {
          " near (s,t) = (" + shortNumber(m.x) + ", " + shortNumber(m.y) + ")";
 }
 
+std::vector<std::string> cubeInsetTitleLines(const CubeInset& inset) {
+  const std::string title = cubeInsetTitle(inset);
+  const std::size_t near = title.find(" near ");
+  return {title.substr(0, near), title.substr(near + 1)};
+}
+
 std::string cubeInsetZoomText(const CubeInset& inset) {
   std::string text = "zoom \u00D7";
   if (inset.mantissa != 1) text += std::to_string(inset.mantissa) + "\u00B7";
@@ -148,9 +154,17 @@ std::optional<PixelBox> placeCubeInset(PixelBox area, std::span<const glm::dvec2
   return std::nullopt;
 }
 
+glm::dvec2 insetLeaderStart(const PixelBox& frame, glm::dvec2 target) {
+  const glm::dvec2 mid = 0.5 * (frame.lo + frame.hi), half = 0.5 * (frame.hi - frame.lo),
+                   away = target - mid;
+  if (std::abs(away.x) * half.y >= std::abs(away.y) * half.x)
+    return {away.x < 0.0 ? frame.lo.x : frame.hi.x, mid.y};
+  return {mid.x, away.y < 0.0 ? frame.lo.y : frame.hi.y};
+}
+
 void drawCubeInset(const CubeInset& inset, std::span<const Cell3D> cells, const Palette& pal,
-                   PixelBox frame, double textRoom, std::optional<glm::dvec2> anchor,
-                   DrawList& out) {
+                   PixelBox frame, double textRoom, std::optional<glm::dvec2> anchor, DrawList& out,
+                   bool twoLines) {
   const double k = (frame.hi.x - frame.lo.x) / inset.side;
   // (s, t) to window pixels, t upward, clamped to the patch
   const auto at = [&](double s, double t) {
@@ -176,11 +190,16 @@ void drawCubeInset(const CubeInset& inset, std::span<const Cell3D> cells, const 
   const glm::dvec3 border[4] = {f00, f10, f11, f01};
   for (int e = 0; e < 4; ++e) out.segment(border[e], border[(e + 1) % 4], pal.textMuted, 1.5f);
   const double mid = 0.5 * (frame.lo.x + frame.hi.x);
-  out.label({mid, frame.lo.y - 0.5 * textRoom, 0.0}, cubeInsetTitle(inset), pal.text);
+  const std::vector<std::string> title =
+      twoLines ? cubeInsetTitleLines(inset) : std::vector<std::string>{cubeInsetTitle(inset)};
+  for (std::size_t i = 0; i < title.size(); ++i)
+    out.label({mid, frame.lo.y - (static_cast<double>(title.size() - i) - 0.5) * textRoom, 0.0},
+              title[i], pal.text);
   out.label({mid, frame.hi.y + 0.5 * textRoom, 0.0}, cubeInsetZoomText(inset), pal.text);
   if (!anchor) return;
-  // the leader: from the frame's point nearest the patch on screen, a ring of 8 pixels there
-  const glm::dvec2 from = glm::clamp(*anchor, frame.lo, frame.hi);
+  // the leader: from the middle of the frame's side facing the patch on screen, a ring of 8
+  // pixels there
+  const glm::dvec2 from = insetLeaderStart(frame, *anchor);
   const glm::dvec3 a(*anchor, 0.0);
   out.segment(glm::dvec3(from, 0.0), a, withAlpha(pal.textMuted, 0.85f), 1.25f, 6.0f);
   for (int e = 0; e < 8; ++e) {

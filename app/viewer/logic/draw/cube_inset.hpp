@@ -41,6 +41,8 @@ std::optional<CubeInset> cubeMapInset(std::span<const Cell3D> cells);
 
 // "cube face +x near (s,t) = (1, 1)": the face and the patch's middle
 std::string cubeInsetTitle(const CubeInset& inset);
+// the title in two lines, "cube face +x" and "near (s,t) = (1, 1)" (a slide's narrow corner)
+std::vector<std::string> cubeInsetTitleLines(const CubeInset& inset);
 // "zoom ×5·10^4"
 std::string cubeInsetZoomText(const CubeInset& inset);
 
@@ -56,13 +58,18 @@ glm::dvec3 cubeInsetAnchor(const CubeInset& inset, std::span<const Cell3D> cells
 std::optional<PixelBox> placeCubeInset(PixelBox area, std::span<const glm::dvec2> avoid,
                                        std::span<const PixelBox> keepOff, glm::dvec2 text);
 
+// where an inset's leader to `target` leaves its frame: the middle of the frame's side that
+// faces the target (the leader then crosses the page, not the inset's own text)
+glm::dvec2 insetLeaderStart(const PixelBox& frame, glm::dvec2 target);
+
 // The inset in window pixels (points (x, y, 0), t upward): the frame's background and
 // border, the cells meeting the patch tinted by the faces they list and outlined, the title
-// centred `textRoom` / 2 over the frame, the zoom as far under it (labels at their text's
-// middle), and a dashed leader from the frame to `anchor` (the patch on screen) when given,
-// ringed there and the face named beyond the ring (the last label).
+// centred `textRoom` / 2 over the frame (`twoLines`: its two lines, the last there), the
+// zoom as far under it (labels at their text's middle), and a dashed leader from the frame to
+// `anchor` (the patch on screen) when given, ringed there and the face named beyond the ring
+// (the last label).
 void drawCubeInset(const CubeInset& inset, std::span<const Cell3D> cells, const Palette& palette,
-                   PixelBox frame, double textRoom, std::optional<glm::dvec2> anchor,
-                   DrawList& out);
+                   PixelBox frame, double textRoom, std::optional<glm::dvec2> anchor, DrawList& out,
+                   bool twoLines = false);
 
 }  // namespace convexloc::viewer

@@ -463,7 +463,7 @@ void buildStructure2D(const Scene2D& scene, const Palette& pal, const View2DOpti
   // rings, tiny edges magnified beside the polygon, a far offset's digits over it
   for (const Vec2 q : scene.droppedPoints())
     out.marker(at2(toGlm(q)), pal.textMuted, 15.0f, MarkerShape::Ring);
-  drawDegenerateInsets(scene.polygon(), pal, out);
+  drawDegenerateInsets(scene.polygon(), pal, out, opt.zoomInset);
 }
 
 void buildOverlay2D(const Scene2D& scene, const Palette& pal, const View2DOptions& opt,

@@ -24,6 +24,9 @@ struct View2DOptions {
   bool showHandles = true;    // vertex handles (drag to edit)
   bool showCentre = true;     // the method's centre x_T (off in the Lines mode)
   bool showGap = false;       // the smallest y-gap marked, with the paper's slab count
+  // tiny edges' zoom inset beside the polygon in world units (a slide draws it in the
+  // corner its layout keeps for it instead)
+  bool zoomInset = true;
 };
 
 // limits above which the drawing thins out (the scene stays exact, only less is drawn)
@@ -43,6 +46,5 @@ void buildOverlay2D(const Scene2D& scene, const Palette& palette, const View2DOp
 // the position in scene.cells() of the cell whose index is `index`, or -1
 
 std::ptrdiff_t cellPosition(const Scene2D& scene, std::int64_t index);
-
 
 }  // namespace convexloc::viewer

@@ -213,6 +213,7 @@ void buildStructure3D(const Scene3D& scene, const Palette& pal, const View3DOpti
     // the cube faces' names
     if (opt.showLabels) {
       for (int f = 0; f < 6; ++f) {
+        if (!(opt.faceNames >> f & 1u)) continue;
         glm::dvec3 q = ctr;
         q[f / 2] += (f % 2 ? -1.0 : 1.0) * h * 1.12;
         out.label(q, std::string(kCubeFaceNames[f]), pal.textMuted);

@@ -18,6 +18,7 @@ struct View3DOptions {
   bool showTints = true;    // cells listing extra faces tinted apart
   bool showSlice = true;    // the slicing plane and its section
   bool showLabels = true;
+  unsigned faceNames = 0x3fu;  // the cube faces named (bit f: face f; a slide names few)
 };
 
 // above this many faces the wireframe and the cube grid thin out (drawing only)

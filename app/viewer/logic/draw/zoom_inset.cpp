@@ -6,6 +6,7 @@
 #include <string>
 
 #include "convexloc/format.hpp"
+#include "logic/draw/cube_inset.hpp"
 
 namespace convexloc::viewer {
 namespace {
@@ -131,6 +132,59 @@ void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const P
             {0.0f, -14.0f});
 }
 
+void drawZoomInsetOnScreen(const ConvexPolygon& polygon, const ZoomInset& inset, const Palette& pal,
+                           PixelBox frame, double textRoom,
+                           const std::function<std::optional<glm::dvec2>(Vec2)>& project,
+                           DrawList& out) {
+  const Box2& src = inset.source;
+  const double k = (frame.hi.x - frame.lo.x) / (src.hi.x - src.lo.x);
+  // a world point of the source in the frame, y downward
+  const auto at = [&](Vec2 p) {
+    return glm::dvec3(frame.lo.x + (p.x - src.lo.x) * k, frame.hi.y - (p.y - src.lo.y) * k, 0.0);
+  };
+  const glm::dvec3 c00{frame.lo, 0.0}, c10{frame.hi.x, frame.lo.y, 0.0}, c11{frame.hi, 0.0},
+      c01{frame.lo.x, frame.hi.y, 0.0};
+  out.triangle(c00, c10, c11, pal.background);
+  out.triangle(c00, c11, c01, pal.background);
+  for (std::size_t e = 0; e < polygon.size(); ++e) {
+    Vec2 p, q;
+    if (clipSegment(polygon.edgeStart(e), polygon.edgeEnd(e), src, p, q))
+      out.segment(at(p), at(q), pal.polygonEdge, 2.25f);
+  }
+  // the vertices as small discs (markers are world-drawn: these are short crosses of fills)
+  const double r = std::max(2.0, std::min(0.18 * textRoom, 0.02 * (frame.hi.x - frame.lo.x)));
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    if (inBox(src, polygon.vertex(i))) {
+      const glm::dvec3 v = at(polygon.vertex(i));
+      for (int a = 0; a < 8; ++a) {
+        const double u = a * 0.7853981633974483, w = (a + 1) * 0.7853981633974483;
+        out.triangle(v, v + r * glm::dvec3(std::cos(u), std::sin(u), 0.0),
+                     v + r * glm::dvec3(std::cos(w), std::sin(w), 0.0), pal.polygonEdge);
+      }
+    }
+  for (const auto& [a, b] : {std::pair{c00, c10}, {c10, c11}, {c11, c01}, {c01, c00}})
+    out.segment(a, b, pal.textMuted, 1.5f);
+  out.label({0.5 * (frame.lo.x + frame.hi.x), frame.lo.y - 0.5 * textRoom, 0.0},
+            "zoom " + magnificationText(inset), pal.text);
+  const std::optional<glm::dvec2> s =
+      project({0.5 * (src.lo.x + src.hi.x), 0.5 * (src.lo.y + src.hi.y)});
+  if (!s) return;
+  // the leader: from the middle of the frame's side facing the source to a ring around it
+  // (across the page, never along one of the polygon's edges through the source)
+  const double ring = 0.6 * textRoom;
+  const glm::dvec2 from = insetLeaderStart(frame, *s), d = *s - from;
+  const double length = glm::length(d);
+  const glm::dvec3 a(*s, 0.0);
+  if (length > ring)
+    out.segment(glm::dvec3(from, 0.0), a - ring * glm::dvec3(d / length, 0.0),
+                withAlpha(pal.text, 0.8f), 1.5f, 6.0f);
+  for (int e = 0; e < 12; ++e) {
+    const double u = e * 0.5235987755982988, v = (e + 1) * 0.5235987755982988;
+    out.segment(a + ring * glm::dvec3(std::cos(u), std::sin(u), 0.0),
+                a + ring * glm::dvec3(std::cos(v), std::sin(v), 0.0), pal.text, 1.5f);
+  }
+}
+
 std::optional<std::string> offsetNote(const ConvexPolygon& polygon) {
   const Box2 box = polygon.bounds();
   const double size = lengthOf(box.lo, box.hi);
@@ -147,13 +201,16 @@ void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const
   const Box2 box = polygon.bounds();
   const Vec2 v = polygon.vertex(0);
   out.marker({v.x, v.y, 0.0}, pal.text, 14.0f, MarkerShape::Ring);
+  if (note.empty()) return;
   out.label({0.5 * (box.lo.x + box.hi.x), box.hi.y, 0.0}, note, pal.text, {0.0f, -30.0f});
   out.labels.back().essential = true;  // the shape's point: never left out for a vertex number
 }
 
-void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, DrawList& out) {
-  if (const auto inset = tinyEdgesInset(polygon)) drawZoomInset(polygon, *inset, pal, out);
-  if (const auto note = offsetNote(polygon)) drawOffsetNote(polygon, *note, pal, out);
+void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& pal, DrawList& out,
+                          bool zoom) {
+  if (const auto inset = tinyEdgesInset(polygon); inset && zoom)
+    drawZoomInset(polygon, *inset, pal, out);
+  if (const auto note = offsetNote(polygon)) drawOffsetNote(polygon, zoom ? *note : "", pal, out);
 }
 
 }  // namespace convexloc::viewer

@@ -4,12 +4,14 @@
 // polygon's edges through a scale, nothing in it is decided. GL-free.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "convexloc/polygon.hpp"
 #include "logic/base/colour.hpp"
 #include "logic/base/draw_list.hpp"
+#include "logic/view/label_layout.hpp"
 
 namespace convexloc::viewer {
 
@@ -49,11 +51,24 @@ void drawZoomInset(const ConvexPolygon& polygon, const ZoomInset& inset, const P
 // none for a polygon near the origin.
 std::optional<std::string> offsetNote(const ConvexPolygon& polygon);
 
-// the note over the middle of the polygon's box, and a ring at vertex 0
+// the note over the middle of the polygon's box (none where it is empty), and a ring at
+// vertex 0
 void drawOffsetNote(const ConvexPolygon& polygon, const std::string& note, const Palette& palette,
                     DrawList& out);
 
-// the zoom inset where the polygon has tiny edges, the offset note where it lies far out
-void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& palette, DrawList& out);
+// The inset in window pixels (points (x, y, 0), y downward) in `frame`, its source drawn
+// where `project` puts the world there: the frame's background and border, the polygon's
+// edges and vertices in the source magnified, "zoom ×10^K" centred `textRoom` / 2 over the
+// frame, and a dashed leader from the middle of the frame's side facing the source to a ring
+// around it.
+void drawZoomInsetOnScreen(const ConvexPolygon& polygon, const ZoomInset& inset,
+                           const Palette& palette, PixelBox frame, double textRoom,
+                           const std::function<std::optional<glm::dvec2>(Vec2)>& project,
+                           DrawList& out);
+
+// the zoom inset where the polygon has tiny edges and the offset note where it lies far out
+// (`zoom`: both in world units, else vertex 0's ring alone: a slide draws them in its layout)
+void drawDegenerateInsets(const ConvexPolygon& polygon, const Palette& palette, DrawList& out,
+                          bool zoom = true);
 
 }  // namespace convexloc::viewer

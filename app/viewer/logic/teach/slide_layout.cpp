@@ -88,16 +88,22 @@ std::vector<ScreenRect> barsAround(ScreenRect outer, ScreenRect inner) {
   return bars;
 }
 
-TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m) {
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& m,
+                     double scale) {
   TextBox t;
   if (text.empty()) return t;
   t.lines = {text};
-  const double pad = 0.6 * m.font;
-  const glm::dvec2 size = m.measure(text);
+  t.scale = scale;
+  const double pad = 0.6 * m.font * scale;
+  const glm::dvec2 size = m.measure(text) * scale;
   const glm::dvec2 at{std::max(half.middle().x - 0.5 * size.x, half.lo.x + 2.0 * pad),
-                      half.lo.y + 1.5 * pad};
+                      half.lo.y + pad};
   t.box = {at - glm::dvec2(pad, 0.5 * pad), at + size + glm::dvec2(pad, 0.5 * pad)};
   return t;
+}
+
+double splitHeadingBand(const SlideMetrics& m, double scale) {
+  return 2.2 * m.font * scale;
 }
 
 double SlideMetrics::widthAt(std::string_view text, double scale) const {
@@ -162,6 +168,46 @@ double columnWidth(const SlideContent& c, const SlideMetrics& m, double band, do
   return wanted;
 }
 
+// The inset's corner of the figure room: toward what it magnifies, as wide as the shape
+// fitted to the room's height leaves beside it (at least a third of the room's height, at
+// most 45% of it with its text where that is more; in a narrow room at most 40% of its
+// width), the shape's room the rest.
+void reserveInset(const InsetWish& w, double aspect, const SlideMetrics& m, SlideLayout& l) {
+  const ScreenRect room = l.scene;
+  const glm::dvec2 size = room.size();
+  const double text = w.textRoom * (w.linesOver + w.linesUnder);
+  const double beside = size.x - std::min(size.x, size.y * aspect) - m.margin;
+  // (a narrow room: the inset at most 40% of its width, the shape the rest)
+  const double narrow = 0.4 * size.x;
+  const double least = std::min({size.y / 3.0, size.y - text, narrow});
+  const double most = std::min(std::max(0.45 * size.y - text, least), narrow);
+  double side = std::clamp(beside, least, most);
+  const double width =
+      std::min(std::max(side, std::min(w.textWidth, std::max(beside, side))), narrow);
+  side = std::min(side, width);
+  const bool right = w.toward.x >= 0.0, upper = w.toward.y <= 0.0;
+  l.inset.lo = {right ? room.hi.x - width : room.lo.x, upper ? room.lo.y : room.hi.y - side - text};
+  l.inset.hi = l.inset.lo + glm::dvec2(width, side + text);
+  // the frame a little inside its box: its border's width is drawn outside the square
+  const double pad = 0.1 * w.textRoom;
+  l.insetFrame.lo = {l.inset.middle().x - 0.5 * side + pad,
+                     l.inset.lo.y + w.textRoom * w.linesOver + pad};
+  l.insetFrame.hi = l.insetFrame.lo + glm::dvec2(side - 2.0 * pad);
+}
+
+// The note's box in the figure room's upper corner, its lines at most 40% of the room wide.
+void noteBox(const SlideContent& c, const SlideMetrics& m, double scale, SlideLayout& l) {
+  TextBox& t = l.note;
+  const ScreenRect room = l.scene;
+  t.lines = wrapAt(c.note, 0.4 * room.size().x - 2.0 * m.padding, 1.0, m);
+  t.scale = t.restScale = scale;
+  t.padding = m.padding;
+  const glm::dvec2 size = glm::dvec2(widest(t.lines, 1.0, m), linesHeight(t.lines.size(), 1.0, m)) +
+                          glm::dvec2(2.0 * m.padding);
+  t.box.lo = {c.noteRight ? room.hi.x - size.x : room.lo.x, room.lo.y};
+  t.box.hi = t.box.lo + size;
+}
+
 // A slide with its text `scale` times the body size (`m` already scaled; `body` the
 // unscaled): the card and the caption as elsewhere, the Steps window at the top and the
 // legend at the bottom of a column on the right between them, the figure's room the rest.
@@ -174,6 +220,7 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   l.title.restScale = scale;
   l.title.scale *= scale;
   l.caption.scale *= scale;
+  l.caption.restScale = scale;  // its lines' gap: every line is at its first size
   const double top = (l.title.lines.empty() ? c.area.lo.y : l.title.box.hi.y) + m.margin;
   double bottom = (c.caption.empty() ? c.area.hi.y : l.caption.box.lo.y) - m.margin;
   if (c.captionRoom > 0)
@@ -197,6 +244,8 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   }
   const double left = width > 0.0 ? right - width - m.margin : right;
   l.scene = {{c.area.lo.x + m.margin, top}, {left, bottom}};
+  if (c.inset) reserveInset(*c.inset, c.shapeAspect, m, l);
+  if (!c.note.empty()) noteBox(c, m, scale, l);
   const glm::dvec2 room = l.scene.size(), a = c.area.size();
   return width <= most && room.x * room.y >= kFigureShare * a.x * a.y;
 }
@@ -238,6 +287,20 @@ double plotsTextPx(ScreenRect room, std::size_t count, double body, double pageH
   const double across = room.size().x / (n * kPlotColumns * 0.56 + (n - 1.0) * 1.5);
   const double down = room.size().y / kPlotRows;
   return std::max(std::min({body, across, down}), kSlideTextShare * pageHeight);
+}
+
+ScreenRect SlideLayout::shapeRoom() const {
+  ScreenRect r = scene;
+  // the inset's (or the note's) strip off, a line's room apart
+  const bool framed = inset.hi.x > inset.lo.x;
+  const ScreenRect strip = framed ? inset : note.box;
+  if (strip.hi.x <= strip.lo.x) return r;
+  const double gap = framed ? 0.5 * (insetFrame.lo.y - inset.lo.y) : note.padding;
+  if (strip.middle().x > scene.middle().x)
+    r.hi.x = std::max(r.lo.x, strip.lo.x - gap);
+  else
+    r.lo.x = std::min(r.hi.x, strip.hi.x + gap);
+  return r;
 }
 
 SlideLayout layoutSlide(const SlideContent& c, const SlideMetrics& m) {

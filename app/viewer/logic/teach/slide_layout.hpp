@@ -89,8 +89,17 @@ struct TextBox {
   ScreenRect box;
   std::vector<std::string> lines;
   double scale = 1.0;      // the first lines' size (the title's, or every caption line's)
-  double restScale = 1.0;  // the rest's (a figure's caption under its title)
+  double restScale = 1.0;  // the rest's (a figure's caption under its title), and the gaps
   double padding = -1.0;   // the inner padding (negative: the window's own)
+};
+
+// a zoom inset a slide keeps a corner of its figure room for (tiny edges or faces
+// magnified): the corner is the one toward what it magnifies
+struct InsetWish {
+  glm::dvec2 toward{0.0};             // from the shape's middle toward what it magnifies, on screen
+  double textWidth = 0.0;             // its widest text line, window pixels
+  double textRoom = 0.0;              // a text line's room over or under the frame
+  int linesOver = 1, linesUnder = 1;  // text lines over and under the frame
 };
 
 // everything on a slide (or in the live scene) that the layout places
@@ -111,6 +120,11 @@ struct SlideContent {
   // a plots slide (Why O(1)): this many plots side by side in the figure's room, a line of
   // text under them; 0: a scene
   std::size_t plots = 0;
+  std::optional<InsetWish> inset;  // a slide's zoom inset
+  // a slide's note on its figure (a far polygon's digits): a box in the figure room's upper
+  // corner on the side `noteRight` names, its text the slide's box text
+  std::string note;
+  bool noteRight = true;
 };
 
 // the share of the page a slide's figure room keeps at least
@@ -142,9 +156,16 @@ struct SlideLayout {
   TextBox caption;                   // the caption box, centred at the bottom
   std::optional<StepsLayout> steps;  // over the lower left corner, above the caption
   ScreenRect legend;                 // over the lower right corner, above the caption
-  ScreenRect scene;                  // the room the shape is fitted into, beside all of them
+  ScreenRect scene;                  // the figure's room, beside all of them
   double columnScale = 1.0;          // a slide's side column: its text over the body size
   std::optional<PlotsLayout> plots;  // a plots slide's plots in the scene's room
+  // a slide's zoom inset: its box (the frame with its text) in the figure room's corner
+  // toward what it magnifies, and its frame; empty without one
+  ScreenRect inset, insetFrame;
+  TextBox note;  // a slide's note on its figure, in the figure room's upper corner
+  // the room the shape is fitted into: the figure room less the inset's or the note's strip
+  // beside it
+  ScreenRect shapeRoom() const;
 };
 
 // The Steps window over `area`'s lower left corner, its bottom at `bottom`, its top not
@@ -163,9 +184,16 @@ StepsLayout layoutStepsInColumn(const StepsContent& steps, const SlideMetrics& m
 Rgba stepColour(const Step& step, const Palette& pal, Rgba result);
 
 // The split view's heading over a half (`half`, window pixels): `text` centred over it,
-// never starting left of it, near its top; the box is the text and a padding of 0.6 body
-// heights around it (half that above and below). The window and the SVG draw it from here.
-TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics);
+// never starting left of it, 0.3 text heights under its top; the box is the text and a
+// padding of 0.6 text heights around it (half that above and below); the text `scale` times
+// the body size. The window and the SVG draw it from here.
+TextBox splitHeading(ScreenRect half, const std::string& text, const SlideMetrics& metrics,
+                     double scale = 1.0);
+// the band the halves' headings take over them: the box and 0.3 text heights over and under
+double splitHeadingBand(const SlideMetrics& metrics, double scale = 1.0);
+// a slide's halves' headings: text 2.4% of the page's height (a slide's figure keeps the
+// height the halves need to fill their room)
+inline constexpr double kSplitHeadingShare = 0.024;
 
 // the title card's, caption's and legend's text sizes relative to the body text
 inline constexpr double kTitleScale = 1.3;

@@ -92,10 +92,12 @@ void splitHeadings(const Model& model, UiState& ui) {
   ui.splitHeadings[0] = ui.splitHeadings[1] = TextBox{};
   if (!model.split.enabled() || model.dim != Dim::Two || model.lines2d.enabled()) return;
   const SlideMetrics m = windowMetrics();
+  const ImVec2 window = ImGui::GetIO().DisplaySize;
+  const double scale = splitHeadingScale(model, ui, {window.x, window.y});
   ui.splitHeadings[0] =
-      splitHeading(model.split.left(), SecondView::traceCaption(model.scene2d), m);
+      splitHeading(model.split.left(), SecondView::traceCaption(model.scene2d), m, scale);
   ui.splitHeadings[1] =
-      splitHeading(model.split.right(), SecondView::traceCaption(model.split.scene()), m);
+      splitHeading(model.split.right(), SecondView::traceCaption(model.split.scene()), m, scale);
 }
 
 void splitDecorations(const Model& model, const UiState& ui) {
@@ -105,13 +107,14 @@ void splitDecorations(const Model& model, const UiState& ui) {
   const float x = static_cast<float>(r.lo.x);
   dl->AddLine(ImVec2(x, static_cast<float>(r.lo.y)), ImVec2(x, static_cast<float>(r.hi.y)),
               packAbgr(pal.textMuted), 2.0f);
-  const float pad = ImGui::GetFontSize() * 0.6f;
   for (const TextBox& t : ui.splitHeadings) {
     if (t.lines.empty()) continue;
+    const float size = ImGui::GetFontSize() * static_cast<float>(t.scale), pad = 0.6f * size;
     const ImVec2 lo(static_cast<float>(t.box.lo.x), static_cast<float>(t.box.lo.y));
     dl->AddRectFilled(lo, ImVec2(static_cast<float>(t.box.hi.x), static_cast<float>(t.box.hi.y)),
                       packAbgr(withAlpha(pal.background, 0.9f)), 4.0f);
-    dl->AddText(ImVec2(lo.x + pad, lo.y + 0.5f * pad), packAbgr(pal.text), t.lines[0].c_str());
+    dl->AddText(nullptr, size, ImVec2(lo.x + pad, lo.y + 0.5f * pad), packAbgr(pal.text),
+                t.lines[0].c_str());
   }
 }
 
