@@ -3,10 +3,10 @@
 
 #include <vector>
 
-#include "logic/teach/build_anim.hpp"
 #include "logic/scene/scene2d.hpp"
 #include "logic/scene/scene3d.hpp"
 #include "logic/scene/second_view.hpp"
+#include "logic/teach/build_anim.hpp"
 
 namespace cv = convexloc::viewer;
 using convexloc::Method2D;
@@ -172,4 +172,31 @@ TEST(SplitView, HalvesAndTheRightCamera) {
   EXPECT_NEAR(right.toScreen({1.0, 2.0}).x - cam.toScreen({1.0, 2.0}).x, 400.0, 1e-9);
   EXPECT_NEAR(v.toLeft(glm::dvec2(700.0, 10.0)).x, 300.0, 1e-9);
   EXPECT_NEAR(v.toLeft(glm::dvec2(300.0, 10.0)).x, 300.0, 1e-9);
+  EXPECT_FALSE(v.stacked());
+  EXPECT_EQ(v.divider()[0], glm::dvec2(500.0, 0.0));
+  EXPECT_EQ(v.divider()[1], glm::dvec2(500.0, 600.0));
+}
+
+// an upright slide's room (a phone held upright): the halves one over the other, the second camera
+// and the pointer moved down and up by half the area's height
+TEST(SplitView, AnUprightAreaStacksTheHalves) {
+  cv::SecondView v;
+  v.setEnabled(true);
+  v.setArea({{0.0, 100.0}, {400.0, 900.0}});
+  EXPECT_FALSE(v.stacked());  // the live window keeps its halves side by side
+  v.allowStacking(true);
+  ASSERT_TRUE(v.stacked());
+  EXPECT_EQ(v.left().hi, glm::dvec2(400.0, 500.0));
+  EXPECT_EQ(v.right().lo, glm::dvec2(0.0, 500.0));
+  EXPECT_EQ(v.divider()[0], glm::dvec2(0.0, 500.0));
+  EXPECT_EQ(v.divider()[1], glm::dvec2(400.0, 500.0));
+  cv::Camera2D cam;
+  cam.setViewport({400.0, 1000.0});
+  cam.set({0.0, 0.0}, 50.0);
+  const cv::Camera2D lower = v.rightCamera(cam);
+  const glm::dvec2 shift = lower.toScreen({1.0, 2.0}) - cam.toScreen({1.0, 2.0});
+  EXPECT_NEAR(shift.x, 0.0, 1e-9);
+  EXPECT_NEAR(shift.y, 400.0, 1e-9);
+  EXPECT_EQ(v.toLeft(glm::dvec2(150.0, 700.0)), glm::dvec2(150.0, 300.0));
+  EXPECT_EQ(v.toLeft(glm::dvec2(150.0, 300.0)), glm::dvec2(150.0, 300.0));
 }

@@ -268,6 +268,90 @@ TEST(SlideLayout, ASlidesFigureKeepsItsShareAtEverySizeAndTextScale) {
     }
 }
 
+// A phone held upright gets a page of its own aspect unless the lecture gave one; a landscape
+// window keeps the 16:9 page.
+TEST(SlideLayout, AnUprightWindowGetsAnUprightPage) {
+  EXPECT_EQ(cv::slidePageIn({1280.0, 800.0}, cv::kSlidePage, false), cv::kSlidePage);
+  EXPECT_EQ(cv::slidePageIn({1000.0, 1100.0}, cv::kSlidePage, false), cv::kSlidePage);
+  EXPECT_EQ(cv::slidePageIn({390.0, 844.0}, {1600.0, 1200.0}, true), glm::dvec2(1600.0, 1200.0));
+  const glm::dvec2 phone = cv::slidePageIn({390.0, 844.0}, cv::kSlidePage, false);
+  EXPECT_EQ(phone.x, cv::kUprightPageWidth);
+  EXPECT_NEAR(phone.y / phone.x, 844.0 / 390.0, 1e-12);
+  // the page fills the phone's screen
+  const cv::PageFit fit = cv::fitPage({390.0, 844.0}, phone);
+  EXPECT_NEAR(fit.page.size().x, 390.0, 1e-9);
+  EXPECT_NEAR(fit.page.size().y, 844.0, 1e-9);
+  // a very tall window: the page's aspect capped, letterboxed above and below
+  const glm::dvec2 tall = cv::slidePageIn({300.0, 1200.0}, cv::kSlidePage, false);
+  EXPECT_NEAR(tall.y / tall.x, cv::kUprightMostAspect, 1e-12);
+}
+
+// On an upright page the Steps window and the legend lie under the figure, whose room keeps
+// the page's width and its share of the page; no box covers another.
+TEST(SlideLayout, AnUprightSlidePutsStepsAndLegendUnderTheFigure) {
+  // phones at the slide's text and half as large again; tablets held upright (squarer pages,
+  // where text that large leaves the figure too little) at the slide's text
+  const std::vector<std::pair<glm::dvec2, double>> cases = {
+      {{390.0, 844.0}, 1.0},  {{390.0, 844.0}, 1.5},  {{780.0, 1688.0}, 1.0},
+      {{780.0, 1688.0}, 1.5}, {{768.0, 1024.0}, 1.0}, {{1024.0, 1366.0}, 1.0}};
+  for (const auto& [window, text] : cases) {
+    const cv::PageFit fit = cv::fitPage(window, cv::slidePageIn(window, cv::kSlidePage, false));
+    cv::SlideContent c;
+    c.area = fit.page;
+    c.title = "13 / 27: Polar query, step 2: the ratio picks the slab";
+    c.caption =
+        "Inside the octant, k = floor(q * |dy| / |dx|) = floor(4 * 0.11) = 0 picks the "
+        "slab: cell 31.";
+    c.steps = stepsOf(5, 1);
+    c.legend = glm::dvec2(330.0, 260.0) * fit.scale * text;
+    c.captionRoom = 2;
+    c.slide = true;
+    c.shapeAspect = 1.2;
+    const cv::SlideMetrics m = metricsAt(fit.scale * text);
+    const cv::SlideLayout l = cv::layoutSlide(c, m);
+    const std::string at =
+        std::to_string(window.x) + "x" + std::to_string(window.y) + " text " + std::to_string(text);
+    ASSERT_TRUE(l.steps) << at;
+    const glm::dvec2 room = l.scene.size(), page = fit.page.size();
+    // the room the page's width, and tall enough for the shape fitted to it to fill 80% of it
+    EXPECT_GE(room.x, 0.9 * page.x) << at;
+    EXPECT_GE(room.y, 0.8 * room.x / c.shapeAspect - 1e-9) << at;
+    EXPECT_GE(l.columnScale, cv::kUprightLeastText) << at;
+    EXPECT_LE(l.scene.hi.y, l.steps->box.lo.y) << at;
+    EXPECT_LE(l.scene.hi.y, l.legend.lo.y) << at;
+    EXPECT_LE(l.steps->box.hi.y, l.caption.box.lo.y) << at;
+    // the current step among those listed
+    ASSERT_FALSE(l.steps->shown.empty()) << at;
+    EXPECT_LE(l.steps->shown.front().step, 1u) << at;
+    EXPECT_GE(l.steps->shown.back().step, 1u) << at;
+    const auto boxes = boxesOf(l);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      EXPECT_TRUE(inside(boxes[i].second, fit.page)) << boxes[i].first << " at " << at;
+      for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        EXPECT_FALSE(overlap(boxes[i].second, boxes[j].second))
+            << boxes[i].first << " and " << boxes[j].first << " at " << at;
+    }
+  }
+}
+
+// a plots slide on an upright page stacks its plots, each the room's width
+TEST(SlideLayout, AnUprightPlotsSlideStacksItsPlots) {
+  const cv::ScreenRect room{{10.0, 60.0}, {380.0, 760.0}};
+  const double font = cv::plotsTextPx(room, 3, 13.0, 844.0);
+  EXPECT_LE(font, 13.0);
+  const cv::PlotsLayout p = cv::layoutPlots(room, 3, font);
+  ASSERT_EQ(p.plots.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(p.plots[i].lo.x, room.lo.x);
+    EXPECT_EQ(p.plots[i].hi.x, room.hi.x);
+    EXPECT_TRUE(inside(p.plots[i], room));
+    if (i > 0) {
+      EXPECT_LT(p.plots[i - 1].hi.y, p.plots[i].lo.y);
+    }
+  }
+  EXPECT_LE(p.plots[2].hi.y, p.note.lo.y);
+}
+
 // a list cut to a window around the current step says which steps it shows, the current
 // among them
 TEST(SlideLayout, ACutStepListSaysWhichStepsItShows) {

@@ -208,6 +208,7 @@ void drawUi(Model& model, Renderer& renderer, UiState& ui, double now) {
   // (no halves in 3D or the Lines mode: the pointer then goes where it is)
   const bool halves = model.dim == Dim::Two && !model.lines2d.enabled();
   const ScreenRect room = figureRoomOf(model, ui);  // a slide's halves keep to its figure
+  model.split.allowStacking(room.hi.x > room.lo.x);
   model.split.setArea(halves ? (room.hi.x > room.lo.x ? room : area) : ScreenRect{});
   if (model.split.enabled() && halves) model.split.sync(model.scene2d);
   splitHeadings(model, ui);

@@ -97,7 +97,8 @@ bool plotsSlide(const Model& model, const UiState& ui) {
 }
 
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window) {
-  if (onSlide(model, ui)) return fitPage(window, model.settings.page);
+  if (onSlide(model, ui))
+    return fitPage(window, slidePageIn(window, model.settings.page, model.settings.pageGiven));
   return {{{0.0, 0.0}, window}, 1.0};
 }
 

@@ -35,6 +35,9 @@ inline glm::dvec2 imguiBaseline(glm::dvec2 at, double em, double scale = 1.0) {
 // way, a word drifts no further. A single word is written as it is.
 std::string wordsSvg(double x, double scale, const std::string& text, const SvgScene& scene);
 
+// the legend's box and rows where the window draws them (writers/svg_legend.cpp)
+void writeLegend(const SvgScene& scene, std::string& out);
+
 // the bars beside `scene.page` (none when the page is empty or fills the picture)
 void writeLetterbox(const SvgScene& scene, std::string& out);
 

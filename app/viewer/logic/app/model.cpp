@@ -259,7 +259,7 @@ void Model::fit(ScreenRect area, bool tight) {
     lines2d.sync(scene2d);
     // a slide's halves: a narrower margin (the headings take a band over them)
     const bool halves = split.enabled() && !lines2d.enabled();
-    camera2d.fit(figureBox2(), area, tight ? (halves ? 0.05 : 0.09) : 0.13);
+    camera2d.fit(figureBox2(), area, tight ? (halves ? (split.stacked() ? 0.08 : 0.05) : 0.09) : 0.13);
     if (pendingView) {
       // the asked centre at the area's middle, the asked width across it
       const double scale = area.size().x / pendingView->width;

@@ -53,6 +53,7 @@ struct Settings {
   float pageScale = 1.0f;
   // the page's size in units (--page; a lecture's first slide sets it for the lecture)
   glm::dvec2 page{1920.0, 1080.0};
+  bool pageGiven = false;  // the lecture (or --page) gave it: no upright page on a phone
   // the text's scale on screen: the slide's size, the zoom and the page's scale together
   float uiScale() const { return fontScale * textZoom * pageScale; }
   // how much line widths, marker sizes and label offsets grow: with the text

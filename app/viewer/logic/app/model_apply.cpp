@@ -43,7 +43,10 @@ std::string Model::apply(const Options& o) {
   settings.theme = o.theme;
   settings.fontScale = o.fontScale;
   // the page stays until another is given (reset() keeps it): a lecture's is its first slide's
-  if (o.page) settings.page = {o.page->first, o.page->second};
+  if (o.page) {
+    settings.page = {o.page->first, o.page->second};
+    settings.pageGiven = true;
+  }
   settings.showUi = !o.hideUi;
   // presentation
   settings.present = o.present;

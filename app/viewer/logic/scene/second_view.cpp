@@ -28,21 +28,28 @@ void SecondView::sync(const Scene2D& main) {
 }
 
 ScreenRect SecondView::left() const {
+  if (stacked()) return {area_.lo, {area_.hi.x, area_.middle().y}};
   return {area_.lo, {area_.middle().x, area_.hi.y}};
 }
 
 ScreenRect SecondView::right() const {
+  if (stacked()) return {{area_.lo.x, area_.middle().y}, area_.hi};
   return {{area_.middle().x, area_.lo.y}, area_.hi};
+}
+
+std::array<glm::dvec2, 2> SecondView::divider() const {
+  const ScreenRect r = right();
+  return {r.lo, stacked() ? glm::dvec2(r.hi.x, r.lo.y) : glm::dvec2(r.lo.x, r.hi.y)};
 }
 
 Camera2D SecondView::rightCamera(const Camera2D& main) const {
   Camera2D c = main;
-  c.pan({right().lo.x - left().lo.x, 0.0});
+  c.pan(right().lo - left().lo);
   return c;
 }
 
 glm::dvec2 SecondView::toLeft(glm::dvec2 pos) const {
-  if (enabled_ && right().contains(pos)) pos.x -= right().lo.x - left().lo.x;
+  if (enabled_ && right().contains(pos)) pos -= right().lo - left().lo;
   return pos;
 }
 

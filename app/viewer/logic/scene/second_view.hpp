@@ -5,11 +5,12 @@
 // kept in step with the main scene's shape and placed point. 2D only; GL-free.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
-#include "logic/view/camera2d.hpp"
 #include "logic/scene/scene2d.hpp"
+#include "logic/view/camera2d.hpp"
 
 namespace convexloc::viewer {
 
@@ -27,11 +28,19 @@ class SecondView {
   // the right half's scene: its locator, cells, probe and trace
   const Scene2D& scene() const { return scene_; }
 
-  // the scene area split in two halves (call every frame with the area the scene has)
+  // the scene area split in two halves (call every frame with the area the scene has): side
+  // by side, or one over the other in an upright slide's room (a phone held upright), where
+  // "left" is the upper half and "right" the lower
   void setArea(ScreenRect sceneArea) { area_ = sceneArea; }
+  // whether an upright area stacks the halves (a slide's figure room; the live window's scene
+  // keeps them side by side)
+  void allowStacking(bool on) { stackable_ = on; }
+  bool stacked() const { return stackable_ && area_.size().y > area_.size().x; }
   ScreenRect left() const;
   ScreenRect right() const;
-  // the right half's camera: `main` (the left half's) moved right by half the area
+  // the line between the halves: the right half's left edge, or the lower half's top
+  std::array<glm::dvec2, 2> divider() const;
+  // the right half's camera: `main` (the left half's) moved by the halves' offset
   Camera2D rightCamera(const Camera2D& main) const;
   // a position over the right half, moved to where the same world point is in the left one
   glm::dvec2 toLeft(glm::dvec2 pos) const;
@@ -49,6 +58,7 @@ class SecondView {
   bool enabled_ = false;
   Scene2D scene_;
   ScreenRect area_;
+  bool stackable_ = false;
   std::uint64_t shapeSeen_ = ~0ull, overlaySeen_ = ~0ull;
 };
 

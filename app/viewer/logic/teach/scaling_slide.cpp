@@ -55,7 +55,8 @@ std::string measuredLine(const ScalingConfig& c, bool solid, double columns) {
   return shapes + grouped(c.tracedPoints) + " traced, " + grouped(c.timedPoints) + " timed";
 }
 
-// plots side by side that share one legend: the first's series name every later one's
+// plots side by side that share one legend: the first's series name every later one's (plots
+// stacked keep their own)
 struct LegendGroup {
   std::size_t first = 0, last = 0;
   double width = 0.0;  // the legend's width: from the first plot's axes across the last plot
@@ -73,7 +74,9 @@ std::vector<LegendGroup> legendGroups(const std::vector<LogPlot>& plots, const P
                                       const PlotStyle& style) {
   std::vector<LegendGroup> groups;
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (groups.empty() || !namedIn(plots[i], plots[groups.back().first]))
+    // (plots stacked on an upright page keep their own legends)
+    if (groups.empty() || !namedIn(plots[i], plots[groups.back().first]) ||
+        l.plots[i].lo.y != l.plots[groups.back().first].lo.y)
       groups.push_back({i, i, 0.0});
     LegendGroup& g = groups.back();
     g.last = i;

@@ -66,6 +66,11 @@ TextBox captionBox(const SlideContent& c, const SlideMetrics& m) {
 
 }  // namespace
 
+glm::dvec2 slidePageIn(glm::dvec2 window, glm::dvec2 page, bool given) {
+  if (given || !(window.y > kUpright * window.x)) return page;
+  return {kUprightPageWidth, kUprightPageWidth * std::min(window.y / window.x, kUprightMostAspect)};
+}
+
 PageFit fitPage(glm::dvec2 window, glm::dvec2 page) {
   PageFit f;
   if (window.x <= 0.0 || window.y <= 0.0 || page.x <= 0.0 || page.y <= 0.0) return f;
@@ -208,6 +213,47 @@ void noteBox(const SlideContent& c, const SlideMetrics& m, double scale, SlideLa
   t.box.hi = t.box.lo + size;
 }
 
+// An upright page (a phone held upright): the Steps window and the legend in a row under the
+// figure, side by side where both fit across (else the legend under the Steps window), the
+// Steps window at most kUprightStepsShare of the page high, the figure's room the whole width
+// above them.
+void placeUnder(const SlideContent& c, const SlideMetrics& m, double scale, double top,
+                double bottom, SlideLayout& l) {
+  const bool steps = c.steps && !c.steps->model.steps.empty();
+  const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0;
+  const double left = c.area.lo.x + m.margin, right = c.area.hi.x - m.margin;
+  const glm::dvec2 legendSize = legend ? c.legend * scale : glm::dvec2(0.0);
+  const bool beside = legend && legendSize.x + m.margin + m.font * 10.0 <= right - left;
+  double rowTop = bottom;
+  if (legend) {
+    l.legend.hi = {right, bottom};
+    l.legend.lo = l.legend.hi - legendSize;
+    rowTop = l.legend.lo.y;
+  }
+  if (steps) {
+    const double stepsBottom = legend && !beside ? l.legend.lo.y - m.margin : bottom;
+    const double stepsRight = beside ? l.legend.lo.x - m.margin : right;
+    // the figure's need first (the shape fitted to the page's width), the Steps window the rest
+    // up to its share, three lines at least
+    const double need = std::min(0.8 * (right - left) / std::max(c.shapeAspect, 0.25),
+                                 kFigureShare * c.area.size().y);
+    const double rest = stepsBottom - top - need - m.margin;
+    const double most =
+        std::max(std::min(kUprightStepsShare * c.area.size().y, rest), 3.0 * (m.font + m.spacing));
+    // laid out once to learn its height, then again with its bottom on the row's
+    const double height =
+        layoutStepsInColumn(*c.steps, m, {{left, stepsBottom - most}, {stepsRight, stepsBottom}})
+            .box.size()
+            .y;
+    l.steps =
+        layoutStepsInColumn(*c.steps, m, {{left, stepsBottom - height}, {stepsRight, stepsBottom}});
+    l.steps->textScale = scale;
+    rowTop = std::min(rowTop, l.steps->box.lo.y);
+  }
+  l.columnScale = scale;
+  l.scene = {{left, top}, {right, steps || legend ? rowTop - m.margin : bottom}};
+}
+
 // A slide with its text `scale` times the body size (`m` already scaled; `body` the
 // unscaled): the card and the caption as elsewhere, the Steps window at the top and the
 // legend at the bottom of a column on the right between them, the figure's room the rest.
@@ -226,6 +272,18 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   if (c.captionRoom > 0)
     bottom = std::min(bottom, c.area.hi.y - 2.0 * m.margin - 2.0 * m.padding -
                                   linesHeight(c.captionRoom, kCaptionScale, m));
+  const glm::dvec2 a = c.area.size();
+  if (a.y > a.x) {
+    placeUnder(c, m, scale, top, bottom, l);
+    if (c.inset) reserveInset(*c.inset, c.shapeAspect, m, l);
+    if (!c.note.empty()) noteBox(c, m, scale, l);
+    // the figure's room as wide as the page: room enough when the shape fitted to its width
+    // fills 80% of that (or the room keeps its share of the page)
+    const glm::dvec2 room = l.scene.size();
+    const double wanted = std::min(0.8 * room.x / std::max(c.shapeAspect, 0.25),
+                                   kFigureShare * a.x * a.y / std::max(room.x, 1.0));
+    return room.y >= wanted;
+  }
   const bool steps = c.steps && !c.steps->model.steps.empty();
   const bool legend = c.legend.x > 0.0 && c.legend.y > 0.0;
   double most = 0.0;
@@ -246,14 +304,17 @@ bool slideColumn(const SlideContent& c, const SlideMetrics& m, double scale, Sli
   l.scene = {{c.area.lo.x + m.margin, top}, {left, bottom}};
   if (c.inset) reserveInset(*c.inset, c.shapeAspect, m, l);
   if (!c.note.empty()) noteBox(c, m, scale, l);
-  const glm::dvec2 room = l.scene.size(), a = c.area.size();
+  const glm::dvec2 room = l.scene.size();
   return width <= most && room.x * room.y >= kFigureShare * a.x * a.y;
 }
 
 // A slide: at the body size where the figure keeps its share of the page, else with its
 // text smaller, down to kSlideTextShare of the page's height.
 SlideLayout layoutSlideColumn(const SlideContent& c, const SlideMetrics& body) {
-  const double least = std::min(1.0, kSlideTextShare * c.area.size().y / body.font);
+  // (an upright page, a phone's: its text down to kUprightLeastText of the slide's)
+  const glm::dvec2 a = c.area.size();
+  const double least =
+      a.y > a.x ? kUprightLeastText : std::min(1.0, kSlideTextShare * a.y / body.font);
   SlideLayout l;
   for (double scale = 1.0;; scale = std::max(least, scale - 0.05)) {
     SlideMetrics m = scaled(body, scale);
@@ -273,6 +334,15 @@ PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx) {
   p.note = {{room.lo.x, room.hi.y - line}, room.hi};
   if (count == 0) return p;
   const double n = static_cast<double>(count);
+  if (size.y > size.x) {
+    // an upright page: the plots one over another, the room's width each
+    const double h = (p.note.lo.y - 0.5 * fontPx - room.lo.y - (n - 1.0) * gap) / n;
+    for (std::size_t i = 0; i < count; ++i) {
+      const double y = room.lo.y + static_cast<double>(i) * (h + gap);
+      p.plots.push_back({{room.lo.x, y}, {room.hi.x, y + h}});
+    }
+    return p;
+  }
   const double w = (size.x - (n - 1.0) * gap) / n;
   for (std::size_t i = 0; i < count; ++i) {
     const double x = room.lo.x + static_cast<double>(i) * (w + gap);
@@ -283,6 +353,12 @@ PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx) {
 
 double plotsTextPx(ScreenRect room, std::size_t count, double body, double pageHeight) {
   const double n = static_cast<double>(std::max<std::size_t>(count, 1));
+  if (room.size().y > room.size().x) {
+    // stacked: each plot the room's width, a share of its height
+    const double across = room.size().x / (kPlotColumns * 0.56);
+    const double down = room.size().y / (n * kPlotRows);
+    return std::min({body, across, down});
+  }
   // an average character about 0.56 of the text's height (DejaVu Sans); the gaps 1.5 of it
   const double across = room.size().x / (n * kPlotColumns * 0.56 + (n - 1.0) * 1.5);
   const double down = room.size().y / kPlotRows;

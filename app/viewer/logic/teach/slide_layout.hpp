@@ -28,6 +28,20 @@ struct PageFit {
   double scale = 1.0;  // window pixels per page unit
 };
 
+// The page a slide is laid out on in `window`: `page` where the lecture gave its own or the
+// window is not upright; in an upright window (a phone held upright: taller than kUpright
+// times its width) a page of the window's aspect (at most kUprightMostAspect) and
+// kUprightPageWidth units wide, so that the slide fills the screen, its figure over its
+// Steps window and legend, its text as large as a landscape slide's on that screen turned.
+glm::dvec2 slidePageIn(glm::dvec2 window, glm::dvec2 page, bool given);
+inline constexpr double kUpright = 1.2;
+inline constexpr double kUprightPageWidth = 960.0;
+inline constexpr double kUprightMostAspect = 2.4;
+// an upright page's Steps window: at most this share of the page's height
+inline constexpr double kUprightStepsShare = 0.24;
+// an upright page's text may shrink to this share of the slide's where the figure needs room
+inline constexpr double kUprightLeastText = 0.75;
+
 // the largest page of `page`'s aspect centred in `window` (pixels); a window without pixels
 // gives an empty page at scale 1
 PageFit fitPage(glm::dvec2 window, glm::dvec2 page = kSlidePage);
@@ -144,7 +158,8 @@ PlotsLayout layoutPlots(ScreenRect room, std::size_t count, double fontPx);
 
 // the plots' text height on a slide: the slide's `body` text, smaller where a plot would hold
 // fewer than kPlotColumns characters across or the room fewer than kPlotRows lines down, never
-// under kSlideTextShare of the page's height `pageHeight`
+// under kSlideTextShare of the page's height `pageHeight` (plots stacked in an upright room:
+// what their width and share of its height hold, at most `body`)
 double plotsTextPx(ScreenRect room, std::size_t count, double body, double pageHeight);
 inline constexpr double kPlotColumns = 34.0;  // a legend's longest name and its swatch
 inline constexpr double kPlotRows = 22.0;     // title, axes, labels and a legend of six rows

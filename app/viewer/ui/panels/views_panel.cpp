@@ -103,10 +103,10 @@ void splitHeadings(const Model& model, UiState& ui) {
 void splitDecorations(const Model& model, const UiState& ui) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const Palette& pal = paletteFor(model.settings.theme);
-  const ScreenRect r = model.split.right();
-  const float x = static_cast<float>(r.lo.x);
-  dl->AddLine(ImVec2(x, static_cast<float>(r.lo.y)), ImVec2(x, static_cast<float>(r.hi.y)),
-              packAbgr(pal.textMuted), 2.0f);
+  const auto [from, to] = model.split.divider();
+  dl->AddLine(ImVec2(static_cast<float>(from.x), static_cast<float>(from.y)),
+              ImVec2(static_cast<float>(to.x), static_cast<float>(to.y)), packAbgr(pal.textMuted),
+              2.0f);
   for (const TextBox& t : ui.splitHeadings) {
     if (t.lines.empty()) continue;
     const float size = ImGui::GetFontSize() * static_cast<float>(t.scale), pad = 0.6f * size;
