@@ -129,6 +129,7 @@ void CubemapBuilder::build() {
   L.entries_.shrink_to_fit();
   L.sectorRanges_.shrink_to_fit();
   setLeafRadii();
+  setLeafSlabs();
 }
 
 bool CubemapBuilder::aimFromCentre() {
@@ -187,14 +188,14 @@ bool CubemapBuilder::buildBaseGrid() {
 
 std::size_t CubemapBuilder::liveBytes() const {
   const CubemapLocator& L = locator_;
-  return L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t) +
+  return L.nodes_.size() * kNodeBytes + L.entries_.size() * sizeof(std::uint32_t) +
          L.zoneRanges_.size() * sizeof(ZoneRange) +
          L.sectorRanges_.size() * sizeof(CubemapLocator::SectorRange);
 }
 
 bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
   std::uint32_t& g = locator_.resolution_;
-  while (g > 1 && 6 * static_cast<std::size_t>(g) * g * sizeof(Node) > budget_) g /= 2;
+  while (g > 1 && 6 * static_cast<std::size_t>(g) * g * kNodeBytes > budget_) g /= 2;
   for (;;) {
     locator_.deepestLevel_ = depthFor(g);
     const std::size_t cells = 6 * static_cast<std::size_t>(g) * g;
@@ -222,7 +223,7 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
       const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
       entries += counts[c] - z + (counts[c] > kCrowdedCell3D && z > kCrowdedCell3D ? 1 : z);
     }
-    if (g == 1 || cells * sizeof(Node) + entries * sizeof(std::uint32_t) <= budget_) return true;
+    if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
     g = std::max<std::uint32_t>(1, g / 2);
   }
 }
@@ -268,7 +269,7 @@ void CubemapBuilder::refineCrowdedCells() {
     const int levels = chainLevels(q);
     const std::size_t added = listChildren(q, levels);
     if (levels == 1 && splitIsFutile(parent, added)) continue;
-    const std::size_t grown = live_ + 4 * sizeof(Node) * levels + added * sizeof(std::uint32_t) -
+    const std::size_t grown = live_ + 4 * kNodeBytes * levels + added * sizeof(std::uint32_t) -
                               parent.count * sizeof(std::uint32_t);
     if (grown > budget_ || L.entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
       break;

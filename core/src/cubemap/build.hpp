@@ -65,6 +65,8 @@ class CubemapBuilder {
 
  private:
   using Node = CubemapLocator::Node;
+  // what a node costs: itself and its slab
+  static constexpr std::size_t kNodeBytes = sizeof(Node) + sizeof(CubemapLocator::Slab);
   // a cell waiting to be split: its node, place and level
   struct Pending {
     std::uint32_t node;
@@ -156,6 +158,15 @@ class CubemapBuilder {
   // === radii (radii.cpp)
   // each leaf's two radii; inner nodes get NaN
   void setLeafRadii();
+
+  // === slabs (slabs.cpp)
+  // each leaf's slab (after its radii, whose outer bound its rounding margin rests on); inner
+  // nodes and leaves without a sure bound get a disabled one
+  void setLeafSlabs();
+  // the slab direction of cell (i, j) at `level` of cube face `cf` listing `faces`: the unit
+  // normal of the face its middle ray leaves by, as floats; false when none is found
+  bool slabNormal(const std::vector<std::uint32_t>& faces, int cf, int level, std::uint64_t i,
+                  std::uint64_t j, float (&n)[3]) const;
 
   CubemapLocator& locator_;
   const ConvexPolyhedron& polyhedron_;  // for the build only: its plane faces' triangles
