@@ -129,7 +129,6 @@ void CubemapBuilder::build() {
   L.entries_.shrink_to_fit();
   L.sectorRanges_.shrink_to_fit();
   setLeafRadii();
-  setLeafSlabs();
 }
 
 bool CubemapBuilder::aimFromCentre() {

@@ -156,16 +156,18 @@ class CubemapBuilder {
   void fanLeafFaces(const Node& nd, std::vector<std::uint32_t>& faces) const;
 
   // === radii (radii.cpp)
-  // each leaf's two radii; inner nodes get NaN
+  // each leaf's two radii and its slab; inner nodes get NaN radii and a disabled slab
   void setLeafRadii();
 
   // === slabs (slabs.cpp)
-  // each leaf's slab (after its radii, whose outer bound its rounding margin rests on); inner
-  // nodes and leaves without a sure bound get a disabled one
-  void setLeafSlabs();
-  // the slab direction of cell (i, j) at `level` of cube face `cf` listing `faces`: the unit
-  // normal of the face its middle ray leaves by, as floats; false when none is found
-  bool slabNormal(const std::vector<std::uint32_t>& faces, int cf, int level, std::uint64_t i,
+  // the slab of leaf `node`, cell (i, j) at `level` of cube face `cf`, listing `faces` (after
+  // its radii, whose outer bound its rounding margin rests on); left disabled where no bound
+  // is sure
+  void setLeafSlab(std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j,
+                   std::span<const std::uint32_t> faces);
+  // the slab direction of that cell: the unit normal of the face its middle ray leaves by
+  // (among a spread sample of `faces`), as floats; false when none is found
+  bool slabNormal(std::span<const std::uint32_t> faces, int cf, int level, std::uint64_t i,
                   std::uint64_t j, float (&n)[3]) const;
 
   CubemapLocator& locator_;

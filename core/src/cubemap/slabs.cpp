@@ -43,6 +43,8 @@ using Long = long double;
 constexpr Long kEps = std::numeric_limits<Long>::epsilon();  // 2^-63
 // a leaf listing more faces than this gets no slab (the bound would cost too much to build)
 constexpr std::size_t kSlabFaces = 4096;
+// the faces (spread over its list) among which a leaf's slab normal is chosen
+constexpr std::size_t kNormalCandidates = 24;
 
 // the four corner directions of cell (i, j) at `level` of cube face `cf`, widened by 2^-30,
 // and their lengths
@@ -105,18 +107,23 @@ bool pyramidRange(const Corners& k, const Long (&n)[3], Vec3 va, Vec3 vb, Vec3 v
   return true;
 }
 
-// [lo, hi] of n . (y - c) over plane face f's corners (so over the whole face)
-void cornerRange(const std::vector<Vec3>& vertices, std::span<const std::uint32_t> loop,
-                 const Long (&n)[3], Vec3 c, Long& lo, Long& hi) {
-  const Long nLen = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  lo = std::numeric_limits<Long>::infinity(), hi = -lo;
+// [lo, hi] of n . (y - c) over plane face f's corners (so over the whole face), in doubles
+// with a slack far above their rounding (n's components at most 1 + 2^-23); false when a
+// value overflows
+bool cornerRange(const std::vector<Vec3>& vertices, std::span<const std::uint32_t> loop,
+                 const float (&n)[3], Vec3 c, Long& lo, Long& hi) {
+  double low = HUGE_VAL, high = -HUGE_VAL;
   for (std::uint32_t corner : loop) {
     const Vec3 y = vertices[corner];
-    const Long d[3] = {Long(y.x) - c.x, Long(y.y) - c.y, Long(y.z) - c.z};
-    const Long value = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
-    const Long slack = 0x1p-40L * nLen * (std::fabs(d[0]) + std::fabs(d[1]) + std::fabs(d[2]));
-    lo = std::min(lo, value - slack), hi = std::max(hi, value + slack);
+    const double d[3] = {y.x - c.x, y.y - c.y, y.z - c.z};
+    const double value = static_cast<double>(n[0]) * d[0] + static_cast<double>(n[1]) * d[1] +
+                         static_cast<double>(n[2]) * d[2];
+    const double slack = 0x1p-40 * (std::fabs(d[0]) + std::fabs(d[1]) + std::fabs(d[2]));
+    if (!std::isfinite(value + slack)) return false;
+    low = std::min(low, value - slack), high = std::max(high, value + slack);
   }
+  lo = low, hi = high;
+  return true;
 }
 
 }  // namespace
@@ -124,45 +131,44 @@ void cornerRange(const std::vector<Vec3>& vertices, std::span<const std::uint32_
 
 using namespace cubemap;
 
-void CubemapBuilder::setLeafSlabs() {
+void CubemapBuilder::setLeafSlab(std::uint32_t node, int cf, int level, std::uint64_t i,
+                                 std::uint64_t j, std::span<const std::uint32_t> faces) {
   CubemapLocator& L = locator_;
   const std::vector<Vec3>& v = L.surface_.vertices;
   const Vec3 c = L.centre_;
-  L.slabs_.assign(L.nodes_.size(), CubemapLocator::Slab{});
-  std::vector<std::uint32_t> faces;
-  L.forEachLeaf([&](std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j) {
-    const Node& nd = L.nodes_[node];
-    if (isSectorLeaf(nd.count))
-      fanLeafFaces(nd, faces);
-    else
-      faces = L.leafFaces(nd);
-    const double out2 = static_cast<double>(nd.out2);
-    if (faces.empty() || faces.size() > kSlabFaces || !std::isfinite(out2)) return;
-    float n32[3];
-    if (!slabNormal(faces, cf, level, i, j, n32)) return;
-    const Long n[3] = {n32[0], n32[1], n32[2]};
-    const Corners k = cornersOf(L.resolution_, cf, level, i, j);
-    Long lo = std::numeric_limits<Long>::infinity(), hi = -lo;
-    for (std::uint32_t f : faces) {
-      const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
-      Long flo, fhi;
-      if (!pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, flo, fhi))
-        cornerRange(v, polyhedron_.planeLoop(f), n, c, flo, fhi);
-      lo = std::min(lo, flo), hi = std::max(hi, fhi);
+  const double out2 = static_cast<double>(L.nodes_[node].out2);
+  if (faces.empty() || faces.size() > kSlabFaces || !std::isfinite(out2)) return;
+  float n32[3];
+  if (!slabNormal(faces, cf, level, i, j, n32)) return;
+  const Long n[3] = {n32[0], n32[1], n32[2]};
+  const Corners k = cornersOf(L.resolution_, cf, level, i, j);
+  Long lo = std::numeric_limits<Long>::infinity(), hi = -lo;
+  for (std::uint32_t f : faces) {
+    // the face's corners; where they spread (a face large or slanted across n), its part in
+    // the pyramid too: each range holds the values of that part, so their overlap does
+    Long flo, fhi, plo, phi;
+    if (!cornerRange(v, polyhedron_.planeLoop(f), n32, c, flo, fhi)) return;
+    const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
+    if ((fhi - flo > 0x1p-8L * std::fabs(fhi) || !(flo > 0)) &&
+        pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi)) {
+      const bool overlap = std::max(flo, plo) <= std::min(fhi, phi);
+      flo = overlap ? std::max(flo, plo) : plo;
+      fhi = overlap ? std::min(fhi, phi) : phi;
     }
-    // the query's rounding (d2 <= out2 when the slab runs), then outward to floats
-    const Long margin = 0x1p-44L * std::sqrt(static_cast<Long>(out2)) + 0x1p-1000L;
-    const double below = static_cast<double>(lo - margin),
-                 above = static_cast<double>(std::max(hi, Long(0)) + margin);
-    CubemapLocator::Slab& s = L.slabs_[node];
-    std::copy(n32, n32 + 3, s.n);
-    const float lo32 = detail::floatBelow(std::nextafter(below, -HUGE_VAL));
-    s.lo = lo32 > 0 ? lo32 : -std::numeric_limits<float>::infinity();
-    s.hi = detail::floatAbove(std::nextafter(above, HUGE_VAL));
-  });
+    lo = std::min(lo, flo), hi = std::max(hi, fhi);
+  }
+  // the query's rounding (d2 <= out2 when the slab runs), then outward to floats
+  const Long margin = 0x1p-44L * std::sqrt(static_cast<Long>(out2)) + 0x1p-1000L;
+  const double below = static_cast<double>(lo - margin),
+               above = static_cast<double>(std::max(hi, Long(0)) + margin);
+  CubemapLocator::Slab& s = L.slabs_[node];
+  std::copy(n32, n32 + 3, s.n);
+  const float lo32 = detail::floatBelow(std::nextafter(below, -HUGE_VAL));
+  s.lo = lo32 > 0 ? lo32 : -std::numeric_limits<float>::infinity();
+  s.hi = detail::floatAbove(std::nextafter(above, HUGE_VAL));
 }
 
-bool CubemapBuilder::slabNormal(const std::vector<std::uint32_t>& faces, int cf, int level,
+bool CubemapBuilder::slabNormal(std::span<const std::uint32_t> faces, int cf, int level,
                                 std::uint64_t i, std::uint64_t j, float (&n)[3]) const {
   // the unit outward normal of the face the ray through the cell's middle leaves by (the
   // nearest plane it meets ahead), rounded to floats; any direction would be sound
@@ -173,8 +179,9 @@ bool CubemapBuilder::slabNormal(const std::vector<std::uint32_t>& faces, int cf,
   const Vec3 d = cubeDirection(cf, (static_cast<double>(i) + 0.5) / K - 1,
                                (static_cast<double>(j) + 0.5) / K - 1);
   double best = HUGE_VAL, m[3] = {0, 0, 0};
-  for (std::uint32_t f : faces) {
-    const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
+  const std::size_t step = 1 + faces.size() / kNormalCandidates;
+  for (std::size_t at = 0; at < faces.size(); at += step) {
+    const ConvexPolyhedron::Triangle& t = L.surface_.faces[faces[at]];
     const Vec3 a = v[t[0]], b = v[t[1]], e = v[t[2]];
     const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, w[3] = {e.x - a.x, e.y - a.y, e.z - a.z};
     const double o[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
