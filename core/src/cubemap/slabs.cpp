@@ -13,19 +13,21 @@
 // polyhedron at a point y of a listed face (cubemap/index.hpp) inside that widened pyramid:
 // p - c = mu (y - c) with mu > 0, and p is inside iff mu < 1 (c strictly inside, the body
 // convex), outside iff mu > 1. The build bounds n . (y - c) by [lo, hi] over every listed
-// face's part inside the pyramid: for a face whose plane every corner ray meets ahead, that
-// part lies in the quadrilateral of the four hits, over which the linear n . (y - c) is
-// extreme at a corner (hits bounded as intervals); else it lies in the face, extreme at a
-// vertex; all in long double with a slack above its rounding. The stored bounds are lo' <=
-// lo - m and hi' >= max(hi, 0) + m, floats rounded outward, with m = 2^-44 sqrt(out2) +
-// 2^-1000 above the error of the query's v = n . (p - c) in doubles (four roundings of terms
-// summing to at most |n| |p - c| <= (1 + 2^-23) sqrt(out2 (1 + 2^-50)), and underflow).
-// With V = n . (p - c) = mu n . (y - c) exactly: if v > hi', then V > max(hi, 0) >= 0 and
-// V > n . (y - c); V > 0 makes n . (y - c) > 0, so mu > 1: Outside. If v < lo' and lo' > 0,
-// then n . (y - c) >= lo > 0 and V < n . (y - c), so mu < 1: Inside. A bound below that is
-// not positive disables the inner test (lo' = -inf); a leaf without a sure bound (or with too
-// many faces to bound at build) gets no slab (lo' = -inf, hi' = +inf).
+// face's part inside the pyramid. That part lies in the face, over which the linear
+// n . (y - c) is extreme at a corner; where those spread, also in the quadrilateral of the
+// four corner rays' hits on its plane when all four meet it ahead (hits bounded as
+// intervals), else in the face clipped by a pyramid widened by 2^-24 (see clipRange); the
+// face's range is the overlap of what it lies in. All with a slack above the rounding. The stored
+// bounds are lo' <= lo - m and hi' >= max(hi, 0) + m, floats rounded outward, with m = 2^-44
+// sqrt(out2) + 2^-1000 above the error of the query's v = n . (p - c) in doubles (four roundings of
+// terms summing to at most |n| |p - c| <= (1 + 2^-23) sqrt(out2 (1 + 2^-50)), and underflow). With
+// V = n . (p - c) = mu n . (y - c) exactly: if v > hi', then V > max(hi, 0) >= 0 and V > n . (y -
+// c); V > 0 makes n . (y - c) > 0, so mu > 1: Outside. If v < lo' and lo' > 0, then n . (y - c) >=
+// lo > 0 and V < n . (y - c), so mu < 1: Inside. A bound below that is not positive disables the
+// inner test (lo' = -inf); a leaf without a sure bound (or with too many faces to bound at build)
+// gets no slab (lo' = -inf, hi' = +inf).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -53,10 +55,11 @@ struct Corners {
   Long len[4];
 };
 
-Corners cornersOf(std::uint32_t g, int cf, int level, std::uint64_t i, std::uint64_t j) {
+Corners cornersOf(std::uint32_t g, int cf, int level, std::uint64_t i, std::uint64_t j,
+                  Long widen = 0x1p-30L) {
   Corners k;
   const int a = cf / 2, u = (a + 1) % 3, w = (a + 2) % 3;
-  const Long K = std::ldexp(static_cast<Long>(g) / 2, level), widen = 0x1p-30L;
+  const Long K = std::ldexp(static_cast<Long>(g) / 2, level);
   const Long s0 = Long(i) / K - 1 - widen, s1 = Long(i + 1) / K - 1 + widen;
   const Long t0 = Long(j) / K - 1 - widen, t1 = Long(j + 1) / K - 1 + widen;
   const Long st[4][2] = {{s0, t0}, {s1, t0}, {s1, t1}, {s0, t1}};
@@ -107,6 +110,58 @@ bool pyramidRange(const Corners& k, const Long (&n)[3], Vec3 va, Vec3 vb, Vec3 v
   return true;
 }
 
+using Point = std::array<Long, 3>;
+
+Long dot(const Long (&a)[3], const Point& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// [lo, hi] of n . (y - c) over plane face f's part inside the pyramid `wider` (widened by
+// 2^-24, so far beyond the 2^-30 one that rounding in the clip cannot cut into it): its
+// corners (less c) clipped by the four planes through c and two neighbouring corner rays. A
+// clipped corner lies on its edge (t in [0, 1]), where the plane's value is within rounding
+// of 0: what the rounding drops lies outside the 2^-30 pyramid. False when nothing is left.
+bool clipRange(const Corners& wider, const Long (&n)[3], std::span<const std::uint32_t> loop,
+               const std::vector<Vec3>& vertices, Vec3 c, std::vector<Point>& poly,
+               std::vector<Point>& next, Long& lo, Long& hi) {
+  poly.clear();
+  for (std::uint32_t corner : loop) {
+    const Vec3 y = vertices[corner];
+    poly.push_back({Long(y.x) - c.x, Long(y.y) - c.y, Long(y.z) - c.z});
+  }
+  Long middle[3] = {0, 0, 0};
+  for (const auto& d : wider.d)
+    for (int m = 0; m < 3; ++m) middle[m] += d[m];
+  for (int q = 0; q < 4 && !poly.empty(); ++q) {
+    const Long* a = wider.d[q];
+    const Long* b = wider.d[(q + 1) % 4];
+    Long h[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    if (h[0] * middle[0] + h[1] * middle[1] + h[2] * middle[2] < 0)
+      for (Long& x : h) x = -x;
+    next.clear();
+    for (std::size_t e = 0; e < poly.size(); ++e) {
+      const Point& p = poly[e];
+      const Point& r = poly[(e + 1) % poly.size()];
+      const Long sp = dot(h, p), sr = dot(h, r);
+      if (sp >= 0) next.push_back(p);
+      if ((sp >= 0) != (sr >= 0)) {
+        const Long t = std::clamp(sp / (sp - sr), Long(0), Long(1));
+        next.push_back(
+            {p[0] + t * (r[0] - p[0]), p[1] + t * (r[1] - p[1]), p[2] + t * (r[2] - p[2])});
+      }
+    }
+    poly.swap(next);
+  }
+  if (poly.empty()) return false;
+  const Long nLen = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  lo = std::numeric_limits<Long>::infinity(), hi = -lo;
+  for (const Point& p : poly) {
+    const Long slack = 0x1p-40L * nLen * (std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]));
+    lo = std::min(lo, dot(n, p) - slack), hi = std::max(hi, dot(n, p) + slack);
+  }
+  return true;
+}
+
 // [lo, hi] of n . (y - c) over plane face f's corners (so over the whole face), in doubles
 // with a slack far above their rounding (n's components at most 1 + 2^-23); false when a
 // value overflows
@@ -141,7 +196,9 @@ void CubemapBuilder::setLeafSlab(std::uint32_t node, int cf, int level, std::uin
   float n32[3];
   if (!slabNormal(faces, cf, level, i, j, n32)) return;
   const Long n[3] = {n32[0], n32[1], n32[2]};
-  const Corners k = cornersOf(L.resolution_, cf, level, i, j);
+  const Corners k = cornersOf(L.resolution_, cf, level, i, j),
+                wider = cornersOf(L.resolution_, cf, level, i, j, 0x1p-24L);
+  std::vector<Point> poly, next;
   Long lo = std::numeric_limits<Long>::infinity(), hi = -lo;
   for (std::uint32_t f : faces) {
     // the face's corners; where they spread (a face large or slanted across n), its part in
@@ -149,8 +206,9 @@ void CubemapBuilder::setLeafSlab(std::uint32_t node, int cf, int level, std::uin
     Long flo, fhi, plo, phi;
     if (!cornerRange(v, polyhedron_.planeLoop(f), n32, c, flo, fhi)) return;
     const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
-    if ((fhi - flo > 0x1p-8L * std::fabs(fhi) || !(flo > 0)) &&
-        pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi)) {
+    const bool spread = fhi - flo > 0x1p-8L * std::fabs(fhi) || !(flo > 0);
+    if (spread && (pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi) ||
+                   clipRange(wider, n, polyhedron_.planeLoop(f), v, c, poly, next, plo, phi))) {
       const bool overlap = std::max(flo, plo) <= std::min(fhi, phi);
       flo = overlap ? std::max(flo, plo) : plo;
       fhi = overlap ? std::min(fhi, phi) : phi;
