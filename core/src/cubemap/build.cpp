@@ -216,11 +216,13 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
       });
     });
     if (!ok) return false;
-    // a crowded cell over a zone or a fan keeps a range of it: one entry for its faces there
+    // a crowded cell over a zone or a fan with few other faces keeps a range of it: one entry
+    // for its faces there (as encodeZones and encodeSectors at best make it)
     std::size_t entries = 0;
     for (std::size_t c = 0; c < cells; ++c) {
       const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
-      entries += counts[c] - z + (counts[c] > kCrowdedCell3D && z > kCrowdedCell3D ? 1 : z);
+      const bool ranged = z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D;
+      entries += counts[c] - z + (ranged ? 1 : z);
     }
     if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
     g = std::max<std::uint32_t>(1, g / 2);

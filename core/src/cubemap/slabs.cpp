@@ -44,7 +44,9 @@ namespace {
 using Long = long double;
 constexpr Long kEps = std::numeric_limits<Long>::epsilon();  // 2^-63
 // a leaf listing more faces than this gets no slab (the bound would cost too much to build)
-constexpr std::size_t kSlabFaces = 4096;
+constexpr std::size_t kSlabFaces = 1024;
+// a face with more corners is bounded by its plane's hits only (else the leaf gets no slab)
+constexpr std::size_t kSlabCorners = 32;
 // the faces (spread over its list) among which a leaf's slab normal is chosen
 constexpr std::size_t kNormalCandidates = 24;
 
@@ -204,11 +206,17 @@ void CubemapBuilder::setLeafSlab(std::uint32_t node, int cf, int level, std::uin
     // the face's corners; where they spread (a face large or slanted across n), its part in
     // the pyramid too: each range holds the values of that part, so their overlap does
     Long flo, fhi, plo, phi;
-    if (!cornerRange(v, polyhedron_.planeLoop(f), n32, c, flo, fhi)) return;
     const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
+    const auto loop = polyhedron_.planeLoop(f);
+    if (loop.size() > kSlabCorners) {  // a cap of many corners: its plane's hits, else none
+      if (!pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, flo, fhi)) return;
+      lo = std::min(lo, flo), hi = std::max(hi, fhi);
+      continue;
+    }
+    if (!cornerRange(v, loop, n32, c, flo, fhi)) return;
     const bool spread = fhi - flo > 0x1p-8L * std::fabs(fhi) || !(flo > 0);
     if (spread && (pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi) ||
-                   clipRange(wider, n, polyhedron_.planeLoop(f), v, c, poly, next, plo, phi))) {
+                   clipRange(wider, n, loop, v, c, poly, next, plo, phi))) {
       const bool overlap = std::max(flo, plo) <= std::min(fhi, phi);
       flo = overlap ? std::max(flo, plo) : plo;
       fhi = overlap ? std::min(fhi, phi) : phi;
