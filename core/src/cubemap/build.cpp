@@ -64,6 +64,17 @@ Poly boxPoly(const std::array<double, 4>& b) {
   return B;
 }
 
+// up to this many triangles, a base grid that does not fit is tried again three quarters as
+// fine (a halving would often give up twice the cell width the budget allows); beyond, half
+// as fine, as each try rasterises every face
+constexpr std::size_t kFineSteps = std::size_t{1} << 16;
+
+// the next coarser base grid to try after g, on a surface of `triangles`: at least 1 less
+std::uint32_t coarser(std::uint32_t g, std::size_t triangles) {
+  const std::uint32_t next = triangles <= kFineSteps ? g * 3 / 4 : g / 2;
+  return std::max<std::uint32_t>(1, std::min(g - 1, next));
+}
+
 }  // namespace
 
 CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution) {
@@ -179,7 +190,7 @@ bool CubemapBuilder::buildBaseGrid() {
     // the fit assumed every crowded cell over a zone would become a range of it
     CubemapLocator& L = locator_;
     if (L.resolution_ == 1 || liveBytes() <= budget_) return true;
-    L.resolution_ /= 2;
+    L.resolution_ = coarser(L.resolution_, L.surface_.triangles);
     L.zoneRanges_.clear();
     L.sectorRanges_.clear();
   }
@@ -225,7 +236,7 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
       entries += counts[c] - z + (ranged ? 1 : z);
     }
     if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
-    g = std::max<std::uint32_t>(1, g / 2);
+    g = coarser(g, locator_.surface_.triangles);
   }
 }
 
