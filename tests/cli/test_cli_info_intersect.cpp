@@ -93,11 +93,12 @@ TEST_F(Cli, InfoBuildsThePolyhedronsDualOnlyWithIntersect) {
 
   Result asked = run("info " + data("cube3d.off") + " --intersect");
   ASSERT_EQ(asked.code, 0) << asked.err;
-  // the cube's dual is the octahedron: 8 triangles, listed by a cube map of 6 x 16 x 16 cells
+  // the cube's dual is the octahedron: 8 triangles, listed by a cube map of 6 x 8 x 8 cells
+  // (the smallest default, 16, halved to fit the constant budget with every cell's slab)
   const Words dual = withoutTime(rowWords(asked.out, kPlanes, "dual"));
   ASSERT_EQ(dual.size(), 8u) << asked.out;
   EXPECT_EQ((Words{dual.begin(), dual.begin() + 6}),
-            (Words{"dual", "O(1)", "8", "1536", "1944", "4"}));
+            (Words{"dual", "O(1)", "8", "384", "600", "4"}));
   // bytes per face is the memory over the cube's 12 triangles
   EXPECT_NEAR(std::stod(dual[7]), std::stod(dual[6]) / 12, 0.05) << asked.out;
   EXPECT_EQ(asked.out.find("edges"), std::string::npos) << "a polyhedron's report counts faces";

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
-#include <map>
-#include <tuple>
 
 #include "adversarial3d.hpp"
 #include "convexloc/generate3d.hpp"
@@ -254,7 +254,8 @@ TEST(Cubemap3D, DefaultAndChosenResolution) {
             static_cast<std::uint32_t>(std::lround(std::sqrt(large.faceCount() / 8.0))));
   EXPECT_GT(CubemapLocator(large).resolution(), 160u);
   const ConvexPolyhedron small(generatePolyhedron(PolyhedronKind::Icosahedron, 20, 1));
-  EXPECT_EQ(CubemapLocator(small).resolution(), 16u);  // the smallest default
+  // the smallest default, 16, halved to fit the constant budget with every node's slab
+  EXPECT_EQ(CubemapLocator(small).resolution(), 8u);
   EXPECT_EQ(CubemapLocator(p, 5).resolution(), 5u);
   EXPECT_EQ(Locator3D(p, Method3D::Cubemap, 5).stats().resolution, 5u);
 }
@@ -281,18 +282,27 @@ TEST(Trace3D, CubemapTellsFaceCellAndTests) {
   EXPECT_TRUE(neg.byRadius);
   EXPECT_LT(neg.distance, neg.innerRadius);
   // just short of the surface and just past it along one ray, between the radii of its
-  // cell (the nearest and farthest points of the face's part the cell sees): plane tests
-  // decide
+  // cell (the nearest and farthest points of the face's part the cell sees): the cell's
+  // slab decides (its one face's plane, up to rounding), no face is tested
   const Trace3D in = cm.trace({c.x + 0.99999, c.y + 0.499995, c.z + 0.099999});
   EXPECT_FALSE(in.byRadius);
+  EXPECT_TRUE(in.bySlab);
   EXPECT_EQ(in.result, Location::Inside);
-  ASSERT_FALSE(in.faces.empty());
-  for (const FaceTest& f : in.faces) EXPECT_EQ(f.sign, 1);
+  EXPECT_TRUE(in.faces.empty());
   const Trace3D beyond = cm.trace({c.x + 1.00001, c.y + 0.500005, c.z + 0.100001});
   EXPECT_FALSE(beyond.byRadius);
+  EXPECT_TRUE(beyond.bySlab);
   EXPECT_EQ(beyond.result, Location::Outside);
-  ASSERT_FALSE(beyond.faces.empty());
-  EXPECT_EQ(beyond.faces.back().sign, -1);
+  // without the radii and slabs, the paper's query: plane tests decide
+  const Trace3D plain = cm.trace({c.x + 1.00001, c.y + 0.500005, c.z + 0.100001}, {.radii = false});
+  EXPECT_FALSE(plain.bySlab);
+  ASSERT_FALSE(plain.faces.empty());
+  EXPECT_EQ(plain.faces.back().sign, -1);
+  // on the surface: neither radii nor slab decide, a plane test gives 0
+  const Trace3D on = cm.trace({c.x + 1, c.y + 0.5, c.z + 0.1});
+  EXPECT_FALSE(on.byRadius || on.bySlab);
+  EXPECT_EQ(on.result, Location::Boundary);
+  ASSERT_FALSE(on.faces.empty());
   const Trace3D at = cm.trace(c);
   EXPECT_TRUE(at.atCentre);
   EXPECT_EQ(at.result, Location::Inside);

@@ -92,6 +92,8 @@ TEST_P(CubemapTablesRoundTrip, LoadsTheSameLocatorWithoutBuilding) {
   EXPECT_EQ(again.zoneRanges, t.zoneRanges);
   EXPECT_EQ(again.sectorKeys, t.sectorKeys);
   EXPECT_EQ(again.sectorPoints, t.sectorPoints);
+  EXPECT_EQ(again.slabs, t.slabs);
+  EXPECT_EQ(t.slabs.size(), 5 * s.nodes);
   expectSameAnswers(p, built, loaded);
 }
 

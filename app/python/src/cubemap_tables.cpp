@@ -53,6 +53,7 @@ py::dict tablesToPython(const CubemapTables& t) {
   d["sector_faces"] = tableArray(t.sectorFaces, 1);
   d["sector_keys"] = tableArray(t.sectorKeys, 1);
   d["sector_ranges"] = tableArray(t.sectorRanges, 3);
+  d["slabs"] = tableArray(t.slabs, 5);
   return d;
 }
 
@@ -100,6 +101,7 @@ std::optional<CubemapTables> tablesFrom(const py::object& state) {
   t.sectorFaces = tableFrom<std::uint32_t>(d, "sector_faces");
   t.sectorKeys = tableFrom<std::uint32_t>(d, "sector_keys");
   t.sectorRanges = tableFrom<std::uint32_t>(d, "sector_ranges");
+  if (d.contains("slabs")) t.slabs = tableFrom<float>(d, "slabs");  // none: no slab decides
   return t;
 }
 

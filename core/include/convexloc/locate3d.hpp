@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -74,6 +75,7 @@ struct Trace3D {
                                // bisection over a zone (zoneSteps) or around an axis
                                // (sectorSteps)
   bool byRadius = false;       // cubemap: decided by the cell's radii, before any face test
+  bool bySlab = false;         // cubemap: decided by the cell's slab, after its radii
   double distance = 0.0;       // cubemap: |p - centre| (approximate, for display)
   double innerRadius = 0.0;    // cubemap: nearer than this to the centre, a point of the cell
   double outerRadius = 0.0;    //   is inside; farther than outerRadius, outside
@@ -259,6 +261,7 @@ struct CubemapTables {
   std::vector<std::uint32_t> sectorFaces;   // per fan place: its face
   std::vector<std::uint32_t> sectorKeys;    // and its key (index.hpp)
   std::vector<std::uint32_t> sectorRanges;  // per range: fan, from, to
+  std::vector<float> slabs;  // per node: normal (3), lo, hi; empty: no slabs (none decides)
 };
 
 // A centre c strictly inside; the direction d = p - c picks a cube face by its dominant axis
@@ -306,10 +309,11 @@ class CubemapLocator {
   // every index in range (nodes, entries, zones and fans, their edges, faces, keys and
   // ranges, and the places a bisection reaches); the quadtree a tree no deeper than that
   // level; the centre finite and strictly inside every face plane (exact predicates);
-  // marks and signs valid, radii numbers (NaN exactly at inner nodes). So no query of a
-  // loaded locator reads outside its tables. Not checked (trusted to be this version's
-  // builder's, as the version says): that each cell lists every face it must and that its
-  // radii are sound, on which exact answers rest (cubemap/index.hpp).
+  // marks and signs valid, radii numbers (NaN exactly at inner nodes), slabs none or one
+  // per node of numbers. So no query of a loaded locator reads outside its tables. Not
+  // checked (trusted to be this version's builder's, as the version says): that each cell
+  // lists every face it must and that its radii and slabs are sound, on which exact answers
+  // rest (cubemap/index.hpp).
   CubemapLocator(const ConvexPolyhedron& polyhedron, const CubemapTables& tables);
   // the tables, to load with the constructor above
   CubemapTables tables() const;
@@ -358,6 +362,16 @@ class CubemapLocator {
     std::uint32_t count = 0;  // leaf: number of entries; kInner for an inner node
     float in2 = 0.0f;
     float out2 = 0.0f;
+  };
+  // A leaf's slab (cubemap/slabs.cpp), beside its node: a point of the cell that its radii
+  // leave open, with v = n . (p - c), is inside when v < lo and outside when v > hi (lo and hi
+  // bound n . (y - c) over the points y where the cell's rays may leave, rounded outward). A
+  // flat part of the surface, where the radii leave a thick shell, is decided by it. Disabled
+  // (lo = -inf, hi = +inf) at inner nodes and where no bound holds.
+  struct Slab {
+    float n[3] = {0.0f, 0.0f, 0.0f};
+    float lo = -std::numeric_limits<float>::infinity();
+    float hi = std::numeric_limits<float>::infinity();
   };
   // where a query's direction points: cube face, coordinates on it, deepest-level cell
   struct Aim {
@@ -408,6 +422,7 @@ class CubemapLocator {
   std::vector<SectorRange> sectorRanges_;   // a sector leaf's first entry indexes these
   Table<Node> nodes_;                       // 6 G^2 base cells, then blocks of 4 children
   Table<std::uint32_t> entries_;            // each leaf's faces
+  Table<Slab> slabs_;                       // each node's slab, at its index (none: empty)
   Vec3 centre_{};
   bool centred_ = false;
   std::uint32_t resolution_ = 1;  // G

@@ -64,6 +64,17 @@ Poly boxPoly(const std::array<double, 4>& b) {
   return B;
 }
 
+// up to this many triangles, a base grid that does not fit is tried again three quarters as
+// fine (a halving would often give up twice the cell width the budget allows); beyond, half
+// as fine, as each try rasterises every face
+constexpr std::size_t kFineSteps = std::size_t{1} << 16;
+
+// the next coarser base grid to try after g, on a surface of `triangles`: at least 1 less
+std::uint32_t coarser(std::uint32_t g, std::size_t triangles) {
+  const std::uint32_t next = triangles <= kFineSteps ? g * 3 / 4 : g / 2;
+  return std::max<std::uint32_t>(1, std::min(g - 1, next));
+}
+
 }  // namespace
 
 CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, std::uint32_t resolution) {
@@ -179,7 +190,7 @@ bool CubemapBuilder::buildBaseGrid() {
     // the fit assumed every crowded cell over a zone would become a range of it
     CubemapLocator& L = locator_;
     if (L.resolution_ == 1 || liveBytes() <= budget_) return true;
-    L.resolution_ /= 2;
+    L.resolution_ = coarser(L.resolution_, L.surface_.triangles);
     L.zoneRanges_.clear();
     L.sectorRanges_.clear();
   }
@@ -187,14 +198,14 @@ bool CubemapBuilder::buildBaseGrid() {
 
 std::size_t CubemapBuilder::liveBytes() const {
   const CubemapLocator& L = locator_;
-  return L.nodes_.size() * sizeof(Node) + L.entries_.size() * sizeof(std::uint32_t) +
+  return L.nodes_.size() * kNodeBytes + L.entries_.size() * sizeof(std::uint32_t) +
          L.zoneRanges_.size() * sizeof(ZoneRange) +
          L.sectorRanges_.size() * sizeof(CubemapLocator::SectorRange);
 }
 
 bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
   std::uint32_t& g = locator_.resolution_;
-  while (g > 1 && 6 * static_cast<std::size_t>(g) * g * sizeof(Node) > budget_) g /= 2;
+  while (g > 1 && 6 * static_cast<std::size_t>(g) * g * kNodeBytes > budget_) g /= 2;
   for (;;) {
     locator_.deepestLevel_ = depthFor(g);
     const std::size_t cells = 6 * static_cast<std::size_t>(g) * g;
@@ -216,14 +227,16 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
       });
     });
     if (!ok) return false;
-    // a crowded cell over a zone or a fan keeps a range of it: one entry for its faces there
+    // a crowded cell over a zone or a fan with few other faces keeps a range of it: one entry
+    // for its faces there (as encodeZones and encodeSectors at best make it)
     std::size_t entries = 0;
     for (std::size_t c = 0; c < cells; ++c) {
       const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
-      entries += counts[c] - z + (counts[c] > kCrowdedCell3D && z > kCrowdedCell3D ? 1 : z);
+      const bool ranged = z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D;
+      entries += counts[c] - z + (ranged ? 1 : z);
     }
-    if (g == 1 || cells * sizeof(Node) + entries * sizeof(std::uint32_t) <= budget_) return true;
-    g = std::max<std::uint32_t>(1, g / 2);
+    if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
+    g = coarser(g, locator_.surface_.triangles);
   }
 }
 
@@ -268,7 +281,7 @@ void CubemapBuilder::refineCrowdedCells() {
     const int levels = chainLevels(q);
     const std::size_t added = listChildren(q, levels);
     if (levels == 1 && splitIsFutile(parent, added)) continue;
-    const std::size_t grown = live_ + 4 * sizeof(Node) * levels + added * sizeof(std::uint32_t) -
+    const std::size_t grown = live_ + 4 * kNodeBytes * levels + added * sizeof(std::uint32_t) -
                               parent.count * sizeof(std::uint32_t);
     if (grown > budget_ || L.entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
       break;

@@ -65,6 +65,8 @@ class CubemapBuilder {
 
  private:
   using Node = CubemapLocator::Node;
+  // what a node costs: itself and its slab
+  static constexpr std::size_t kNodeBytes = sizeof(Node) + sizeof(CubemapLocator::Slab);
   // a cell waiting to be split: its node, place and level
   struct Pending {
     std::uint32_t node;
@@ -154,8 +156,19 @@ class CubemapBuilder {
   void fanLeafFaces(const Node& nd, std::vector<std::uint32_t>& faces) const;
 
   // === radii (radii.cpp)
-  // each leaf's two radii; inner nodes get NaN
+  // each leaf's two radii and its slab; inner nodes get NaN radii and a disabled slab
   void setLeafRadii();
+
+  // === slabs (slabs.cpp)
+  // the slab of leaf `node`, cell (i, j) at `level` of cube face `cf`, listing `faces` (after
+  // its radii, whose outer bound its rounding margin rests on); left disabled where no bound
+  // is sure
+  void setLeafSlab(std::uint32_t node, int cf, int level, std::uint64_t i, std::uint64_t j,
+                   std::span<const std::uint32_t> faces);
+  // the slab direction of that cell: the unit normal of the face its middle ray leaves by
+  // (among a spread sample of `faces`), as floats; false when none is found
+  bool slabNormal(std::span<const std::uint32_t> faces, int cf, int level, std::uint64_t i,
+                  std::uint64_t j, float (&n)[3]) const;
 
   CubemapLocator& locator_;
   const ConvexPolyhedron& polyhedron_;  // for the build only: its plane faces' triangles

@@ -9,13 +9,14 @@
 namespace convexloc {
 
 Stats3D CubemapLocator::stats() const {
-  Stats3D s = detail::baseStats(
-      surface_,
-      sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) + detail::bytesOf(zoneEdges_) +
-          detail::bytesOf(zoneFaces_) + detail::bytesOf(zoneRanges_) + detail::bytesOf(sectors_) +
-          detail::bytesOf(sectorFaces_) + detail::bytesOf(sectorKeys_) +
-          detail::bytesOf(sectorRanges_) + detail::bytesOf(nodes_) + detail::bytesOf(entries_),
-      buildSeconds_);
+  Stats3D s = detail::baseStats(surface_,
+                                sizeof(*this) + mesh_.bytes() + detail::bytesOf(zones_) +
+                                    detail::bytesOf(zoneEdges_) + detail::bytesOf(zoneFaces_) +
+                                    detail::bytesOf(zoneRanges_) + detail::bytesOf(sectors_) +
+                                    detail::bytesOf(sectorFaces_) + detail::bytesOf(sectorKeys_) +
+                                    detail::bytesOf(sectorRanges_) + detail::bytesOf(nodes_) +
+                                    detail::bytesOf(slabs_) + detail::bytesOf(entries_),
+                                buildSeconds_);
   s.centred = centred_;
   s.resolution = centred_ ? resolution_ : 0;
   s.nodes = nodes_.size();

@@ -40,7 +40,8 @@
 // faces, which ends at such a face T; if the walk runs too long the cell's list is tested. A
 // crowded cell over a zone of thin faces is searched by bisection (cubemap/zones.cpp), and
 // one whose faces are thin around some axis by bisection around it (cubemap/sectors.cpp).
-// The radii that decide most points first are sound by the argument of detail/radii.hpp.
+// The radii that decide most points first are sound by the argument of detail/radii.hpp,
+// and the slabs that decide most of the rest by cubemap/slabs.cpp's.
 #pragma once
 
 #include <algorithm>

@@ -16,16 +16,18 @@ std::optional<Vec3> CubemapLocator::centre() const noexcept {
 }
 
 Location CubemapLocator::locate(Vec3 p) const noexcept {
-  // Most points: aimed at a base cell that is a leaf and decided by its radii (an inner
-  // node's NaN radii decide nothing). All in line, no call: a caller's loop of independent
-  // points then keeps several cells' memory reads in flight at once.
+  // Most points: aimed at a cell, down to its leaf and decided by its radii. All in line, no
+  // call: a caller's loop of independent points then keeps several cells' memory reads in
+  // flight at once. The rest go on from the leaf (its slab, then its faces).
   Aim a;
+  detail::NoSink3D sink;
   if (aim(p, a) > 0) {
-    const Node& nd = nodes_[a.baseCell];
+    int level = 0;
+    const Node& nd = nodes_[leafAt(a.deepI, a.deepJ, a.baseCell, level)];
     if (detail::radiiDecide(a.d2, nd.in2, nd.out2))
       return detail::insideOrOutside(a.d2 > static_cast<double>(nd.out2));
+    return fromLeaf(p, a.d2, nd, sink);
   }
-  detail::NoSink3D sink;
   return run(p, sink);
 }
 

@@ -1,6 +1,6 @@
 // convexloc (internal) — the cube map's query, written once for locate(), trace() and the
-// batch: aim at a cell, go down to its leaf, let the radii decide, else test the leaf's faces
-// (or walk, in a crowded leaf). Why this is exact: cubemap/index.hpp.
+// batch: aim at a cell, go down to its leaf, let the radii decide, else its slab, else test
+// the leaf's faces (or walk, in a crowded leaf). Why this is exact: cubemap/index.hpp.
 #pragma once
 
 #include <algorithm>
@@ -46,6 +46,17 @@ Location CubemapLocator::fromLeaf(Vec3 p, double d2, const Node& leaf, Sink& sin
     const bool decided = detail::radiiDecide(d2, leaf.in2, leaf.out2);
     sink.radius(d2, leaf.in2, leaf.out2, decided);
     if (decided) return detail::insideOrOutside(d2 > static_cast<double>(leaf.out2));
+    // d2 <= out2 bounds the slab's rounding (cubemap/slabs.cpp)
+    if (!slabs_.empty() && d2 <= static_cast<double>(leaf.out2)) {
+      const Slab& b = slabs_[static_cast<std::size_t>(&leaf - nodes_.data())];
+      const double v = static_cast<double>(b.n[0]) * (p.x - centre_.x) +
+                       static_cast<double>(b.n[1]) * (p.y - centre_.y) +
+                       static_cast<double>(b.n[2]) * (p.z - centre_.z);
+      const bool beyond = v > static_cast<double>(b.hi);
+      const bool bySlab = beyond | (v < static_cast<double>(b.lo));
+      sink.slab(bySlab);
+      if (bySlab) return detail::insideOrOutside(beyond);
+    }
   }
   if constexpr (std::is_same_v<Sink, detail::NoSink3D>) {
     // Untraced, a leaf that is not crowded: every face's filter, then the answer without a

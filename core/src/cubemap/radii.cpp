@@ -1,5 +1,6 @@
 // convexloc — the cube map's radii: for each leaf, the two squared distances from the centre
-// that decide most points before any face test (the argument: detail/radii.hpp).
+// that decide most points before any face test (the argument: detail/radii.hpp); then, from
+// the same list of faces, its slab (cubemap/slabs.cpp).
 //
 // A leaf's bounds start from its faces' whole-face bounds: the distance to the face's plane
 // (below every point of the face) and to its farthest vertex. Where those leave a shell wider
@@ -237,7 +238,9 @@ void CubemapBuilder::setLeafRadii() {
                                 L.centre_, whole, first, count, kSample, lo, hi);
     nd.in2 = detail::innerBound(lo);
     nd.out2 = detail::outerBound(hi);
+    setLeafSlab(node, cf, level, i, j, {first, count});
   };
+  L.slabs_.assign(L.nodes_.size(), CubemapLocator::Slab{});
   for (Node& nd : L.nodes_)
     if (nd.count == cubemap::kInner) nd.in2 = nd.out2 = std::numeric_limits<float>::quiet_NaN();
   L.forEachLeaf(leaf);

@@ -1,6 +1,6 @@
 // convexloc — the cube map's tables as plain arrays, and a locator loaded from them: every
 // size, index, mark and level checked, so that no query reads outside the tables; the lists
-// and radii are trusted to be the builder's (see CubemapLocator's load constructor).
+// radii and slabs are trusted to be the builder's (see CubemapLocator's load constructor).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -58,6 +58,7 @@ CubemapTables CubemapLocator::tables() const {
     t.nodes.insert(t.nodes.end(), {nd.first, nd.count});
     t.radii.insert(t.radii.end(), {nd.in2, nd.out2});
   }
+  for (const Slab& b : slabs_) t.slabs.insert(t.slabs.end(), {b.n[0], b.n[1], b.n[2], b.lo, b.hi});
   t.entries.assign(entries_.begin(), entries_.end());
   for (const Zone& z : zones_) t.zones.insert(t.zones.end(), {z.first, z.size, signBit(z.sigma)});
   for (const auto& e : zoneEdges_) t.zoneEdges.insert(t.zoneEdges.end(), {e[0], e[1]});
@@ -226,9 +227,23 @@ class TableLoader {
       }
     }
     checkTree(deepest, base, n);
+    checkSlabs(n);
   }
 
  private:
+  // none, or one per node: a finite normal and bounds that are not NaN
+  void checkSlabs(std::size_t n) const {
+    if (t_.slabs.empty()) return;
+    require(t_.slabs.size() == 5 * n, "slabs holds " + std::to_string(t_.slabs.size()) +
+                                          " values for " + std::to_string(n) + " nodes");
+    for (std::size_t k = 0; k < n; ++k) {
+      const float* b = t_.slabs.data() + 5 * k;
+      require(std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) &&
+                  !std::isnan(b[3]) && !std::isnan(b[4]),
+              "node " + std::to_string(k) + "'s slab is not numbers");
+    }
+  }
+
   // every block is the children of one node only, at most `deepest` levels down
   void checkTree(int deepest, std::size_t base, std::size_t n) const {
     std::vector<bool> claimed((n - base) / 4, false);
@@ -279,7 +294,7 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, const Cubemap
     require(t.nodes.empty() && t.radii.empty() && t.entries.empty() && t.zones.empty() &&
                 t.zoneEdges.empty() && t.zoneFaces.empty() && t.zoneRanges.empty() &&
                 t.sectors.empty() && t.sectorPoints.empty() && t.sectorFaces.empty() &&
-                t.sectorKeys.empty() && t.sectorRanges.empty(),
+                t.sectorKeys.empty() && t.sectorRanges.empty() && t.slabs.empty(),
             "the resolution is 0 (no cells), yet there are tables");
     resolution_ = 0;
     return;
@@ -303,6 +318,11 @@ CubemapLocator::CubemapLocator(const ConvexPolyhedron& polyhedron, const Cubemap
   for (std::size_t k = 0; k < nodes_.size(); ++k)
     nodes_[k] = {t.nodes[2 * k], t.nodes[2 * k + 1], t.radii[2 * k], t.radii[2 * k + 1]};
   entries_.assign(t.entries.begin(), t.entries.end());
+  slabs_.resize(t.slabs.size() / 5);
+  for (std::size_t k = 0; k < slabs_.size(); ++k) {
+    const float* b = t.slabs.data() + 5 * k;
+    slabs_[k] = {{b[0], b[1], b[2]}, b[3], b[4]};
+  }
   centre_ = c;
   resolution_ = t.resolution;
   deepScale_ = std::ldexp(static_cast<double>(resolution_), deepestLevel_ - 1);

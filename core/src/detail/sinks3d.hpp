@@ -31,6 +31,7 @@ struct NoSink3D {
   void nonFinite() {}
   void atCentre() {}
   void radius(double, float, float, bool) {}
+  void slab(bool) {}
   // the radius filter runs
   static constexpr bool radii() { return true; }
 };
@@ -60,6 +61,7 @@ struct TraceSink3D {
     t.outerRadius = std::sqrt(static_cast<double>(out2));
     t.byRadius = decided;
   }
+  void slab(bool decided) { t.bySlab = decided; }
   void fallback() { t.fallback = true; }
   void nonFinite() { t.nonFinite = true; }
   void atCentre() { t.atCentre = true; }
