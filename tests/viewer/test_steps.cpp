@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -201,6 +202,32 @@ TEST(Steps, CubemapShowsAZeroUpToRoundingAsZero) {
   ASSERT_GE(m.steps.size(), 2u);
   EXPECT_EQ(m.steps[0].caption, "d = x - x_T = (0.5,0,-0.2): cube face +x");
   EXPECT_EQ(m.steps[1].caption.rfind("(s,t) = (0,-0.4) -> cell (", 0), 0u) << m.steps[1].caption;
+}
+
+// a point the cell's slab decides between its radii: the slab's step says so, and no face
+// test is listed
+TEST(Steps, CubemapNamesTheSlabThatDecides) {
+  const ConvexPolyhedron cyl(generatePolyhedron(PolyhedronKind::Cylinder, 256, 1));
+  const CubemapLocator cm(cyl);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  std::size_t found = 0;
+  for (int k = 0; k < 20000 && found < 20; ++k) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    const Trace3D t = cm.trace(p);
+    if (!t.bySlab) continue;
+    ++found;
+    const cv::StepModel m = cv::buildSteps3D(t, p, 2.0);
+    const std::string word = t.result == Location::Inside ? "inside" : "outside";
+    EXPECT_NE(t.result, Location::Boundary);
+    EXPECT_EQ(countFocus(m, cv::StepFocus::Face), 0u);
+    ASSERT_GE(m.steps.size(), 4u);
+    const std::string& radii = m.steps[2].caption;
+    EXPECT_EQ(radii.substr(radii.size() - 9), ": between") << radii;
+    EXPECT_EQ(m.steps[3].caption,
+              "the cell's slab: n . d beyond its bounds: " + word + " with no face test");
+  }
+  EXPECT_GT(found, 0u);
 }
 
 TEST(Steps, WalkListsEveryEdgeTestItCounts) {

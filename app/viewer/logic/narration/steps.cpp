@@ -98,8 +98,11 @@ void radiusStep(const Trace& t, StepList& l, const char* noun) {
     return;
   }
   if (!(t.outerRadius > 0)) return;
+  bool slab = false;  // the cube map's slab decides after the radii (its own step)
+  if constexpr (requires { t.bySlab; }) slab = t.bySlab;
   const std::string verdict =
-      t.distance < t.innerRadius
+      slab ? std::string(": between")
+      : t.distance < t.innerRadius
           ? std::string(": inside with no test")
           : (t.distance > t.outerRadius ? std::string(": outside with no test")
                                         : std::string(": between, the ") + noun + "s decide");
@@ -270,12 +273,18 @@ void cubeCellSteps(const Trace3D& t, double scale, StepList& l) {
             std::string(kCubeFaceNames[static_cast<std::size_t>(t.cubeFace)]),
         0, StepFocus::Octant, t.cubeFace);
   // s and t lie in [-1, 1]: below 1e-12 they are rounding of a d coordinate shown as 0 above
-  std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}, 1.0) + " -> cell (" + std::to_string(t.cellI) +
-                     "," + std::to_string(t.cellJ) + ") of " + std::to_string(t.cellsPerSide) +
-                     "x" + std::to_string(t.cellsPerSide);
+  std::string cell = "(s,t) = " + compact(Vec2{t.s, t.t}, 1.0) + " -> cell (" +
+                     std::to_string(t.cellI) + "," + std::to_string(t.cellJ) + ") of " +
+                     std::to_string(t.cellsPerSide) + "x" + std::to_string(t.cellsPerSide);
   if (t.level > 0) cell += ", level " + std::to_string(t.level);
   l.add(cell, 1, StepFocus::Cell, -1);
   radiusStep(t, l, "face");
+  // between the radii, the cell's slab (a plane's two bounds over where its rays leave the
+  // shape) can still decide before any face test
+  if (t.bySlab)
+    l.add(std::string("the cell's slab: n . d beyond its bounds: ") +
+              (t.result == Location::Inside ? "inside" : "outside") + " with no face test",
+          2, StepFocus::Radii, -1);
 }
 
 void cubemapSteps(const Trace3D& t, double scale, StepModel& m) {
