@@ -111,7 +111,7 @@ cv::UiState startUi(cv::Model& model, const cv::Options& options, const cv::GlIn
 // size the window had becomes the lecture's zoom, as --font-scale is at start.
 void openLecture(cv::Model& model, cv::UiState& ui, const std::string& path) {
   if (ui.show.lecture.slides.empty()) {
-    model.settings.textZoom = model.settings.fontScale;
+    model.settings.textZoom = model.settings.fontScale / model.settings.uiScaleFactor;
     model.settings.fontScale = 1.0f;
   }
   cv::Options options;
@@ -245,10 +245,13 @@ int Viewer::start(const char* argv0) {
 #ifdef __EMSCRIPTEN__
   ui_.webPage = true;
 #endif
+  model_.settings.uiScaleFactor = options_.uiScale;
   if (!options_.lecture.empty()) {
     // a lecture's slides give their own text size: --font-scale zooms it
     model_.settings.textZoom = options_.fontScale;
     model_.settings.fontScale = 1.0f;
+  } else if (!options_.figure) {
+    model_.settings.fontScale *= options_.uiScale;  // the panels, not a figure's slide
   }
   if (!cv::startLecture(model_, ui_, options_, headless_)) return 1;
   // the web page: what the link asked for and could not be shown, in the page's message box

@@ -224,8 +224,23 @@ def test_taps(b, url, check):
           "the drawer closes again, the scene has the phone's whole width (%d CSS px)" % width)
 
 
+def ink_rows(img, x_from):
+    """The first and last rows with dark pixels (text, edges) right of `x_from`, over the
+    lower buttons' band (the bottom 8%)."""
+    rows = [y for y in range(int(img.height * 0.92))
+            if any(min(img.pixel(x, y)) < 120 for x in range(x_from, img.width, 2))]
+    return (rows[0], rows[-1]) if rows else (img.height, 0)
+
+
 def test_phone_lecture(b, url, check):
     phone(b, url + "?lecture=paper")
+    # held upright, the slide fills the screen (not a 16:9 band across its middle): its title
+    # near the top, its caption near the bottom
+    img = b.screenshot()
+    top, bottom = ink_rows(img, int(img.width * 0.4))
+    check(top < 0.12 * img.height and bottom > 0.75 * img.height,
+          "on a phone held upright the slide fills the screen (text from %.0f%% to %.0f%% of its "
+          "height)" % (100.0 * top / img.height, 100.0 * bottom / img.height))
     tap(b, *PHONE_BUTTONS["next"])
     after_button = view(b)["slide"]
     # a quick swipe to the left, high on the slide (no box there), 0.2 s from down to up

@@ -13,6 +13,11 @@
 namespace convexloc::viewer {
 namespace {
 
+// a phone's slide: the bands of the window kept for the page's file button (top) and the
+// drawer's and slides' buttons (bottom), as shares of the window's height
+constexpr double kPhoneTopBand = 0.04;
+constexpr double kPhoneBottomBand = 0.055;
+
 // the drawn shape's width over its height, about (the 3D scenes as a square)
 double shapeAspect(const Model& model) {
   if (model.dim == Dim::Three) return model.planes3d.enabled() ? 2.0 : 1.0;
@@ -97,9 +102,16 @@ bool plotsSlide(const Model& model, const UiState& ui) {
 }
 
 PageFit pageOf(const Model& model, const UiState& ui, glm::dvec2 window) {
-  if (onSlide(model, ui))
-    return fitPage(window, slidePageIn(window, model.settings.page, model.settings.pageGiven));
-  return {{{0.0, 0.0}, window}, 1.0};
+  if (!onSlide(model, ui)) return {{{0.0, 0.0}, window}, 1.0};
+  // a phone (the web page's drawer): the page between the page's file button at the top and
+  // the drawer's and slides' buttons at the bottom
+  const double top = model.settings.drawer ? kPhoneTopBand * window.y : 0.0;
+  const double bottom = model.settings.drawer ? kPhoneBottomBand * window.y : 0.0;
+  const glm::dvec2 room{window.x, window.y - top - bottom};
+  PageFit f = fitPage(room, slidePageIn(room, model.settings.page, model.settings.pageGiven));
+  f.page.lo.y += top;
+  f.page.hi.y += top;
+  return f;
 }
 
 SlideMetrics windowMetrics() {

@@ -21,8 +21,9 @@ function convexlocArguments(search, pixelRatio) {
     args.push('--' + key);
     if (v !== '') args.push(v);
   }
-  // a HiDPI screen: the canvas has all its pixels, the text keeps its size on the screen
-  if (!fontScaleGiven && pixelRatio > 1) args.push('--font-scale', pixelRatio.toFixed(2));
+  // a HiDPI screen: the canvas has all its pixels, the panels' text keeps its size on the
+  // screen (a slide's grows with its page already)
+  if (!fontScaleGiven && pixelRatio > 1) args.push('--ui-scale', pixelRatio.toFixed(2));
   return args;
 }
 

@@ -50,6 +50,9 @@ struct Settings {
   // size (--font-scale with --lecture, + and -), and window pixels per page unit, 1 when no
   // slide is shown (the viewer then lays out in window pixels)
   float textZoom = 1.0f;
+  // a HiDPI web page's pixel ratio (--ui-scale): in fontScale outside slides, not in a
+  // lecture's zoom
+  float uiScaleFactor = 1.0f;
   float pageScale = 1.0f;
   // the page's size in units (--page; a lecture's first slide sets it for the lecture)
   glm::dvec2 page{1920.0, 1080.0};

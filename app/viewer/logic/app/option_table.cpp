@@ -376,6 +376,16 @@ const OptionSpec kOptions[] = {
        o.theme = v[0] == "dark" ? Theme::Dark : Theme::Light;
        return true;
      }},
+    {"--ui-scale", "F", 1, kView,
+     "the panels' text scale on a HiDPI web page (its pixel ratio; the page passes it): "
+     "slides already scale with their page",
+     "a number from 0.5 to 4", false,
+     [](const Values& v, Options& o, std::string&) {
+       double x = 0.0;
+       if (!parseDouble(v[0], x) || x < 0.5 || x > 4.0) return false;
+       o.uiScale = static_cast<float>(x);
+       return true;
+     }},
     {"--font-scale", "F", 1, kView,
      "text size, 0.5 .. 4 (default 1); with --lecture, a zoom over the slides' own",
      "a number from 0.5 to 4", false,

@@ -42,6 +42,9 @@ struct Options {
   std::optional<std::array<Vec3, 3>> plane;
   Theme theme = Theme::Dark;
   float fontScale = 1.0f;
+  // --ui-scale: a HiDPI web page's pixel ratio, the panels' text grown by it (a slide's text
+  // already grows with its page, which is laid out in the canvas's device pixels)
+  float uiScale = 1.0f;
   // a slide's page in units (--page WxH): its aspect is the slides' (default 1920x1080)
   std::optional<std::pair<int, int>> page;
   bool hideUi = false;
