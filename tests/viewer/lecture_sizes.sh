@@ -19,7 +19,11 @@ export_at() {  # LECTURE SIZE DIR
     >"$3.log"
 }
 export_at "$lecture" 1920x1080 "$out/1080"
-export_at "$lecture" 1280x720 "$out/720"
+# under the sanitizers (scripts/test.sh sets CONVEXLOC_HOSTILE_SCALE below 1) the 1080p
+# export's own checks only: the same code draws the other sizes
+sanitized=
+if awk -v s="${CONVEXLOC_HOSTILE_SCALE:-1}" 'BEGIN { exit !(s < 1) }'; then sanitized=1; fi
+[[ -n $sanitized ]] || export_at "$lecture" 1280x720 "$out/720"
 
 # the 4K subset: slide 1 and the chosen slides, as a lecture of their own (shape and timing
 # file paths made absolute, since the subset lies elsewhere)
@@ -28,18 +32,19 @@ awk -v keep=" 1 $SLIDES_4K " -v dir="$dir" '
   /^slide / { n++; on = index(keep, " " n " ") > 0; if (on) print "# slide " n }
   on && /^(shape|why-from) / && $2 !~ /^\// { print $1 " " dir "/" $2; next }
   on { print }' "$lecture" >"$out/subset.lecture"
-export_at "$out/subset.lecture" 3840x2160 "$out/4k"
+[[ -n $sanitized ]] || export_at "$out/subset.lecture" 3840x2160 "$out/4k"
 
 status=0
 k=0
 for n in 1 $SLIDES_4K; do
+  [[ -z $sanitized ]] || break
   k=$((k + 1))
   "$compare" "$(printf '%s/4k/slide-%02d.png' "$out" "$k")" \
     "$(printf '%s/1080/slide-%02d.png' "$out" "$n")" --max-mean 6 || status=1
 done
 for png in "$out"/1080/slide-*.png; do
   name=$(basename "$png" .png)
-  "$compare" "$out/720/$name.png" "$png" --max-mean 7 || status=1
+  [[ -n $sanitized ]] || "$compare" "$out/720/$name.png" "$png" --max-mean 7 || status=1
   rsvg-convert "$out/1080/$name.svg" -o "$out/1080/$name.svg.png"
   "$compare" "$out/1080/$name.svg.png" "$png" --max-rmse 0.05 || status=1
 done
