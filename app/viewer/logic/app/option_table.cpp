@@ -39,6 +39,22 @@ bool setText(const Values& v, Options& o, std::string&) {
   return true;
 }
 
+// a name, checked where it is used (a preset, a generator, a method)
+template <std::optional<std::string> Options::*member>
+bool setName(const Values& v, Options& o, std::string&) {
+  o.*member = v[0];
+  return true;
+}
+
+// a text scale from 0.5 to 4
+template <float Options::*member>
+bool setScale(const Values& v, Options& o, std::string&) {
+  double x = 0.0;
+  if (!parseDouble(v[0], x) || x < 0.5 || x > 4.0) return false;
+  o.*member = static_cast<float>(x);
+  return true;
+}
+
 // a value that must be one of `choices`
 bool oneOf(const std::string& v, std::initializer_list<std::string_view> choices) {
   return std::find(choices.begin(), choices.end(), v) != choices.end();
@@ -221,18 +237,10 @@ const OptionSpec kOptions[] = {
     {"--preset", "NAME", 1, kScene,
      "degenerate gallery: sliver, tiny-edges, large-offset, collinear-duplicate, "
      "thin-slab, small-gap, tiny-faces, coplanar-faces",
-     "a name", false,
-     [](const Values& v, Options& o, std::string&) {
-       o.preset = v[0];
-       return true;
-     }},
+     "a name", false, setName<&Options::preset>},
     {"--generate", "KIND", 1, kScene,
      "a generated shape (regular, random, ellipse, sliver, ...) of --n N and --seed S",
-     "a kind (regular, random, ellipse, ...)", false,
-     [](const Values& v, Options& o, std::string&) {
-       o.generate = v[0];
-       return true;
-     }},
+     "a kind (regular, random, ellipse, ...)", false, setName<&Options::generate>},
     {"--n", "N", 1, kScene, "the generated shape's size", "a whole number >= 3", false,
      [](const Values& v, Options& o, std::string&) {
        std::size_t x = 0;
@@ -379,22 +387,10 @@ const OptionSpec kOptions[] = {
     {"--ui-scale", "F", 1, kView,
      "the panels' text scale on a HiDPI web page (its pixel ratio; the page passes it): "
      "slides already scale with their page",
-     "a number from 0.5 to 4", false,
-     [](const Values& v, Options& o, std::string&) {
-       double x = 0.0;
-       if (!parseDouble(v[0], x) || x < 0.5 || x > 4.0) return false;
-       o.uiScale = static_cast<float>(x);
-       return true;
-     }},
+     "a number from 0.5 to 4", false, setScale<&Options::uiScale>},
     {"--font-scale", "F", 1, kView,
      "text size, 0.5 .. 4 (default 1); with --lecture, a zoom over the slides' own",
-     "a number from 0.5 to 4", false,
-     [](const Values& v, Options& o, std::string&) {
-       double x = 0.0;
-       if (!parseDouble(v[0], x) || x < 0.5 || x > 4.0) return false;
-       o.fontScale = static_cast<float>(x);
-       return true;
-     }},
+     "a number from 0.5 to 4", false, setScale<&Options::fontScale>},
     {"--page", "WxH", 1, kView,
      "a slide's page in units (default 1920x1080): slides keep its aspect, letterboxed, "
      "at any window size",
@@ -465,11 +461,7 @@ const OptionSpec kOptions[] = {
        return true;
      }},
     {"--split", "M", 1, kTeaching, "2D: the scene twice, method M in the right half, one camera",
-     "a 2D method name", false,
-     [](const Values& v, Options& o, std::string&) {
-       o.split = v[0];
-       return true;
-     }},
+     "a 2D method name", false, setName<&Options::split>},
     {"--build-step", "K", 1, kTeaching,
      "the cells after receiving edges (3D: faces) 0 .. K-1 (build "
      "animation)",
