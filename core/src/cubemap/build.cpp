@@ -3,10 +3,10 @@
 // Each face's cone from the centre is projected onto the cube faces it meets as a polygon
 // relaxed beyond every rounding (see cubemap/index.hpp), and rasterised onto the cells with
 // the query's own cell index. The base grid (6 G^2 cells) is coarsened until it fits the
-// memory budget; then crowded cells are split into 4, breadth first, while the budget
-// allows; a cell that no split helps (many faces meeting at one vertex) stays crowded and is
-// searched by a walk. Nodes and entries are stored flat (CSR), so memory is O(F) whatever
-// the faces' sizes.
+// memory budget; then crowded cells are split into 4, the most crowded first (where a walk
+// or a bisection costs most), while the budget allows; a cell that no split helps (many
+// faces meeting at one vertex) stays crowded and is searched by a walk. Nodes and entries
+// are stored flat (CSR), so memory is O(F) whatever the faces' sizes.
 #include "cubemap/build.hpp"
 
 #include <algorithm>
@@ -273,8 +273,10 @@ void CubemapBuilder::refineCrowdedCells() {
   queueCrowdedBaseCells();
   live_ = liveBytes();
   liveEntries_ = L.entries_.size();
-  for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const Pending q = queue_[head];
+  while (!queue_.empty()) {
+    std::pop_heap(queue_.begin(), queue_.end(), morePressing);
+    const Pending q = queue_.back();
+    queue_.pop_back();
     if (q.level >= L.deepestLevel_) continue;
     const Node parent = L.nodes_[q.node];
     sortFaces(q, parent);
@@ -298,9 +300,16 @@ void CubemapBuilder::queueCrowdedBaseCells() {
     if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count) &&
         !isSectorLeaf(L.nodes_[c].count)) {
       const BaseCell base = baseCellAt(c, L.resolution_);
-      queue_.push_back(
+      queue(
           {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});
     }
+}
+
+void CubemapBuilder::queue(Pending q) {
+  q.faces = locator_.nodes_[q.node].count;
+  q.order = queued_++;
+  queue_.push_back(q);
+  std::push_heap(queue_.begin(), queue_.end(), morePressing);
 }
 
 void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
@@ -423,9 +432,8 @@ std::uint32_t CubemapBuilder::addChildren(std::uint32_t node, std::int64_t i0, s
                         static_cast<std::uint32_t>(lists[c].size())});
     L.entries_.insert(L.entries_.end(), lists[c].begin(), lists[c].end());
     if (lists[c].size() > kCrowdedCell3D)
-      queue_.push_back(
-          {first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
-           static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
+      queue({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+             static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
   }
   L.nodes_[node] = {first, kInner};
   return first;

@@ -67,12 +67,18 @@ class CubemapBuilder {
   using Node = CubemapLocator::Node;
   // what a node costs: itself and its slab
   static constexpr std::size_t kNodeBytes = sizeof(Node) + sizeof(CubemapLocator::Slab);
-  // a cell waiting to be split: its node, place and level
+  // a cell waiting to be split: its node, place and level, its faces and when it was queued
   struct Pending {
     std::uint32_t node;
     std::uint32_t i, j;
     std::uint8_t face, level;
+    std::uint32_t faces = 0;
+    std::uint64_t order = 0;
   };
+  // the heap order of the refinement: the cell listing more faces first, then the earlier
+  static bool morePressing(const Pending& a, const Pending& b) {
+    return a.faces != b.faces ? a.faces < b.faces : a.order > b.order;
+  }
 
   // === base grid (build.cpp)
   // the default G for `faces` faces
@@ -99,9 +105,11 @@ class CubemapBuilder {
   void fillBaseCells(const std::vector<std::uint32_t>& counts);
 
   // === quadtree (build.cpp)
-  // splits crowded cells, breadth first, while the budget allows
+  // splits crowded cells, the most crowded first, while the budget allows
   void refineCrowdedCells();
   void queueCrowdedBaseCells();
+  // queues a crowded cell (its node holds its list)
+  void queue(Pending q);
   // sorts the triangles of the parent's faces into the small ones (placed by their projected
   // boxes) and the others (by their cones' polygons)
   void sortFaces(const Pending& q, const Node& parent);
@@ -176,7 +184,8 @@ class CubemapBuilder {
   cubemap::PowerOfTwo scale_{0};        // brings the cube's half-size into [1, 2)
   std::size_t budget_ = 0;              // bytes the cells may use
   // the refinement's state
-  std::vector<Pending> queue_;
+  std::vector<Pending> queue_;  // a heap by morePressing
+  std::uint64_t queued_ = 0;
   std::size_t live_ = 0;         // bytes the nodes and the leaves' entries use
   std::size_t liveEntries_ = 0;  // entries the leaves list
   std::vector<std::uint32_t> small_, large_;
