@@ -214,28 +214,35 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
     const std::int64_t last = g - 1;
     std::vector<std::uint32_t> lastFace(cells, kUnlisted);  // each face once per cell
     const bool grouped = !zoneOf_.empty() || !fanOf_.empty();
-    std::vector<std::uint32_t> inZones(grouped ? cells : 0, 0);
+    // each cell's faces in zones and in fans
+    std::vector<std::uint32_t> inZones(grouped ? cells : 0, 0), inFans(grouped ? cells : 0, 0);
     const bool ok = forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
       rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
         const std::size_t c = baseCellIndex(cf, i, j, g);
         if (lastFace[c] == f) return;
         lastFace[c] = f;
         ++counts[c];
-        if (grouped && ((!zoneOf_.empty() && zoneOf_[f] != kUnlisted) ||
-                        (!fanOf_.empty() && fanOf_[f] != kUnlisted)))
-          ++inZones[c];
+        if (grouped) {
+          inZones[c] += !zoneOf_.empty() && zoneOf_[f] != kUnlisted;
+          inFans[c] += !fanOf_.empty() && fanOf_[f] != kUnlisted;
+        }
       });
     });
     if (!ok) return false;
     // a crowded cell over a zone or a fan with few other faces keeps a range of it: one entry
-    // for its faces there (as encodeZones and encodeSectors at best make it)
-    std::size_t entries = 0;
+    // and the range for its faces there (as encodeZones and encodeSectors at best make it;
+    // encodeSectors takes a fan of kFanLeaf faces at least)
+    std::size_t bytes = cells * kNodeBytes;
     for (std::size_t c = 0; c < cells; ++c) {
-      const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
-      const bool ranged = z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D;
-      entries += counts[c] - z + (ranged ? 1 : z);
+      const std::uint32_t zones = inZones.empty() ? 0 : inZones[c],
+                          fans = inFans.empty() ? 0 : inFans[c], z = zones + fans;
+      const bool ranged =
+          z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D && (fans == 0 || fans >= kFanLeaf);
+      const std::size_t range = fans ? sizeof(CubemapLocator::SectorRange) : sizeof(ZoneRange);
+      bytes += ranged ? (counts[c] - z + 1) * sizeof(std::uint32_t) + range
+                      : counts[c] * sizeof(std::uint32_t);
     }
-    if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
+    if (g == 1 || bytes <= budget_) return true;
     g = coarser(g, locator_.surface_.triangles);
   }
 }

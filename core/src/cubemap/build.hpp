@@ -43,6 +43,9 @@ struct PowerOfTwo {
 
 // the deepest quadtree level
 inline constexpr int kMaxLevel = 30;
+// the fewest fan faces a leaf searches by bisection (cubemap/sectors.cpp): fewer are split
+// or walked
+inline constexpr std::uint32_t kFanLeaf = 32;
 // the largest G accepted
 inline constexpr std::uint32_t kMaxResolution = 8192;
 
