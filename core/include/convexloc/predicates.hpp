@@ -139,8 +139,7 @@ class Orient3dAround {
   Orient3dAround(Vec3 a, Vec3 b, Vec3 d) noexcept : a_(a), b_(b), d_(d) {
     const double ax = a.x - d.x, ay = a.y - d.y, az = a.z - d.z;
     const double bx = b.x - d.x, by = b.y - d.y, bz = b.z - d.z;
-    const double yz = ay * bz, zy = az * by, zx = az * bx, xz = ax * bz, xy = ax * by,
-                 yx = ay * bx;
+    const double yz = ay * bz, zy = az * by, zx = az * bx, xz = ax * bz, xy = ax * by, yx = ay * bx;
     w_[0] = yz - zy, w_[1] = zx - xz, w_[2] = xy - yx;
     m_[0] = std::fabs(yz) + std::fabs(zy), m_[1] = std::fabs(zx) + std::fabs(xz),
     m_[2] = std::fabs(xy) + std::fabs(yx);
