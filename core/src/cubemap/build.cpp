@@ -286,17 +286,19 @@ void CubemapBuilder::refineCrowdedCells() {
     queue_.pop_back();
     if (q.level >= L.deepestLevel_) continue;
     const Node parent = L.nodes_[q.node];
-    sortFaces(q, parent);
+    const std::span<const std::uint32_t> faces = parentFaces(parent);
+    sortFaces(q, faces);
     const int levels = chainLevels(q);
     const std::size_t added = listChildren(q, levels);
-    if (levels == 1 && splitIsFutile(parent, added)) continue;
+    if (levels == 1 && splitIsFutile(faces.size(), added)) continue;
+    const std::uint32_t stored = leafEntries(parent.count);
     const std::size_t grown = live_ + 4 * kNodeBytes * levels + added * sizeof(std::uint32_t) -
-                              parent.count * sizeof(std::uint32_t);
+                              stored * sizeof(std::uint32_t);
     if (grown > budget_ || L.entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
       break;
     commitChildren(q, levels);
     live_ = grown;
-    liveEntries_ = liveEntries_ + added - parent.count;
+    liveEntries_ = liveEntries_ + added - stored;
     if (L.entries_.size() > 2 * liveEntries_ + (1u << 20)) compactEntries();
   }
 }
@@ -304,22 +306,29 @@ void CubemapBuilder::refineCrowdedCells() {
 void CubemapBuilder::queueCrowdedBaseCells() {
   const CubemapLocator& L = locator_;
   for (std::size_t c = 0; c < L.nodes_.size(); ++c)
-    if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count) &&
-        !isSectorLeaf(L.nodes_[c].count)) {
+    if (const std::uint32_t n = L.nodes_[c].count;
+        (n > kCrowdedCell3D && !isZoneLeaf(n) && !isSectorLeaf(n)) ||
+        (isSectorLeaf(n) && leafEntries(n) > 1)) {
       const BaseCell base = baseCellAt(c, L.resolution_);
       queue(
           {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});
     }
 }
 
+std::span<const std::uint32_t> CubemapBuilder::parentFaces(const Node& nd) {
+  if (!isSectorLeaf(nd.count)) return {locator_.entries_.data() + nd.first, nd.count};
+  fanLeafFaces(nd, expanded_);
+  return expanded_;
+}
+
 void CubemapBuilder::queue(Pending q) {
-  q.faces = locator_.nodes_[q.node].count;
+  q.faces = static_cast<std::uint32_t>(parentFaces(locator_.nodes_[q.node]).size());
   q.order = queued_++;
   queue_.push_back(q);
   std::push_heap(queue_.begin(), queue_.end(), morePressing);
 }
 
-void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
+void CubemapBuilder::sortFaces(const Pending& q, std::span<const std::uint32_t> faces) {
   // a small face in front of the cube face goes by its box (a superset of its projection,
   // so still conservative); others by their polygon
   const CubemapLocator& L = locator_;
@@ -331,8 +340,7 @@ void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
   Cone k;
   Poly P, B;
   const auto& triangles = polyhedron_.triangles();
-  for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
-    const std::uint32_t f = L.entries_[e];
+  for (const std::uint32_t f : faces) {
     for (std::uint32_t tri : polyhedron_.planeTriangles(f)) {
       const ConvexPolyhedron::Triangle& t = triangles[tri];
       if (projectedBox(v, t, L.centre_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
@@ -406,12 +414,12 @@ std::size_t CubemapBuilder::listChildren(const Pending& q, int levels) {
   return added;
 }
 
-bool CubemapBuilder::splitIsFutile(const Node& parent, std::size_t added) const {
+bool CubemapBuilder::splitIsFutile(std::size_t parent, std::size_t added) const {
   // an ordinary split: stop where a child keeps every face while the others share many (a
   // vertex all of them meet, which no split separates; a walk searches it instead)
   std::size_t most = 0;
   for (const auto& list : lists_[0]) most = std::max(most, list.size());
-  return most == parent.count && added - most > parent.count / 2;
+  return most == parent && added - most > parent / 2;
 }
 
 void CubemapBuilder::commitChildren(const Pending& q, int levels) {

@@ -110,12 +110,17 @@ class CubemapBuilder {
   // === quadtree (build.cpp)
   // splits crowded cells, the most crowded first, while the budget allows
   void refineCrowdedCells();
+  // queues the crowded base cells, and the fan leaves with other faces (where the fan's
+  // surface meets another, which neither radii nor a slab bound tightly); a split fan leaf's
+  // children list all their faces until encodeSectors
   void queueCrowdedBaseCells();
   // queues a crowded cell (its node holds its list)
   void queue(Pending q);
+  // a leaf's faces: its list, or a fan leaf's expanded (fanLeafFaces, into expanded_)
+  std::span<const std::uint32_t> parentFaces(const Node& nd);
   // sorts the triangles of the parent's faces into the small ones (placed by their projected
   // boxes) and the others (by their cones' polygons)
-  void sortFaces(const Pending& q, const Node& parent);
+  void sortFaces(const Pending& q, std::span<const std::uint32_t> faces);
   // how many levels the split goes down at once: more than 1 where every small face stays in
   // one cell (a chain)
   int chainLevels(const Pending& q) const;
@@ -125,7 +130,7 @@ class CubemapBuilder {
   // fills the children's lists, level by level down the chain; returns how many entries
   std::size_t listChildren(const Pending& q, int levels);
   // a split where one child keeps every face while the others share many gains nothing
-  bool splitIsFutile(const Node& parent, std::size_t added) const;
+  bool splitIsFutile(std::size_t parent, std::size_t added) const;
   // appends the children down the chain, top down
   void commitChildren(const Pending& q, int levels);
   // appends the 4 children of `node` (whose children start at cell i0, j0 of `level`) with
@@ -191,7 +196,7 @@ class CubemapBuilder {
   std::uint64_t queued_ = 0;
   std::size_t live_ = 0;         // bytes the nodes and the leaves' entries use
   std::size_t liveEntries_ = 0;  // entries the leaves list
-  std::vector<std::uint32_t> small_, large_;
+  std::vector<std::uint32_t> small_, large_, expanded_;
   std::vector<std::array<double, 4>> smallBoxes_;  // (s0, s1, t0, t1)
   std::array<double, 4> smallBounds_{};            // the box around all of them
   std::vector<cubemap::Poly> largePolys_;
