@@ -116,7 +116,7 @@ TEST(Orient3d, AroundAnAxisMatchesRational) {
   // Orient3dAround(a, b, d)(k) = orient3d(a, b, k, d), the cross product computed once: many
   // k per (a, b, d), at every scale, on the plane through a, b and d and one ulp off it
   Rng r(15);
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < 2000; ++i) {
     int lo = -20, hi = 20;
     if (i % 5 == 1) lo = -1074, hi = -900;
     if (i % 5 == 2) lo = 900, hi = 1023;
