@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(Cylinders, CadFans,
 
 // the fans' tables and the cells of the larger parts within the cube map's memory bound
 TEST(CadFans, LargerPartsStayWithin128BytesPerTriangle) {
-  for (const Case k : {Case{scaled(4096, 512), 1, false}, Case{scaled(4096, 512), 10, true}}) {
+  for (const Case k : {Case{scaled(4096, 1024), 1, false}, Case{scaled(4096, 1024), 10, true}}) {
     const ConvexPolyhedron p = cadfamily::polyhedron({k.sides, k.height, k.moved});
     const Stats3D s = CubemapLocator(p).stats();
     EXPECT_GT(s.sectorCells, 0u) << k.sides << " sides, height " << k.height;

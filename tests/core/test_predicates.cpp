@@ -13,7 +13,9 @@ using namespace convexloc;
 
 namespace {
 
-int sgn(const mpq_class& v) { return mpq_sgn(v.get_mpq_t()); }
+int sgn(const mpq_class& v) {
+  return mpq_sgn(v.get_mpq_t());
+}
 
 int refOrient2d(Vec2 a, Vec2 b, Vec2 c) {
   mpq_class ax(a.x), ay(a.y), bx(b.x), by(b.y), cx(c.x), cy(c.y);
@@ -68,7 +70,8 @@ TEST(Orient2d, NearlyCollinearMatchesRational) {
 TEST(Orient2d, ExtremeMagnitudesMatchRational) {
   // subnormals, huge values and overflow of the products all take the exact path
   Rng r(12);
-  const int ranges[][2] = {{-1074, -1000}, {-600, -400}, {-10, 10}, {400, 600}, {1000, 1023}, {-1074, 1023}};
+  const int ranges[][2] = {{-1074, -1000}, {-600, -400}, {-10, 10},
+                           {400, 600},     {1000, 1023}, {-1074, 1023}};
   for (auto [lo, hi] : ranges)
     for (int i = 0; i < 20000; ++i) {
       Vec2 a{wild(r, lo, hi), wild(r, lo, hi)}, b{wild(r, lo, hi), wild(r, lo, hi)};
@@ -107,4 +110,37 @@ TEST(Orient3d, MatchesRational) {
   }
   EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 0}), 0);
   EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, -1}), 1);
+}
+
+TEST(Orient3d, AroundAnAxisMatchesRational) {
+  // Orient3dAround(a, b, d)(k) = orient3d(a, b, k, d), the cross product computed once: many
+  // k per (a, b, d), at every scale, on the plane through a, b and d and one ulp off it
+  Rng r(15);
+  for (int i = 0; i < 2000; ++i) {
+    int lo = -20, hi = 20;
+    if (i % 5 == 1) lo = -1074, hi = -900;
+    if (i % 5 == 2) lo = 900, hi = 1023;
+    if (i % 5 == 3) lo = -1074, hi = 1023;
+    const Vec3 a{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    const Vec3 b{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    const Vec3 d{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    const detail::Orient3dAround around(a, b, d);
+    for (int j = 0; j < 16; ++j) {
+      Vec3 k{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+      if (j % 4 == 1) k = a;
+      if (j % 4 == 2) k = {d.x * 0.5 + b.x * 0.5, d.y * 0.5 + b.y * 0.5, d.z * 0.5 + b.z * 0.5};
+      if (j % 4 == 3)
+        k = {a.x * 0.75 + b.x * 0.25, a.y * 0.75 + b.y * 0.25, a.z * 0.75 + b.z * 0.25};
+      if (j % 8 >= 4) k.z = std::nextafter(k.z, r.below(2) ? 1e300 : -1e300);
+      ASSERT_TRUE(std::isfinite(k.x) && std::isfinite(k.y) && std::isfinite(k.z));
+      ASSERT_EQ(around(k), refOrient3d(a, b, k, d)) << i << ' ' << j;
+      ASSERT_EQ(around(k), orient3d(a, b, k, d)) << i << ' ' << j;
+    }
+  }
+  // an axis through the origin and points around it, as a fan's bisection asks
+  const detail::Orient3dAround axis({0, 0, 0}, {0, 0, 1}, {1, 0, 0.5});
+  EXPECT_EQ(axis({1, 1, 7}), orient3d({0, 0, 0}, {0, 0, 1}, {1, 1, 7}, {1, 0, 0.5}));
+  EXPECT_EQ(axis({2, 0, -3}), 0);
+  EXPECT_EQ(axis({2, std::nextafter(0.0, 1.0), -3}),
+            orient3d({0, 0, 0}, {0, 0, 1}, {2, 4.9e-324, -3}, {1, 0, 0.5}));
 }

@@ -78,8 +78,12 @@ inline bool tame3dAll(double a0, double a1, double a2, double a3, double a4, dou
   const double m0 = std::fabs(a0), m1 = std::fabs(a1), m2 = std::fabs(a2), m3 = std::fabs(a3),
                m4 = std::fabs(a4), m5 = std::fabs(a5), m6 = std::fabs(a6), m7 = std::fabs(a7),
                m8 = std::fabs(a8);
-  const double hi = std::max({m0, m1, m2, m3, m4, m5, m6, m7, m8});
-  const double lo = std::min({m0, m1, m2, m3, m4, m5, m6, m7, m8});
+  // pairwise, not in a chain: the same values (no NaN: differences of finite doubles), a
+  // shorter dependency for the hot face tests
+  const double hi = std::max(std::max(std::max(m0, m1), std::max(m2, m3)),
+                             std::max(std::max(m4, m5), std::max(m6, std::max(m7, m8))));
+  const double lo = std::min(std::min(std::min(m0, m1), std::min(m2, m3)),
+                             std::min(std::min(m4, m5), std::min(m6, std::min(m7, m8))));
   if (!(hi <= 0x1p250)) return false;
   if (lo >= 0x1p-250) return true;
   bool all = true;
@@ -123,6 +127,40 @@ inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
   if (t.tame && t.permanent == 0.0) return 0;
   return detail::orient3dExact(a, b, c, d);
 }
+
+namespace detail {
+// orient3d(a, b, k, d) for one a, b, d and many k (a bisection around the axis through a and
+// b): det[a - d; b - d; k - d] = (k - d) . w with w = (a - d) x (b - d) computed once. The
+// filter is orient3d's: the same operations (a difference times a difference of two products
+// of differences, three such terms summed left to right) with the roles of the rows exchanged,
+// which Shewchuk's bound kO3dBound * permanent does not see; the exact stage is orient3d.
+class Orient3dAround {
+ public:
+  Orient3dAround(Vec3 a, Vec3 b, Vec3 d) noexcept : a_(a), b_(b), d_(d) {
+    const double ax = a.x - d.x, ay = a.y - d.y, az = a.z - d.z;
+    const double bx = b.x - d.x, by = b.y - d.y, bz = b.z - d.z;
+    const double yz = ay * bz, zy = az * by, zx = az * bx, xz = ax * bz, xy = ax * by, yx = ay * bx;
+    w_[0] = yz - zy, w_[1] = zx - xz, w_[2] = xy - yx;
+    m_[0] = std::fabs(yz) + std::fabs(zy), m_[1] = std::fabs(zx) + std::fabs(xz),
+    m_[2] = std::fabs(xy) + std::fabs(yx);
+    tame_ = tame3d(ax) && tame3d(ay) && tame3d(az) && tame3d(bx) && tame3d(by) && tame3d(bz);
+  }
+  // the exact sign of orient3d(a, b, k, d)
+  int operator()(Vec3 k) const noexcept {
+    const double kx = k.x - d_.x, ky = k.y - d_.y, kz = k.z - d_.z;
+    const double det = kx * w_[0] + ky * w_[1] + kz * w_[2];
+    const double permanent = std::fabs(kx) * m_[0] + std::fabs(ky) * m_[1] + std::fabs(kz) * m_[2];
+    if (tame_ && tame3d(kx) && tame3d(ky) && tame3d(kz) && std::fabs(det) > kO3dBound * permanent)
+      return det > 0 ? 1 : -1;
+    return orient3d(a_, b_, k, d_);
+  }
+
+ private:
+  Vec3 a_, b_, d_;
+  double w_[3], m_[3];  // the cross product and its permanents
+  bool tame_;
+};
+}  // namespace detail
 
 // How many times the exact fallback ran in this thread (for tests and statistics).
 unsigned long long exactFallbackCount() noexcept;

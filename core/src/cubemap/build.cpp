@@ -3,10 +3,10 @@
 // Each face's cone from the centre is projected onto the cube faces it meets as a polygon
 // relaxed beyond every rounding (see cubemap/index.hpp), and rasterised onto the cells with
 // the query's own cell index. The base grid (6 G^2 cells) is coarsened until it fits the
-// memory budget; then crowded cells are split into 4, breadth first, while the budget
-// allows; a cell that no split helps (many faces meeting at one vertex) stays crowded and is
-// searched by a walk. Nodes and entries are stored flat (CSR), so memory is O(F) whatever
-// the faces' sizes.
+// memory budget; then crowded cells are split into 4, the most crowded first (where a walk
+// or a bisection costs most), while the budget allows; a cell that no split helps (many
+// faces meeting at one vertex) stays crowded and is searched by a walk. Nodes and entries
+// are stored flat (CSR), so memory is O(F) whatever the faces' sizes.
 #include "cubemap/build.hpp"
 
 #include <algorithm>
@@ -214,28 +214,35 @@ bool CubemapBuilder::fitBaseGrid(std::vector<std::uint32_t>& counts) {
     const std::int64_t last = g - 1;
     std::vector<std::uint32_t> lastFace(cells, kUnlisted);  // each face once per cell
     const bool grouped = !zoneOf_.empty() || !fanOf_.empty();
-    std::vector<std::uint32_t> inZones(grouped ? cells : 0, 0);
+    // each cell's faces in zones and in fans
+    std::vector<std::uint32_t> inZones(grouped ? cells : 0, 0), inFans(grouped ? cells : 0, 0);
     const bool ok = forEachProjection([&](std::uint32_t f, int cf, const Poly& P) {
       rasterise(P, K, 0, last, 0, last, [&](std::int64_t i, std::int64_t j) {
         const std::size_t c = baseCellIndex(cf, i, j, g);
         if (lastFace[c] == f) return;
         lastFace[c] = f;
         ++counts[c];
-        if (grouped && ((!zoneOf_.empty() && zoneOf_[f] != kUnlisted) ||
-                        (!fanOf_.empty() && fanOf_[f] != kUnlisted)))
-          ++inZones[c];
+        if (grouped) {
+          inZones[c] += !zoneOf_.empty() && zoneOf_[f] != kUnlisted;
+          inFans[c] += !fanOf_.empty() && fanOf_[f] != kUnlisted;
+        }
       });
     });
     if (!ok) return false;
     // a crowded cell over a zone or a fan with few other faces keeps a range of it: one entry
-    // for its faces there (as encodeZones and encodeSectors at best make it)
-    std::size_t entries = 0;
+    // and the range for its faces there (as encodeZones and encodeSectors at best make it;
+    // encodeSectors takes a fan of kFanLeaf faces at least)
+    std::size_t bytes = cells * kNodeBytes;
     for (std::size_t c = 0; c < cells; ++c) {
-      const std::uint32_t z = inZones.empty() ? 0 : inZones[c];
-      const bool ranged = z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D;
-      entries += counts[c] - z + (ranged ? 1 : z);
+      const std::uint32_t zones = inZones.empty() ? 0 : inZones[c],
+                          fans = inFans.empty() ? 0 : inFans[c], z = zones + fans;
+      const bool ranged =
+          z > kCrowdedCell3D && counts[c] - z <= kCrowdedCell3D && (fans == 0 || fans >= kFanLeaf);
+      const std::size_t range = fans ? sizeof(CubemapLocator::SectorRange) : sizeof(ZoneRange);
+      bytes += ranged ? (counts[c] - z + 1) * sizeof(std::uint32_t) + range
+                      : counts[c] * sizeof(std::uint32_t);
     }
-    if (g == 1 || cells * kNodeBytes + entries * sizeof(std::uint32_t) <= budget_) return true;
+    if (g == 1 || bytes <= budget_) return true;
     g = coarser(g, locator_.surface_.triangles);
   }
 }
@@ -273,21 +280,25 @@ void CubemapBuilder::refineCrowdedCells() {
   queueCrowdedBaseCells();
   live_ = liveBytes();
   liveEntries_ = L.entries_.size();
-  for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const Pending q = queue_[head];
+  while (!queue_.empty()) {
+    std::pop_heap(queue_.begin(), queue_.end(), morePressing);
+    const Pending q = queue_.back();
+    queue_.pop_back();
     if (q.level >= L.deepestLevel_) continue;
     const Node parent = L.nodes_[q.node];
-    sortFaces(q, parent);
+    const std::span<const std::uint32_t> faces = parentFaces(parent);
+    sortFaces(q, faces);
     const int levels = chainLevels(q);
     const std::size_t added = listChildren(q, levels);
-    if (levels == 1 && splitIsFutile(parent, added)) continue;
+    if (levels == 1 && splitIsFutile(faces.size(), added)) continue;
+    const std::uint32_t stored = leafEntries(parent.count);
     const std::size_t grown = live_ + 4 * kNodeBytes * levels + added * sizeof(std::uint32_t) -
-                              parent.count * sizeof(std::uint32_t);
+                              stored * sizeof(std::uint32_t);
     if (grown > budget_ || L.entries_.size() + added > std::numeric_limits<std::uint32_t>::max())
       break;
     commitChildren(q, levels);
     live_ = grown;
-    liveEntries_ = liveEntries_ + added - parent.count;
+    liveEntries_ = liveEntries_ + added - stored;
     if (L.entries_.size() > 2 * liveEntries_ + (1u << 20)) compactEntries();
   }
 }
@@ -295,15 +306,29 @@ void CubemapBuilder::refineCrowdedCells() {
 void CubemapBuilder::queueCrowdedBaseCells() {
   const CubemapLocator& L = locator_;
   for (std::size_t c = 0; c < L.nodes_.size(); ++c)
-    if (L.nodes_[c].count > kCrowdedCell3D && !isZoneLeaf(L.nodes_[c].count) &&
-        !isSectorLeaf(L.nodes_[c].count)) {
+    if (const std::uint32_t n = L.nodes_[c].count;
+        (n > kCrowdedCell3D && !isZoneLeaf(n) && !isSectorLeaf(n)) ||
+        (isSectorLeaf(n) && leafEntries(n) > 1)) {
       const BaseCell base = baseCellAt(c, L.resolution_);
-      queue_.push_back(
+      queue(
           {static_cast<std::uint32_t>(c), base.i, base.j, static_cast<std::uint8_t>(base.face), 0});
     }
 }
 
-void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
+std::span<const std::uint32_t> CubemapBuilder::parentFaces(const Node& nd) {
+  if (!isSectorLeaf(nd.count)) return {locator_.entries_.data() + nd.first, nd.count};
+  fanLeafFaces(nd, expanded_);
+  return expanded_;
+}
+
+void CubemapBuilder::queue(Pending q) {
+  q.faces = static_cast<std::uint32_t>(parentFaces(locator_.nodes_[q.node]).size());
+  q.order = queued_++;
+  queue_.push_back(q);
+  std::push_heap(queue_.begin(), queue_.end(), morePressing);
+}
+
+void CubemapBuilder::sortFaces(const Pending& q, std::span<const std::uint32_t> faces) {
   // a small face in front of the cube face goes by its box (a superset of its projection,
   // so still conservative); others by their polygon
   const CubemapLocator& L = locator_;
@@ -315,8 +340,7 @@ void CubemapBuilder::sortFaces(const Pending& q, const Node& parent) {
   Cone k;
   Poly P, B;
   const auto& triangles = polyhedron_.triangles();
-  for (std::uint32_t e = parent.first; e < parent.first + parent.count; ++e) {
-    const std::uint32_t f = L.entries_[e];
+  for (const std::uint32_t f : faces) {
     for (std::uint32_t tri : polyhedron_.planeTriangles(f)) {
       const ConvexPolyhedron::Triangle& t = triangles[tri];
       if (projectedBox(v, t, L.centre_, q.face, B) && B.p[2].x - B.p[0].x <= 1 / K1 &&
@@ -390,12 +414,12 @@ std::size_t CubemapBuilder::listChildren(const Pending& q, int levels) {
   return added;
 }
 
-bool CubemapBuilder::splitIsFutile(const Node& parent, std::size_t added) const {
+bool CubemapBuilder::splitIsFutile(std::size_t parent, std::size_t added) const {
   // an ordinary split: stop where a child keeps every face while the others share many (a
   // vertex all of them meet, which no split separates; a walk searches it instead)
   std::size_t most = 0;
   for (const auto& list : lists_[0]) most = std::max(most, list.size());
-  return most == parent.count && added - most > parent.count / 2;
+  return most == parent && added - most > parent / 2;
 }
 
 void CubemapBuilder::commitChildren(const Pending& q, int levels) {
@@ -423,9 +447,8 @@ std::uint32_t CubemapBuilder::addChildren(std::uint32_t node, std::int64_t i0, s
                         static_cast<std::uint32_t>(lists[c].size())});
     L.entries_.insert(L.entries_.end(), lists[c].begin(), lists[c].end());
     if (lists[c].size() > kCrowdedCell3D)
-      queue_.push_back(
-          {first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
-           static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
+      queue({first + static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(i0 + (c & 1)),
+             static_cast<std::uint32_t>(j0 + (c >> 1)), face, static_cast<std::uint8_t>(level)});
   }
   L.nodes_[node] = {first, kInner};
   return first;

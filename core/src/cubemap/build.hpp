@@ -43,6 +43,9 @@ struct PowerOfTwo {
 
 // the deepest quadtree level
 inline constexpr int kMaxLevel = 30;
+// the fewest fan faces a leaf searches by bisection (cubemap/sectors.cpp): fewer are split
+// or walked
+inline constexpr std::uint32_t kFanLeaf = 32;
 // the largest G accepted
 inline constexpr std::uint32_t kMaxResolution = 8192;
 
@@ -67,12 +70,18 @@ class CubemapBuilder {
   using Node = CubemapLocator::Node;
   // what a node costs: itself and its slab
   static constexpr std::size_t kNodeBytes = sizeof(Node) + sizeof(CubemapLocator::Slab);
-  // a cell waiting to be split: its node, place and level
+  // a cell waiting to be split: its node, place and level, its faces and when it was queued
   struct Pending {
     std::uint32_t node;
     std::uint32_t i, j;
     std::uint8_t face, level;
+    std::uint32_t faces = 0;
+    std::uint64_t order = 0;
   };
+  // the heap order of the refinement: the cell listing more faces first, then the earlier
+  static bool morePressing(const Pending& a, const Pending& b) {
+    return a.faces != b.faces ? a.faces < b.faces : a.order > b.order;
+  }
 
   // === base grid (build.cpp)
   // the default G for `faces` faces
@@ -99,12 +108,19 @@ class CubemapBuilder {
   void fillBaseCells(const std::vector<std::uint32_t>& counts);
 
   // === quadtree (build.cpp)
-  // splits crowded cells, breadth first, while the budget allows
+  // splits crowded cells, the most crowded first, while the budget allows
   void refineCrowdedCells();
+  // queues the crowded base cells, and the fan leaves with other faces (where the fan's
+  // surface meets another, which neither radii nor a slab bound tightly); a split fan leaf's
+  // children list all their faces until encodeSectors
   void queueCrowdedBaseCells();
+  // queues a crowded cell (its node holds its list)
+  void queue(Pending q);
+  // a leaf's faces: its list, or a fan leaf's expanded (fanLeafFaces, into expanded_)
+  std::span<const std::uint32_t> parentFaces(const Node& nd);
   // sorts the triangles of the parent's faces into the small ones (placed by their projected
   // boxes) and the others (by their cones' polygons)
-  void sortFaces(const Pending& q, const Node& parent);
+  void sortFaces(const Pending& q, std::span<const std::uint32_t> faces);
   // how many levels the split goes down at once: more than 1 where every small face stays in
   // one cell (a chain)
   int chainLevels(const Pending& q) const;
@@ -114,7 +130,7 @@ class CubemapBuilder {
   // fills the children's lists, level by level down the chain; returns how many entries
   std::size_t listChildren(const Pending& q, int levels);
   // a split where one child keeps every face while the others share many gains nothing
-  bool splitIsFutile(const Node& parent, std::size_t added) const;
+  bool splitIsFutile(std::size_t parent, std::size_t added) const;
   // appends the children down the chain, top down
   void commitChildren(const Pending& q, int levels);
   // appends the 4 children of `node` (whose children start at cell i0, j0 of `level`) with
@@ -176,10 +192,11 @@ class CubemapBuilder {
   cubemap::PowerOfTwo scale_{0};        // brings the cube's half-size into [1, 2)
   std::size_t budget_ = 0;              // bytes the cells may use
   // the refinement's state
-  std::vector<Pending> queue_;
+  std::vector<Pending> queue_;  // a heap by morePressing
+  std::uint64_t queued_ = 0;
   std::size_t live_ = 0;         // bytes the nodes and the leaves' entries use
   std::size_t liveEntries_ = 0;  // entries the leaves list
-  std::vector<std::uint32_t> small_, large_;
+  std::vector<std::uint32_t> small_, large_, expanded_;
   std::vector<std::array<double, 4>> smallBoxes_;  // (s0, s1, t0, t1)
   std::array<double, 4> smallBounds_{};            // the box around all of them
   std::vector<cubemap::Poly> largePolys_;

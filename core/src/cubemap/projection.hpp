@@ -138,11 +138,24 @@ inline bool projectedBox(const std::vector<Vec3>& v, const ConvexPolyhedron::Tri
   return true;
 }
 
+// floor(x) and ceil(x) as integers, by truncation where |x| < 2^52 (the usual cell index: no
+// call to the library's rounding in the rasteriser's inner loop)
+inline std::int64_t floorIndex(double x) {
+  if (!(std::fabs(x) < 0x1p52)) return static_cast<std::int64_t>(std::floor(x));
+  const auto i = static_cast<std::int64_t>(x);
+  return i - static_cast<std::int64_t>(static_cast<double>(i) > x);
+}
+inline std::int64_t ceilIndex(double x) {
+  if (!(std::fabs(x) < 0x1p52)) return static_cast<std::int64_t>(std::ceil(x));
+  const auto i = static_cast<std::int64_t>(x);
+  return i + static_cast<std::int64_t>(static_cast<double>(i) < x);
+}
+
 // Narrows [first, last] to the cells, at the level with K = (cells per side) / 2, whose
 // range of one coordinate grown by kReach meets [lo, hi] (empty when first > last).
 inline void cellRange(double lo, double hi, double K, std::int64_t& first, std::int64_t& last) {
-  first = std::max(first, static_cast<std::int64_t>(std::ceil((lo - kReach + 1) * K)) - 1);
-  last = std::min(last, static_cast<std::int64_t>(std::floor((hi + kReach + 1) * K)));
+  first = std::max(first, ceilIndex((lo - kReach + 1) * K) - 1);
+  last = std::min(last, floorIndex((hi + kReach + 1) * K));
 }
 
 // Calls cell(i, j) for every cell at the level with K = (cells per side) / 2, within the
@@ -157,6 +170,12 @@ inline void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1,
   }
   std::int64_t jlo = j0, jhi = j1;
   cellRange(tmin, tmax, K, jlo, jhi);
+  // each edge's dx / dy, once (a product per row instead of a quotient: the same few ulps)
+  double slope[8];
+  for (int k = 0; k < P.n; ++k) {
+    const Vec2 p = P.p[k], q = P.p[(k + 1) % P.n];
+    slope[k] = (q.x - p.x) / (q.y - p.y);
+  }
   for (std::int64_t j = jlo; j <= jhi; ++j) {
     const double ta = -1 + static_cast<double>(j) / K - kReach;
     const double tb = -1 + static_cast<double>(j + 1) / K + kReach;
@@ -169,7 +188,9 @@ inline void rasterise(const Poly& P, double K, std::int64_t i0, std::int64_t i1,
       }
       for (double y : {ta, tb})
         if ((p.y < y) != (q.y < y)) {
-          const double x = p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
+          // a nearly level edge whose dx / dy overflows: the quotient first, as it is
+          const double x = std::isfinite(slope[k]) ? p.x + (y - p.y) * slope[k]
+                                                   : p.x + (y - p.y) / (q.y - p.y) * (q.x - p.x);
           lo = std::min(lo, x);
           hi = std::max(hi, x);
         }

@@ -140,10 +140,11 @@ Location CubemapLocator::fromSectors(Vec3 p, const Node& leaf, Sink& sink) const
   std::uint32_t from = 0, to = 0;  // the window
   if (orient3d(centre_, f.axis, f.reference, p) == f.sign) {
     std::uint32_t lo = r.from, hi = r.to;
+    const detail::Orient3dAround around(centre_, f.axis, p);  // orient3d(c, axis, ., p)
     while (lo < hi) {
       const std::uint32_t mid = lo + (hi - lo) / 2;
       const std::uint32_t key = keys[mid] & cubemap::kSectorKey;
-      const int s = orient3d(centre_, f.axis, v[key], p);
+      const int s = around(v[key]);
       sink.sector(mid, key, s);
       if (s == f.sign)
         lo = mid + 1;

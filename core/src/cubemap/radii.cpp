@@ -76,9 +76,10 @@ struct CellPyramid {
 };
 
 // Returns the bound on the squared distance to the face's plane along every ray of the
-// pyramid (infinity where some corner ray misses the plane or the face is ill-conditioned).
+// pyramid (infinity where some corner ray misses the plane or the face is ill-conditioned);
+// raises in2 only when `inner` asks for it.
 double pieceBounds(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, double& in2,
-                   double& out2) {
+                   double& out2, bool inner = true) {
   using L = long double;
   constexpr L eps = std::numeric_limits<L>::epsilon();
   const L u[3] = {L(vb.x) - va.x, L(vb.y) - va.y, L(vb.z) - va.z};
@@ -118,6 +119,7 @@ double pieceBounds(const CellPyramid& cp, Vec3 va, Vec3 vb, Vec3 vd, Vec3 c, dou
   farthest += slack;
   const double plane2 = static_cast<double>(farthest * farthest);
   out2 = std::min(out2, plane2);
+  if (!inner) return plane2;  // in2 not asked for
   // the foot of the perpendicular lies along n from c: is its direction in the pyramid?
   // (tested with room far beyond n's error, so that "not in it" is sure)
   const L major = cp.sigma * n[cp.a];
@@ -164,20 +166,23 @@ CellPyramid pyramidOf(std::uint32_t g, int cf, int level, std::uint64_t i, std::
 }
 
 // each plane face's whole-face bounds: in2 below the squared distance to its plane, out2
-// that to its farthest corner
+// that to its farthest corner (side by side: a leaf reads both)
 struct FaceBounds {
-  std::vector<double> in2, out2;
+  struct Bounds {
+    double in2, out2;
+  };
+  std::vector<Bounds> of;
   FaceBounds(const detail::SurfaceCopy& surface, const ConvexPolyhedron& polyhedron, Vec3 c) {
     const std::size_t nf = surface.faces.size();
     const std::vector<Vec3>& v = surface.vertices;
-    in2.resize(nf), out2.resize(nf);
+    of.resize(nf);
     std::vector<double> vertex2(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) vertex2[i] = distance2Long(v[i], c);
     for (std::size_t f = 0; f < nf; ++f) {
       const ConvexPolyhedron::Triangle& t = surface.faces[f];
-      in2[f] = planeDistance2Below(v[t[0]], v[t[1]], v[t[2]], c);
-      out2[f] = 0.0;
-      for (std::uint32_t w : polyhedron.planeLoop(f)) out2[f] = std::max(out2[f], vertex2[w]);
+      of[f].in2 = planeDistance2Below(v[t[0]], v[t[1]], v[t[2]], c);
+      of[f].out2 = 0.0;
+      for (std::uint32_t w : polyhedron.planeLoop(f)) of[f].out2 = std::max(of[f].out2, vertex2[w]);
     }
   }
 };
@@ -197,9 +202,9 @@ void tightenInPyramid(const CellPyramid& cp, const detail::SurfaceCopy& surface,
   double tightLo = HUGE_VAL, tightHi = 0.0, anyPlane = HUGE_VAL;
   for (std::uint32_t k = 0; k < count; k += step) {
     const std::uint32_t f = first[k];
-    double fIn2 = whole.in2[f], fOut2 = whole.out2[f];
+    double fIn2 = whole.of[f].in2, fOut2 = whole.of[f].out2;
     const ConvexPolyhedron::Triangle& t = surface.faces[f];
-    anyPlane = std::min(anyPlane, pieceBounds(cp, v[t[0]], v[t[1]], v[t[2]], c, fIn2, fOut2));
+    anyPlane = std::min(anyPlane, pieceBounds(cp, v[t[0]], v[t[1]], v[t[2]], c, fIn2, fOut2, all));
     tightLo = std::min(tightLo, fIn2);
     tightHi = std::max(tightHi, fOut2);
   }
@@ -230,8 +235,8 @@ void CubemapBuilder::setLeafRadii() {
     const auto count = zone ? static_cast<std::uint32_t>(faces.size()) : nd.count;
     double lo = count ? HUGE_VAL : 0.0, hi = count ? 0.0 : HUGE_VAL;
     for (const std::uint32_t* e = first; e != first + count; ++e) {
-      lo = std::min(lo, whole.in2[*e]);
-      hi = std::max(hi, whole.out2[*e]);
+      lo = std::min(lo, whole.of[*e].in2);
+      hi = std::max(hi, whole.of[*e].out2);
     }
     if (count && !(hi <= lo * (1 + 0x1p-10)))
       cubemap::tightenInPyramid(cubemap::pyramidOf(L.resolution_, cf, level, i, j), L.surface_,

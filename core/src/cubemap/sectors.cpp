@@ -60,8 +60,6 @@ constexpr std::uint32_t kMaxBack = kSectorBack;
 static_assert(kMaxPolyhedronVertices <= std::size_t{1} << kSectorBackShift);
 // the fewest faces worth a fan
 constexpr std::size_t kMinFan = 16;
-// the fewest fan faces a leaf searches by bisection: fewer are split or walked
-constexpr std::uint32_t kFanLeaf = 32;
 // the arcs the turn around the axis is cut into (each fan's faces lie within a sixth of a
 // turn of its middle, well inside its half-turn)
 constexpr int kArcs = 6;

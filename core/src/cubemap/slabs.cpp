@@ -168,7 +168,7 @@ bool clipRange(const Corners& wider, const Long (&n)[3], std::span<const std::ui
 // with a slack far above their rounding (n's components at most 1 + 2^-23); false when a
 // value overflows
 bool cornerRange(const std::vector<Vec3>& vertices, std::span<const std::uint32_t> loop,
-                 const float (&n)[3], Vec3 c, Long& lo, Long& hi) {
+                 const float (&n)[3], Vec3 c, double& lo, double& hi) {
   double low = HUGE_VAL, high = -HUGE_VAL;
   for (std::uint32_t corner : loop) {
     const Vec3 y = vertices[corner];
@@ -202,27 +202,34 @@ void CubemapBuilder::setLeafSlab(std::uint32_t node, int cf, int level, std::uin
                 wider = cornersOf(L.resolution_, cf, level, i, j, 0x1p-24L);
   std::vector<Point> poly, next;
   Long lo = std::numeric_limits<Long>::infinity(), hi = -lo;
+  double low = HUGE_VAL, high = -HUGE_VAL;  // over the faces whose corners do not spread
   for (std::uint32_t f : faces) {
     // the face's corners; where they spread (a face large or slanted across n), its part in
     // the pyramid too: each range holds the values of that part, so their overlap does
-    Long flo, fhi, plo, phi;
+    Long plo, phi;
     const ConvexPolyhedron::Triangle& t = L.surface_.faces[f];
     const auto loop = polyhedron_.planeLoop(f);
     if (loop.size() > kSlabCorners) {  // a cap of many corners: its plane's hits, else none
-      if (!pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, flo, fhi)) return;
-      lo = std::min(lo, flo), hi = std::max(hi, fhi);
+      if (!pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi)) return;
+      lo = std::min(lo, plo), hi = std::max(hi, phi);
       continue;
     }
-    if (!cornerRange(v, loop, n32, c, flo, fhi)) return;
-    const bool spread = fhi - flo > 0x1p-8L * std::fabs(fhi) || !(flo > 0);
-    if (spread && (pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi) ||
-                   clipRange(wider, n, loop, v, c, poly, next, plo, phi))) {
+    double clo, chi;
+    if (!cornerRange(v, loop, n32, c, clo, chi)) return;
+    if (chi - clo <= 0x1p-8 * std::fabs(chi) && clo > 0) {  // most faces: in doubles
+      low = std::min(low, clo), high = std::max(high, chi);
+      continue;
+    }
+    Long flo = clo, fhi = chi;
+    if (pyramidRange(k, n, v[t[0]], v[t[1]], v[t[2]], c, plo, phi) ||
+        clipRange(wider, n, loop, v, c, poly, next, plo, phi)) {
       const bool overlap = std::max(flo, plo) <= std::min(fhi, phi);
       flo = overlap ? std::max(flo, plo) : plo;
       fhi = overlap ? std::min(fhi, phi) : phi;
     }
     lo = std::min(lo, flo), hi = std::max(hi, fhi);
   }
+  lo = std::min(lo, Long(low)), hi = std::max(hi, Long(high));
   // the query's rounding (d2 <= out2 when the slab runs), then outward to floats
   const Long margin = 0x1p-44L * std::sqrt(static_cast<Long>(out2)) + 0x1p-1000L;
   const double below = static_cast<double>(lo - margin),
