@@ -1,4 +1,4 @@
-"""Turns convexloc-bench JSON into a Markdown report (the issue's floors checked, then every
+"""Turns convexloc-bench JSON into a Markdown report (the speed targets checked, then every
 family as a table of ns per point) and gnuplot data for the log-log plots."""
 import collections
 import json
@@ -102,14 +102,14 @@ def one_thread(rows, ratios, path, polar, cubemap):
 
 
 def floors(rows):
-    """The issue's floors, each as (what, measured text, verdict)."""
+    """The speed targets, each as (what, measured text, verdict)."""
     ratios = Ratios(("holds", "FAILS"))
     # The floors "polar 1 thread" and "cubemap 1 thread" are read as the method's throughput
     # on one thread over many points: the batch on 1 thread (what `classify` runs), against
     # the peers' one-call-per-point loops (all their APIs offer). The same ratios for
     # convexloc's one point per call follow as information (per_call).
     one_thread(rows, ratios, "1 thread", ("Batch2D", "polar (1 thr)"), ("Batch3D", "cubemap (1 thr)"))
-    # the streaming limit as the issue defines it (two doubles in, a byte out); for 3D also
+    # the streaming limit as the targets define it (two doubles in, a byte out); for 3D also
     # against streaming its own 3-double points, shown beside it, not instead of it
     stream = ns(rows, "Stream", "stream (2 thr)", 10000000)
     stream3 = ns(rows, "Stream", "stream 3D (2 thr)", 10000000)
@@ -150,7 +150,7 @@ def main(path, out):
              f"{', '.join(f'{x:.2f}' for x in ctx.get('load_avg', [])) or '?'}; "
              "ns per point (lower is better), one run of `tests/bench/report`"
              f"{reps_text(ctx)}.", ""]
-    lines += ["### The issue's floors, from this run", "",
+    lines += ["### The speed targets, from this run", "",
               "| floor | measured | verdict |", "|---|---|---|"]
     lines += [f"| {w} | {m} | {v} |" for w, m, v in floors(rows)]
     lines += ["", "### The same ratios for one point per call (information)", "",
