@@ -16,6 +16,7 @@
 #include "convexloc/locate3d.hpp"
 #include "convexloc/polyhedron.hpp"
 #include "reference3d.hpp"
+#include "scale.hpp"
 
 namespace {
 
@@ -134,7 +135,8 @@ TEST_P(Intersect3DExact, BothMethodsMatchTheReference) {
   const ConvexPolyhedron p(c.mesh);
   const PlaneIntersector vertices(p, PlaneMethod::Vertices), dual(p, PlaneMethod::Dual);
   std::size_t crosses = 0, touches = 0;
-  const auto planes = planesFor(p, 300, GetParam() + 7);
+  // random planes scaled under the sanitizers (scale.hpp); the adversarial ones all kept
+  const auto planes = planesFor(p, testscale::scaled(300, 30), GetParam() + 7);
   // the batch of both methods, in one call (blocks, prefetching, a partial last block)
   std::vector<Vec3> flat;
   for (const Plane& pl : planes) flat.insert(flat.end(), {pl.a, pl.b, pl.c});
@@ -253,7 +255,7 @@ TEST(Intersect3DDual, BatchLengthsAgreeWithSingle) {
 // have degrees far above what a grid cell copies, so cells proposing them reach their
 // records by index. Every plane, one at a time, in a batch and traced, matches the reference,
 // and such a vertex is proposed.
-// planes per magnitude in the high-degree test
+// random planes per magnitude in the high-degree test (a tenth under the sanitizers)
 constexpr std::size_t kHighDegreePlanes = 300;
 
 TEST(Intersect3DDual, HighDegreeVerticesMatchTheReference) {
@@ -269,7 +271,7 @@ TEST(Intersect3DDual, HighDegreeVerticesMatchTheReference) {
     for (const auto& t : p.triangles())
       for (const std::uint32_t v : t) ++degree[v];
     const PlaneIntersector dual(p, PlaneMethod::Dual);
-    const auto planes = planesFor(p, kHighDegreePlanes, 17);
+    const auto planes = planesFor(p, testscale::scaled(kHighDegreePlanes, 30), 17);
     std::vector<Vec3> flat;
     for (const Plane& pl : planes) flat.insert(flat.end(), {pl.a, pl.b, pl.c});
     std::vector<Crossing> batch(planes.size());

@@ -16,6 +16,7 @@
 #include "convexloc/locate2d.hpp"
 #include "convexloc/polygon.hpp"
 #include "reference2d.hpp"
+#include "scale.hpp"
 #include "shapes2d.hpp"
 
 using namespace convexloc;
@@ -39,8 +40,10 @@ std::vector<Vec2> tracePoints(const shapes::ShapeCase& shape, const ConvexPolygo
   const PolarLocator polar(polygon);
   // without a centre, the fan's apex (vertex 0) stands in for it, as the query uses it
   const Vec2 centre = polar.centre().value_or(polygon.vertex(0));
-  std::vector<Vec2> pts = adversarial::randomPoints(polygon.bounds(), centre, 2000, rng);
-  std::vector<Vec2> near = generatePoints(polygon, 1000, 3, true);
+  // the random ones scaled under the sanitizers (scale.hpp), the hard and edge points all kept
+  std::vector<Vec2> pts =
+      adversarial::randomPoints(polygon.bounds(), centre, testscale::scaled(2000, 200), rng);
+  std::vector<Vec2> near = generatePoints(polygon, testscale::scaled(1000, 100), 3, true);
   pts.insert(pts.end(), near.begin(), near.end());
   std::vector<Vec2> hard = adversarial::polarPoints(polar, polygon);
   for (std::size_t i : adversarial::spread(hard.size(), 2000)) pts.push_back(hard[i]);

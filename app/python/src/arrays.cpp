@@ -43,7 +43,10 @@ std::string elementText(const std::vector<py::ssize_t>& shape, py::ssize_t flat)
     flat /= shape[k];
   }
   std::string text = "[";
-  for (std::size_t k = 0; k < index.size(); ++k) text += (k ? ", " : "") + std::to_string(index[k]);
+  for (std::size_t k = 0; k < index.size(); ++k) {
+    if (k > 0) text += ", ";
+    text += std::to_string(index[k]);
+  }
   return text + "]";
 }
 
