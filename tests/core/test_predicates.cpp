@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "convexloc/generate2d.hpp"
 #include "convexloc/predicates.hpp"
@@ -37,6 +38,19 @@ double wild(Rng& r, int lo, int hi) {
   double m = 1 + r.uniform();
   int e = lo + static_cast<int>(r.below(static_cast<std::uint64_t>(hi - lo + 1)));
   return (r.below(2) ? -1 : 1) * std::ldexp(m, e);
+}
+
+// a point of wild coordinates
+Vec3 wildPoint(Rng& r, int lo, int hi) {
+  return {wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+}
+
+// round i's exponent range: ordinary, tiny (subnormal included), huge, or all of them
+std::pair<int, int> exponentRange(int i) {
+  if (i % 5 == 1) return {-1074, -900};
+  if (i % 5 == 2) return {900, 1023};
+  if (i % 5 == 3) return {-1074, 1023};
+  return {-20, 20};
 }
 
 }  // namespace
@@ -97,14 +111,9 @@ TEST(CrossDiff2d, MatchesOrientWhenSharingAPoint) {
 TEST(Orient3d, MatchesRational) {
   Rng r(14);
   for (int i = 0; i < 100000; ++i) {
-    int lo = -20, hi = 20;
-    if (i % 5 == 1) lo = -1074, hi = -900;
-    if (i % 5 == 2) lo = 900, hi = 1023;
-    if (i % 5 == 3) lo = -1074, hi = 1023;
-    Vec3 a{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
-    Vec3 b{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
-    Vec3 c{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
-    Vec3 d{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    const auto [lo, hi] = exponentRange(i);
+    const Vec3 a = wildPoint(r, lo, hi), b = wildPoint(r, lo, hi), c = wildPoint(r, lo, hi);
+    Vec3 d = wildPoint(r, lo, hi);
     if (i % 5 == 4) d = {a.x + (b.x - a.x) * 0.5, a.y + (b.y - a.y) * 0.5, a.z + (b.z - a.z) * 0.5};
     ASSERT_EQ(orient3d(a, b, c, d), refOrient3d(a, b, c, d)) << i;
   }
@@ -117,16 +126,11 @@ TEST(Orient3d, AroundAnAxisMatchesRational) {
   // k per (a, b, d), at every scale, on the plane through a, b and d and one ulp off it
   Rng r(15);
   for (int i = 0; i < 2000; ++i) {
-    int lo = -20, hi = 20;
-    if (i % 5 == 1) lo = -1074, hi = -900;
-    if (i % 5 == 2) lo = 900, hi = 1023;
-    if (i % 5 == 3) lo = -1074, hi = 1023;
-    const Vec3 a{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
-    const Vec3 b{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
-    const Vec3 d{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+    const auto [lo, hi] = exponentRange(i);
+    const Vec3 a = wildPoint(r, lo, hi), b = wildPoint(r, lo, hi), d = wildPoint(r, lo, hi);
     const detail::Orient3dAround around(a, b, d);
     for (int j = 0; j < 16; ++j) {
-      Vec3 k{wild(r, lo, hi), wild(r, lo, hi), wild(r, lo, hi)};
+      Vec3 k = wildPoint(r, lo, hi);
       if (j % 4 == 1) k = a;
       if (j % 4 == 2) k = {d.x * 0.5 + b.x * 0.5, d.y * 0.5 + b.y * 0.5, d.z * 0.5 + b.z * 0.5};
       if (j % 4 == 3)
