@@ -6,7 +6,9 @@
 // projection is a branched covering of the sphere; its degree, the total solid angle over
 // 4 pi, is 1 exactly when the surface is the boundary of the convex solid.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -91,20 +93,44 @@ std::vector<Vec3> centreCandidates(const std::vector<Vec3>& v,
   return candidates;
 }
 
-// p - g for a rational g, in doubles rounded toward zero, halved when `half`
-Vec3 minusRational(Vec3 p, const ExactRational (&g)[3], bool half) {
-  ExactRational x = exactRational(p.x) - g[0], y = exactRational(p.y) - g[1],
-                z = exactRational(p.z) - g[2];
-  if (half) x /= 2, y /= 2, z /= 2;
-  return {toDouble(x, Rounding::TowardZero), toDouble(y, Rounding::TowardZero),
-          toDouble(z, Rounding::TowardZero)};
+// The directions from the exact point g to the vertices, each coordinate axis and then each
+// direction scaled exactly by a power of two before it is rounded (toward zero): no
+// coordinate that is not zero becomes zero or infinite, however thin the solid is along an
+// axis (a box one subnormal step thick beside one as wide as the doubles reach) or however
+// far apart its vertices lie. Only a coordinate below 2^-1074 of its direction's largest one
+// is lost, which no solid angle notices.
+std::vector<Vec3> exactDirections(const std::vector<Vec3>& v, const ExactRational (&g)[3]) {
+  constexpr long kNone = std::numeric_limits<long>::min();
+  std::vector<std::array<ExactRational, 3>> d(v.size());
+  long axis[3] = {kNone, kNone, kNone};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    d[i] = {exactRational(v[i].x) - g[0], exactRational(v[i].y) - g[1],
+            exactRational(v[i].z) - g[2]};
+    for (int a = 0; a < 3; ++a)
+      if (d[i][a].sign() != 0) axis[a] = std::max(axis[a], binaryExponent(d[i][a]));
+  }
+  std::vector<Vec3> rel(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    long top = kNone;
+    for (int a = 0; a < 3; ++a)
+      if (d[i][a].sign() != 0) {
+        d[i][a] = timesPowerOfTwo(d[i][a], -axis[a]);
+        top = std::max(top, binaryExponent(d[i][a]));
+      }
+    if (top == kNone) continue;  // the vertex is g: no direction (not a vertex of a solid)
+    auto round = [&](int a) { return toDouble(timesPowerOfTwo(d[i][a], -top), Rounding::TowardZero); };
+    rel[i] = {round(0), round(1), round(2)};
+  }
+  return rel;
 }
 
 // Scales each axis by its own power of two, bringing the largest |coordinate| into [1, 2). A
 // positive scaling of the axes does not change the winding number, and it makes a needle or
 // slab far thinner along one axis than along another well shaped: at one common scale its
 // thin directions are lost in rounding, and triangles that see 0 turn get half a turn each.
-void scaleAxes(std::vector<Vec3>& rel) {
+// False where a coordinate that is not zero came out below the normal doubles (2^-1022 of its
+// axis's extent or less), its bits cut or gone.
+bool scaleAxes(std::vector<Vec3>& rel) {
   Vec3 extent{};
   for (const Vec3& r : rel)
     extent = {std::max(extent.x, std::fabs(r.x)), std::max(extent.y, std::fabs(r.y)),
@@ -113,7 +139,14 @@ void scaleAxes(std::vector<Vec3>& rel) {
     return e > 0 ? -std::ilogb(e) : 0;
   };  // 2^shift may not be a double
   const int sx = shiftFor(extent.x), sy = shiftFor(extent.y), sz = shiftFor(extent.z);
-  for (Vec3& r : rel) r = {std::ldexp(r.x, sx), std::ldexp(r.y, sy), std::ldexp(r.z, sz)};
+  bool whole = true;
+  auto scaled = [&whole](double c, int shift) {
+    const double out = std::ldexp(c, shift);
+    whole &= c == 0 || std::fabs(out) >= std::numeric_limits<double>::min();
+    return out;
+  };
+  for (Vec3& r : rel) r = {scaled(r.x, sx), scaled(r.y, sy), scaled(r.z, sz)};
+  return whole;
 }
 
 }  // namespace
@@ -166,28 +199,27 @@ std::vector<Vec3> PolyhedronBuilder::directionsFromInside() const {
           "not convex: " + vertexName(out) + " lies outside the plane of " + faceName(t),
           triangleLine(t));
     }
-    for (std::size_t i = 0; i < v.size(); ++i) rel[i] = minusRational(v[i], g, false);
+    return exactDirections(v, g);
   }
-  // a difference that overflowed is taken at half scale
-  bool overflow = false;
-  for (const Vec3& r : rel)
-    overflow |= !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
-  if (overflow)
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      if (!out_.centre_) {
-        rel[i] = minusRational(v[i], g, true);
-        continue;
-      }
-      const Vec3 c = *out_.centre_;
-      rel[i] = {v[i].x * 0.5 - c.x * 0.5, v[i].y * 0.5 - c.y * 0.5, v[i].z * 0.5 - c.z * 0.5};
-    }
-  scaleAxes(rel);
+  // Differences of doubles are exact where they are subnormal and otherwise rounded to 53
+  // bits, never to zero. Where one overflows, or where scaling its axis cuts a coordinate, the
+  // exact way is taken.
+  const bool overflow = std::any_of(rel.begin(), rel.end(), [](const Vec3& r) {
+    return !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z);
+  });
+  if (overflow || !scaleAxes(rel)) {
+    const Vec3 c = *out_.centre_;
+    g[0] = exactRational(c.x);
+    g[1] = exactRational(c.y);
+    g[2] = exactRational(c.z);
+    return exactDirections(v, g);
+  }
   // a solid angle depends on its three directions only: each scaled exactly (a power of two)
   // to a largest coordinate in [1, 2), so that no length or product in it overflows or
   // underflows however far the vertices lie
   for (Vec3& r : rel) {
     const double m = std::max({std::fabs(r.x), std::fabs(r.y), std::fabs(r.z)});
-    if (!(m > 0) || !std::isfinite(m)) continue;
+    if (!(m > 0)) continue;
     const int e = -std::ilogb(m);
     r = {std::ldexp(r.x, e), std::ldexp(r.y, e), std::ldexp(r.z, e)};
   }

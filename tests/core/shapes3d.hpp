@@ -32,6 +32,13 @@ inline MeshData cube() {
   return m;
 }
 
+// the box with corners lo and hi, faces as in cube()
+inline MeshData box(Vec3 lo, Vec3 hi) {
+  MeshData m = cube();
+  for (Vec3& v : m.vertices) v = {v.x < 0 ? lo.x : hi.x, v.y < 0 ? lo.y : hi.y, v.z < 0 ? lo.z : hi.z};
+  return m;
+}
+
 // a tetrahedron with the given corners, counter-clockwise from outside when a, b, c turn
 // counter-clockwise seen from d's far side
 inline MeshData tetrahedron(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {

@@ -156,6 +156,38 @@ TEST(Polyhedron3D, ThinnerThanTheDoubleGridHasNoCentreButValidates) {
   }
 }
 
+TEST(Polyhedron3D, BoxesFromTheSmallestSubnormalStepToTheLargestDoubleValidate) {
+  constexpr double kMax = std::numeric_limits<double>::max();
+  constexpr double kStep = std::numeric_limits<double>::denorm_min();
+  struct Case {
+    Vec3 lo, hi;
+  };
+  // one subnormal step thick: no double strictly inside, the exact way decides (the fuzzer's
+  // tests/data/fuzz/differential/box-one-subnormal-step-thick); three steps thick and as wide
+  // as the doubles: a double centre, differences that overflow (halving them lost the thin
+  // axis: both were said to wind twice)
+  for (const Case& c : {Case{{8.5829409986692742e-310, -3.8944703855129008e-270, -0.0},
+                             {kMax, -1e-300, kStep}},
+                        Case{{-kMax, -1, 0}, {kMax, 1, 3 * kStep}},
+                        Case{{-kMax, -kMax, -kMax}, {kMax, kStep, kMax}},
+                        Case{{0, 0, 0}, {kStep, kStep, kStep}}}) {
+    const MeshData m = shapes3d::box(c.lo, c.hi);
+    ConvexPolyhedron p(m);
+    EXPECT_EQ(p.faceCount(), 12u);
+    reftest::Reference ref(p);
+    std::vector<Vec3> queries(m.vertices.begin(), m.vertices.end());
+    const Vec3 mid{c.lo.x / 2 + c.hi.x / 2, c.lo.y / 2 + c.hi.y / 2, c.lo.z / 2 + c.hi.z / 2};
+    queries.push_back(mid);
+    queries.push_back({mid.x, mid.y, std::nextafter(c.hi.z, kMax)});
+    queries.push_back({mid.x, mid.y, c.lo.z});
+    queries.push_back({std::nextafter(c.lo.x, -kMax), mid.y, mid.z});
+    for (const Method3D method : kAllMethods3D) {
+      Locator3D loc(p, method);
+      for (const Vec3& q : queries) EXPECT_EQ(loc.locate(q), ref.locate(q)) << toString(method);
+    }
+  }
+}
+
 TEST(Polyhedron3D, LargeOffsetKeepsExactness) {
   ConvexPolyhedron p(generatePolyhedron(PolyhedronKind::Offset, 500, 1));
   ASSERT_TRUE(p.centre().has_value());

@@ -52,6 +52,15 @@ ExactRational exactRational(double v) {
   return ExactRational(num, ExactInt(ExactInt(1) << static_cast<unsigned>(-d.exponent)));
 }
 
+long binaryExponent(const ExactRational& q) {
+  return bitLength(abs(numerator(q))) - bitLength(denominator(q));
+}
+
+ExactRational timesPowerOfTwo(const ExactRational& q, long k) {
+  if (k >= 0) return ExactRational(ExactInt(numerator(q) << static_cast<unsigned>(k)), denominator(q));
+  return ExactRational(numerator(q), ExactInt(denominator(q) << static_cast<unsigned>(-k)));
+}
+
 double toDouble(const ExactRational& q, Rounding mode) {
   const int sign = q.sign();
   if (sign == 0) return 0.0;

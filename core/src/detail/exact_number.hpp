@@ -35,6 +35,12 @@ ExactInt scaledInteger(double v, int shift);
 // the finite double v as an exact rational
 ExactRational exactRational(double v);
 
+// b with |q| in [2^(b-1), 2^(b+1)) for a non-zero q: its exponent to within one
+long binaryExponent(const ExactRational& q);
+
+// q * 2^k, exactly
+ExactRational timesPowerOfTwo(const ExactRational& q, long k);
+
 // How a rational that is not a double becomes one.
 enum class Rounding { Nearest, TowardZero };
 
