@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
@@ -105,34 +106,40 @@ std::vector<Plane> planesFor(const ConvexPolyhedron& p, std::size_t randomCount,
   return out;
 }
 
+// a shape of the matrix: its name, and how to make it (gtest names every case in every
+// process it starts, so naming builds nothing)
 struct Case3D {
   std::string name;
-  MeshData mesh;
+  std::function<MeshData()> mesh;
 };
 
-std::vector<Case3D> cases() {
-  std::vector<Case3D> out;
-  for (PolyhedronKind k : convexloc::kAllPolyhedronKinds) {
-    std::string name(convexloc::toString(k));
-    for (char& ch : name)
-      if (ch == '-') ch = '_';
-    out.push_back({name, convexloc::generatePolyhedron(k, 300, 1)});
-  }
-  out.push_back(
-      {"geodesic_5120", convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1)});
-  const MeshData ico = convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 80, 1);
-  out.push_back({"huge_2e997", scaled(ico, 997)});
-  out.push_back({"tiny_2e_1000", scaled(ico, -1000)});
-  out.push_back({"subnormal_cube",
-                 scaled(convexloc::generatePolyhedron(PolyhedronKind::Cube, 12, 1), -1070)});
-  return out;
+const std::vector<Case3D>& cases() {
+  static const std::vector<Case3D> all = [] {
+    std::vector<Case3D> out;
+    for (PolyhedronKind k : convexloc::kAllPolyhedronKinds) {
+      std::string name(convexloc::toString(k));
+      for (char& ch : name)
+        if (ch == '-') ch = '_';
+      out.push_back({name, [k] { return convexloc::generatePolyhedron(k, 300, 1); }});
+    }
+    out.push_back({"geodesic_5120", [] {
+                     return convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 5120, 1);
+                   }});
+    auto ico = [] { return convexloc::generatePolyhedron(PolyhedronKind::Geodesic, 80, 1); };
+    out.push_back({"huge_2e997", [ico] { return scaled(ico(), 997); }});
+    out.push_back({"tiny_2e_1000", [ico] { return scaled(ico(), -1000); }});
+    out.push_back({"subnormal_cube", [] {
+                     return scaled(convexloc::generatePolyhedron(PolyhedronKind::Cube, 12, 1), -1070);
+                   }});
+    return out;
+  }();
+  return all;
 }
 
 class Intersect3DExact : public testing::TestWithParam<std::size_t> {};
 
 TEST_P(Intersect3DExact, BothMethodsMatchTheReference) {
-  const Case3D c = cases()[GetParam()];
-  const ConvexPolyhedron p(c.mesh);
+  const ConvexPolyhedron p(cases()[GetParam()].mesh());
   const PlaneIntersector vertices(p, PlaneMethod::Vertices), dual(p, PlaneMethod::Dual);
   std::size_t crosses = 0, touches = 0;
   // random planes scaled under the sanitizers (scale.hpp); the adversarial ones all kept
