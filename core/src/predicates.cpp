@@ -44,6 +44,7 @@
 // than the differences, so that the grain argument of 1. holds for the tails too.
 #include "convexloc/predicates.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -204,6 +205,31 @@ CONVEXLOC_SCALAR int detail::orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexc
       std::array<double, 12>{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z}, kSpaceLo,
       kSpaceHi, [&](const narrow::Magnitudes& m) { return narrow::orient3d(a, b, c, d, m); },
       [&] { return orient3dExpansion(a, b, c, d); }, orient3dMultiprecision);
+}
+
+// The filter once more where a difference is untame only by being small (or zero beside
+// small ones). With every difference at most 2^250 nothing overflows, and a product that
+// underflows errs by at most 2^-1075 in absolute terms (a sum or difference of doubles is
+// exact where it underflows). Such an error in one of a 2x2 minor's two products is multiplied
+// by the third row's difference (|adz|, |bdz| or |cdz|) and then rounded twice, so beyond
+// Shewchuk's kO3dBound * permanent (the relative errors, with the permanent computed from the
+// same products) |error| <= (2 (|adz| + |bdz| + |cdz|) + 3) 2^-1075 (1 + 2^-50), which
+// (|adz| + |bdz| + |cdz| + 2) 2^-1072 covers fourfold. A point one subnormal step off a face
+// in the plane z = 0 (a part standing on its ground plane) has untame differences and
+// determinants far from zero: decided here, not by the multiprecision stage.
+int detail::orient3dUntame(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Orient3dTerms& t) noexcept {
+  if (!t.tame) {
+    const double adz = std::fabs(a.z - d.z), bdz = std::fabs(b.z - d.z), cdz = std::fabs(c.z - d.z);
+    const double hi = std::max({std::fabs(a.x - d.x), std::fabs(a.y - d.y), adz,
+                                std::fabs(b.x - d.x), std::fabs(b.y - d.y), bdz,
+                                std::fabs(c.x - d.x), std::fabs(c.y - d.y), cdz});
+    if (hi <= 0x1p250) {
+      const double bound = kO3dBound * t.permanent + (adz + bdz + cdz + 2) * 0x1p-1072;
+      if (t.det > bound) return 1;
+      if (-t.det > bound) return -1;
+    }
+  }
+  return orient3dExact(a, b, c, d);
 }
 
 unsigned long long exactFallbackCount() noexcept {

@@ -9,6 +9,7 @@
 
 #include "convexloc/generate2d.hpp"
 #include "convexloc/predicates.hpp"
+#include "scale.hpp"
 
 using namespace convexloc;
 
@@ -119,6 +120,54 @@ TEST(Orient3d, MatchesRational) {
   }
   EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 0}), 0);
   EXPECT_EQ(orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, -1}), 1);
+}
+
+// a coordinate from a mixture of scales: zero, a few subnormal steps, tiny, small, ordinary,
+// and up to 2^249, where orient3d's filter takes underflow into account (predicates.cpp,
+// orient3dUntame) rather than handing every untame difference to the exact stage
+double mixed(Rng& r) {
+  const double sign = r.below(2) ? -1 : 1;
+  switch (r.below(7)) {
+    case 0: return 0.0;
+    case 1: return sign * std::ldexp(static_cast<double>(1 + r.below(8)), -1074);
+    case 2: return wild(r, -1074, -1000);
+    case 3: return wild(r, -600, -400);
+    case 4: return wild(r, 200, 249);
+    default: return wild(r, -20, 20);
+  }
+}
+
+TEST(Orient3d, SmallDifferencesBesideOrdinaryOnesMatchRational) {
+  Rng r(16);
+  const int rounds = static_cast<int>(testscale::scaled(200000, 20000));  // fewer under ASan
+  for (int i = 0; i < rounds; ++i) {
+    const Vec3 a{mixed(r), mixed(r), mixed(r)}, b{mixed(r), mixed(r), mixed(r)},
+        c{mixed(r), mixed(r), mixed(r)};
+    Vec3 d{mixed(r), mixed(r), mixed(r)};
+    // d on a face in the plane z = 0, or one to a few subnormal steps off it
+    if (i % 4 == 1) {
+      const Vec3 a0{a.x, a.y, 0}, b0{b.x, b.y, 0}, c0{c.x, c.y, 0};
+      d.z = i % 8 == 1 ? 0.0 : std::ldexp(static_cast<double>(r.below(5)) - 2, -1074);
+      ASSERT_EQ(orient3d(a0, b0, c0, d), refOrient3d(a0, b0, c0, d)) << i;
+      continue;
+    }
+    // d on the line through a and b, rounded: on the plane or a rounding off it
+    if (i % 4 == 2) d = {a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5, a.z * 0.5 + b.z * 0.5};
+    ASSERT_EQ(orient3d(a, b, c, d), refOrient3d(a, b, c, d)) << i;
+  }
+  // a part on its ground plane and a point one subnormal step below it: untame differences,
+  // a determinant far from zero, decided without the exact stage
+  const unsigned long long before = exactFallbackCount();
+  const double step = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(orient3d({0, 0, 0}, {8000, 0, 0}, {0, 8000, 0}, {10, 10, -step}), 1);
+  EXPECT_EQ(orient3d({0, 0, 0}, {8000, 0, 0}, {0, 0, 40}, {10, -step, 10}), -1);
+  EXPECT_EQ(exactFallbackCount(), before);
+  // a triangle of area 2^-1000 and a point a step off its plane: the determinant underflows
+  // to zero in doubles and is not zero
+  const double t = 0x1p-500;
+  EXPECT_EQ(orient3d({0, 0, 0}, {t, 0, 0}, {0, t, 0}, {0, 0, -step}), 1);
+  EXPECT_EQ(orient3d({0, 0, 0}, {t, 0, 0}, {0, t, 0}, {0, 0, step}), -1);
+  EXPECT_EQ(orient3d({0, 0, 0}, {t, 0, 0}, {0, t, 0}, {t, t, 0}), 0);
 }
 
 TEST(Orient3d, AroundAnAxisMatchesRational) {

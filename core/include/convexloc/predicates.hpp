@@ -65,6 +65,11 @@ inline constexpr double kO3dBound = (7.0 + 56.0 * kEps) * kEps;
 // exact sign of det[a-d; b-d; c-d] for finite doubles (the exact stage, predicates.cpp)
 int orient3dExact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept;
 
+struct Orient3dTerms;
+// where orient3d's filter cannot decide: the filter once more with room for underflow when no
+// difference is over 2^250, then the exact stage (predicates.cpp)
+int orient3dUntame(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const Orient3dTerms& t) noexcept;
+
 // a difference whose products in the 3D filter can neither underflow nor overflow
 inline bool tame3d(double v) noexcept {
   const double a = std::fabs(v);
@@ -125,7 +130,7 @@ inline int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) noexcept {
   if (detail::orient3dSure(t)) return t.det > 0 ? 1 : -1;
   // tame differences cannot underflow: a zero permanent means every term is exactly zero
   if (t.tame && t.permanent == 0.0) return 0;
-  return detail::orient3dExact(a, b, c, d);
+  return detail::orient3dUntame(a, b, c, d, t);
 }
 
 namespace detail {
