@@ -132,16 +132,16 @@ int times(const Diff& u, const double* m, int n, double* h) noexcept {
 
 // === The multiprecision stage (extreme exponents)
 
-// the smallest exponent of a last bit over the non-zero values, so that all scale to integers
+// the smallest exponent of a lowest set bit over the non-zero values: all scale to integers,
+// the smallest that they can
 template <std::size_t K>
 int commonLowBit(const std::array<double, K>& values) noexcept {
   int lo = 0;
   bool any = false;
   for (double v : values) {
     if (v == 0.0) continue;
-    int e = 0;
-    std::frexp(v, &e);
-    if (!any || e - 53 < lo) lo = e - 53;
+    const int e = detail::lowestSetBit(v);
+    if (!any || e < lo) lo = e;
     any = true;
   }
   return lo;

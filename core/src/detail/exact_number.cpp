@@ -9,19 +9,6 @@
 namespace convexloc::detail {
 namespace {
 
-// v == mantissa * 2^exponent with an integer |mantissa| < 2^53, for a finite non-zero v
-struct Decomposed {
-  std::uint64_t magnitude;
-  bool negative;
-  int exponent;
-};
-Decomposed decompose(double v) {
-  int e = 0;
-  const double m = std::frexp(v, &e);                 // |m| in [0.5, 1)
-  const double whole = std::ldexp(std::fabs(m), 53);  // an integer below 2^53
-  return {static_cast<std::uint64_t>(whole), m < 0, e - 53};
-}
-
 // the number of bits of a non-negative integer (0 for 0)
 long bitLength(const ExactInt& v) {
   return v == 0 ? 0 : static_cast<long>(boost::multiprecision::msb(v)) + 1;
@@ -31,8 +18,8 @@ long bitLength(const ExactInt& v) {
 
 ExactInt scaledInteger(double v, int shift) {
   if (v == 0.0) return ExactInt(0);
-  const Decomposed d = decompose(v);
-  ExactInt out(d.magnitude);
+  const DoubleParts d = doubleParts(v);
+  ExactInt out(d.significand);
   const int k = d.exponent + shift;
   if (k > 0) out <<= static_cast<unsigned>(k);
   if (k < 0) out >>= static_cast<unsigned>(-k);  // the caller's shift leaves no fraction
@@ -41,12 +28,12 @@ ExactInt scaledInteger(double v, int shift) {
 
 ExactRational exactRational(double v) {
   if (v == 0.0) return ExactRational(0);
-  Decomposed d = decompose(v);
-  // an odd mantissa over a power of two is already in lowest terms
-  const int zeros = std::min(std::countr_zero(d.magnitude), std::max(0, -d.exponent));
-  d.magnitude >>= zeros;
+  DoubleParts d = doubleParts(v);
+  // an odd significand over a power of two is already in lowest terms
+  const int zeros = std::min(std::countr_zero(d.significand), std::max(0, -d.exponent));
+  d.significand >>= zeros;
   d.exponent += zeros;
-  ExactInt num(d.magnitude);
+  ExactInt num(d.significand);
   if (d.negative) num = -num;
   if (d.exponent >= 0) return ExactRational(ExactInt(num << static_cast<unsigned>(d.exponent)));
   return ExactRational(num, ExactInt(ExactInt(1) << static_cast<unsigned>(-d.exponent)));

@@ -19,6 +19,11 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #endif
 
+#include <bit>
+#include <cstdint>
+
+#include "detail/bit_cast.hpp"
+
 namespace convexloc::detail {
 
 #if CONVEXLOC_USE_GMP
@@ -28,6 +33,30 @@ using ExactRational = boost::multiprecision::mpq_rational;
 using ExactInt = boost::multiprecision::cpp_int;
 using ExactRational = boost::multiprecision::cpp_rational;
 #endif
+
+// A finite non-zero double's bits: v = (negative ? -1 : 1) * significand * 2^exponent, with
+// the integer significand below 2^53 and exponent the weight of its last place (-1074 for a
+// subnormal). Read from the representation: std::frexp takes a slow path for subnormals,
+// which the exact stages meet all the time.
+struct DoubleParts {
+  std::uint64_t significand;
+  int exponent;
+  bool negative;
+};
+inline DoubleParts doubleParts(double v) noexcept {
+  const std::uint64_t bits = bit_cast<std::uint64_t>(v);
+  const int field = static_cast<int>((bits >> 52) & 0x7ff);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  if (field == 0) return {fraction, -1074, (bits >> 63) != 0};
+  return {fraction | (std::uint64_t{1} << 52), field - 1075, (bits >> 63) != 0};
+}
+
+// the exponent of v's lowest set bit: v is an odd integer times 2^lowestSetBit(v) (v finite,
+// non-zero); scaling by 2^-(the least of these) makes a set of doubles the smallest integers
+inline int lowestSetBit(double v) noexcept {
+  const DoubleParts p = doubleParts(v);
+  return p.exponent + std::countr_zero(p.significand);
+}
 
 // v * 2^shift as an exact integer, for a finite v that it makes an integer
 ExactInt scaledInteger(double v, int shift);

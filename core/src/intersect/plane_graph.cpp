@@ -26,7 +26,7 @@ VertexGraph::VertexGraph(const ConvexPolyhedron& polyhedron) {
 
 namespace {
 
-// the lowest exponent of a last bit among the non-zero values (0 when all are zero)
+// the lowest exponent of a lowest set bit among the non-zero values (0 when all are zero)
 int lowestBit(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
   int lo = 0;
   bool any = false;
@@ -34,9 +34,8 @@ int lowestBit(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
     for (int k = 0; k < 3; ++k)
       for (double v : {side[k].x, side[k].y, side[k].z}) {
         if (v == 0.0) continue;
-        int e = 0;
-        std::frexp(v, &e);
-        lo = any ? std::min(lo, e - 53) : e - 53;
+        const int e = lowestSetBit(v);
+        lo = any ? std::min(lo, e) : e;
         any = true;
       }
   return lo;
