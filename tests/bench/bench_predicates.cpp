@@ -8,6 +8,10 @@
 // (the line y = x) with full 53-bit coordinates in [-1, 1], whose differences carry rounding
 // tails; both within the narrow-integer stage. "wide", the same plane with coordinates of
 // magnitudes 2^-20 .. 2^20: too wide a span for 61-bit integers, so the expansions decide.
+// "extreme", the lattice plane scaled by 2^1000 (coordinates near 2^980): beyond the reach of
+// both, the multiprecision stage decides.
+// Off, one more kind: "step", a point one to four subnormal steps off a face in the plane
+// z = 0 (the line y = 0), a CAD part on its ground plane: the filter allows for underflow.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -33,7 +37,7 @@ struct Turn {
   Vec2 a, b, c;
 };
 
-enum class Kind { Off, Lattice, Tails, Wide };
+enum class Kind { Off, Step, Lattice, Tails, Wide, Extreme };
 
 // a random integer in [-n, n]
 double integer(Rng& r, std::uint64_t n) {
@@ -65,8 +69,17 @@ Orient orientCase(Rng& r, Kind kind) {
                 std::ldexp(o[1] + i * e[1] + j * f[1], -20),
                 std::ldexp(o[2] + i * e[2] + j * f[2] + lift, -20)};
   };
+  if (kind == Kind::Step) {
+    auto ground = [&] { return Vec3{integer(r, 1 << 13), integer(r, 1 << 13), 0.0}; };
+    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
+    return {ground(), ground(), ground(), {integer(r, 1 << 13), integer(r, 1 << 13), -step}};
+  }
   const double lift = kind == Kind::Off ? static_cast<double>(1 << 20) : 0.0;
-  return {at(0), at(0), at(0), at(lift)};
+  Orient out{at(0), at(0), at(0), at(lift)};
+  if (kind == Kind::Extreme)  // a power of two keeps the point on the plane
+    for (Vec3* v : {&out.a, &out.b, &out.c, &out.d})
+      *v = {std::ldexp(v->x, 1000), std::ldexp(v->y, 1000), std::ldexp(v->z, 1000)};
+  return out;
 }
 
 // three points on a line, or the third clearly off it
@@ -84,8 +97,15 @@ Turn turnCase(Rng& r, Kind kind) {
     const double i = integer(r, 1 << 10);
     return Vec2{std::ldexp(o.x + i * e.x, -20), std::ldexp(o.y + i * e.y + lift, -20)};
   };
+  if (kind == Kind::Step) {
+    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
+    return {{integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), step}};
+  }
   const double lift = kind == Kind::Off ? static_cast<double>(1 << 20) : 0.0;
-  return {at(0), at(0), at(lift)};
+  Turn out{at(0), at(0), at(lift)};
+  if (kind == Kind::Extreme)
+    for (Vec2* v : {&out.a, &out.b, &out.c}) *v = {std::ldexp(v->x, 1000), std::ldexp(v->y, 1000)};
+  return out;
 }
 
 template <class Case, class Make>
@@ -132,10 +152,10 @@ void orient2dBench(benchmark::State& state, Kind kind) {
 }
 
 [[maybe_unused]] const bool registered = [] {
-  const std::pair<const char*, Kind> kinds[] = {{"off", Kind::Off},
-                                                {"on_lattice", Kind::Lattice},
-                                                {"on_tails", Kind::Tails},
-                                                {"on_wide", Kind::Wide}};
+  const std::pair<const char*, Kind> kinds[] = {
+      {"off", Kind::Off},          {"off_by_a_subnormal_step", Kind::Step},
+      {"on_lattice", Kind::Lattice}, {"on_tails", Kind::Tails},
+      {"on_wide", Kind::Wide},     {"on_extreme", Kind::Extreme}};
   for (auto [name, kind] : kinds) {
     benchmark::RegisterBenchmark((std::string("Orient3D/") + name).c_str(), orient3dBench, kind);
     benchmark::RegisterBenchmark((std::string("Orient2D/") + name).c_str(), orient2dBench, kind);

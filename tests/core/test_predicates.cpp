@@ -170,6 +170,34 @@ TEST(Orient3d, SmallDifferencesBesideOrdinaryOnesMatchRational) {
   EXPECT_EQ(orient3d({0, 0, 0}, {t, 0, 0}, {0, t, 0}, {t, t, 0}), 0);
 }
 
+TEST(Orient2d, SmallDifferencesBesideOrdinaryOnesMatchRational) {
+  Rng r(17);
+  const int rounds = static_cast<int>(testscale::scaled(200000, 20000));  // fewer under ASan
+  for (int i = 0; i < rounds; ++i) {
+    const Vec2 a{mixed(r), mixed(r)}, b{mixed(r), mixed(r)};
+    Vec2 c{mixed(r), mixed(r)};
+    // c on an edge along the x axis, or one to a few subnormal steps off it
+    if (i % 3 == 1) {
+      const Vec2 a0{a.x, 0}, b0{b.x, 0};
+      c.y = i % 6 == 1 ? 0.0 : std::ldexp(static_cast<double>(r.below(5)) - 2, -1074);
+      ASSERT_EQ(orient2d(a0, b0, c), refOrient2d(a0, b0, c)) << i;
+      continue;
+    }
+    // c the rounded midpoint of a and b: on the line or a rounding off it
+    if (i % 3 == 2) c = {a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5};
+    ASSERT_EQ(orient2d(a, b, c), refOrient2d(a, b, c)) << i;
+  }
+  // an edge on the x axis and a point one subnormal step above it: decided by the filter
+  const unsigned long long before = exactFallbackCount();
+  const double step = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(orient2d({0, 0}, {8000, 0}, {10, step}), 1);
+  EXPECT_EQ(orient2d({0, 0}, {8000, 0}, {10, -step}), -1);
+  EXPECT_EQ(exactFallbackCount(), before);
+  // an edge 2^-500 long and a point a step off it: the cross product underflows to zero
+  EXPECT_EQ(orient2d({0, 0}, {0x1p-500, 0}, {0x1p-501, step}), 1);
+  EXPECT_EQ(orient2d({0, 0}, {0x1p-500, 0}, {0x1p-501, 0}), 0);
+}
+
 TEST(Orient3d, AroundAnAxisMatchesRational) {
   // Orient3dAround(a, b, d)(k) = orient3d(a, b, k, d), the cross product computed once: many
   // k per (a, b, d), at every scale, on the plane through a, b and d and one ulp off it

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 
 #include "convexloc/geometry.hpp"
 
@@ -24,7 +25,8 @@ inline constexpr double kEps = 0x1p-53;
 inline constexpr double kCcwBound = (3.0 + 16.0 * kEps) * kEps;
 // below this permanent a product may have underflowed, and the bound above does not hold
 inline constexpr double kTinyPermanent = 0x1p-960;
-// absolute slack for one underflowed product (half the smallest subnormal, twice over)
+// absolute slack for products that underflow: each errs by at most 2^-1075 (half the smallest
+// subnormal) beyond its relative rounding, and this is eight times that
 inline constexpr double kUnderflowSlack = 0x1p-1072;
 
 // exact sign of (p1 - p0) x (q1 - q0) for finite doubles (the exact stage, predicates.cpp)
@@ -36,12 +38,16 @@ inline int crossFiltered(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1) noexcept {
   double right = (p1.y - p0.y) * (q1.x - q0.x);
   double det = left - right;
   double permanent = std::fabs(left) + std::fabs(right);
-  if (permanent >= kTinyPermanent) {  // false for NaN (overflow) and for a tiny permanent
-    double bound = kCcwBound * permanent + kUnderflowSlack;
+  // A difference of doubles is exact where it underflows, and each product errs by at most
+  // 2^-1075 beyond its relative rounding where it does, so kUnderflowSlack (four times the two
+  // products' worst) keeps the bound valid at any finite permanent: a point a subnormal step
+  // off an edge on the x axis is decided here.
+  if (permanent <= std::numeric_limits<double>::max()) {  // false for NaN and infinity
+    const double bound = kCcwBound * permanent + kUnderflowSlack;
     if (det > bound) return 1;
     if (-det > bound) return -1;
-  } else if (permanent == 0.0 && (p1.x == p0.x || q1.y == q0.y) && (p1.y == p0.y || q1.x == q0.x)) {
-    return 0;  // both products are exact zeros (axis-aligned data), not underflow
+    if (permanent == 0.0 && (p1.x == p0.x || q1.y == q0.y) && (p1.y == p0.y || q1.x == q0.x))
+      return 0;  // both products are exact zeros (axis-aligned data), not underflow
   }
   return crossExact(p0, p1, q0, q1);
 }
