@@ -118,7 +118,9 @@ std::vector<Vec3> exactDirections(const std::vector<Vec3>& v, const ExactRationa
         top = std::max(top, binaryExponent(d[i][a]));
       }
     if (top == kNone) continue;  // the vertex is g: no direction (not a vertex of a solid)
-    auto round = [&](int a) { return toDouble(timesPowerOfTwo(d[i][a], -top), Rounding::TowardZero); };
+    auto round = [&](int a) {
+      return toDouble(timesPowerOfTwo(d[i][a], -top), Rounding::TowardZero);
+    };
     rel[i] = {round(0), round(1), round(2)};
   }
   return rel;

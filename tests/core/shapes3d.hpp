@@ -35,7 +35,8 @@ inline MeshData cube() {
 // the box with corners lo and hi, faces as in cube()
 inline MeshData box(Vec3 lo, Vec3 hi) {
   MeshData m = cube();
-  for (Vec3& v : m.vertices) v = {v.x < 0 ? lo.x : hi.x, v.y < 0 ? lo.y : hi.y, v.z < 0 ? lo.z : hi.z};
+  for (Vec3& v : m.vertices)
+    v = {v.x < 0 ? lo.x : hi.x, v.y < 0 ? lo.y : hi.y, v.z < 0 ? lo.z : hi.z};
   return m;
 }
 

@@ -129,7 +129,8 @@ const std::vector<Case3D>& cases() {
     out.push_back({"huge_2e997", [ico] { return scaled(ico(), 997); }});
     out.push_back({"tiny_2e_1000", [ico] { return scaled(ico(), -1000); }});
     out.push_back({"subnormal_cube", [] {
-                     return scaled(convexloc::generatePolyhedron(PolyhedronKind::Cube, 12, 1), -1070);
+                     const PolyhedronKind cube = PolyhedronKind::Cube;
+                     return scaled(convexloc::generatePolyhedron(cube, 12, 1), -1070);
                    }});
     return out;
   }();

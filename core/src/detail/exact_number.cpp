@@ -44,7 +44,8 @@ long binaryExponent(const ExactRational& q) {
 }
 
 ExactRational timesPowerOfTwo(const ExactRational& q, long k) {
-  if (k >= 0) return ExactRational(ExactInt(numerator(q) << static_cast<unsigned>(k)), denominator(q));
+  if (k >= 0)
+    return ExactRational(ExactInt(numerator(q) << static_cast<unsigned>(k)), denominator(q));
   return ExactRational(numerator(q), ExactInt(denominator(q) << static_cast<unsigned>(-k)));
 }
 
