@@ -132,21 +132,6 @@ int times(const Diff& u, const double* m, int n, double* h) noexcept {
 
 // === The multiprecision stage (extreme exponents)
 
-// the smallest exponent of a lowest set bit over the non-zero values: all scale to integers,
-// the smallest that they can
-template <std::size_t K>
-int commonLowBit(const std::array<double, K>& values) noexcept {
-  int lo = 0;
-  bool any = false;
-  for (double v : values) {
-    if (v == 0.0) continue;
-    const int e = detail::lowestSetBit(v);
-    if (!any || e < lo) lo = e;
-    any = true;
-  }
-  return lo;
-}
-
 // The multiprecision stage's integers, one set per thread: each keeps its limbs from call to
 // call, so that a thread's calls allocate only while its integers grow (under the sanitizers
 // allocation was half of this stage's time), and every operation below writes into one of
@@ -165,21 +150,8 @@ Scratch<K>& scratch() {
 // z[i] = values[i] * 2^-lo, all exact integers, with lo the common lowest set bit
 template <std::size_t K>
 void integers(const std::array<double, K>& values, std::array<detail::ExactInt, K>& z) {
-  const int lo = commonLowBit(values);
-  for (std::size_t i = 0; i < K; ++i) {
-    detail::ExactInt& out = z[i];
-    if (values[i] == 0.0) {
-      out = 0u;
-      continue;
-    }
-    const detail::DoubleParts d = detail::doubleParts(values[i]);
-    out = d.significand;
-    // lo is at most the lowest set bit: a right shift drops only the significand's zeros
-    const int shift = d.exponent - lo;
-    if (shift > 0) out <<= static_cast<unsigned>(shift);
-    if (shift < 0) out >>= static_cast<unsigned>(-shift);
-    if (d.negative) out.backend().negate();
-  }
+  const int lo = detail::commonLowestSetBit(values);
+  for (std::size_t i = 0; i < K; ++i) detail::setScaledInteger(z[i], values[i], -lo);
 }
 
 [[gnu::noinline]] int crossMultiprecision(const std::array<double, 8>& in) {

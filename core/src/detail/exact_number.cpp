@@ -16,14 +16,23 @@ long bitLength(const ExactInt& v) {
 
 }  // namespace
 
-ExactInt scaledInteger(double v, int shift) {
-  if (v == 0.0) return ExactInt(0);
+void setScaledInteger(ExactInt& out, double v, int shift) {
+  if (v == 0.0) {
+    out = 0u;
+    return;
+  }
   const DoubleParts d = doubleParts(v);
-  ExactInt out(d.significand);
+  out = d.significand;
   const int k = d.exponent + shift;
   if (k > 0) out <<= static_cast<unsigned>(k);
   if (k < 0) out >>= static_cast<unsigned>(-k);  // the caller's shift leaves no fraction
-  return d.negative ? ExactInt(-out) : out;
+  if (d.negative) out.backend().negate();
+}
+
+ExactInt scaledInteger(double v, int shift) {
+  ExactInt out;
+  setScaledInteger(out, v, shift);
+  return out;
 }
 
 ExactRational exactRational(double v) {

@@ -58,6 +58,25 @@ inline int lowestSetBit(double v) noexcept {
   return p.exponent + std::countr_zero(p.significand);
 }
 
+// the least lowestSetBit over the non-zero values (0 when all are zero): times 2^-(it) they
+// are all integers, the smallest that they can be
+template <class Doubles>
+int commonLowestSetBit(const Doubles& values) noexcept {
+  int lo = 0;
+  bool any = false;
+  for (double v : values) {
+    if (v == 0.0) continue;
+    const int e = lowestSetBit(v);
+    if (!any || e < lo) lo = e;
+    any = true;
+  }
+  return lo;
+}
+
+// out = v * 2^shift, for a finite v that it makes an integer; in place, so that an integer
+// kept from call to call keeps its limbs
+void setScaledInteger(ExactInt& out, double v, int shift);
+
 // v * 2^shift as an exact integer, for a finite v that it makes an integer
 ExactInt scaledInteger(double v, int shift);
 

@@ -1,7 +1,6 @@
 // convexloc — the vertex graph of a polyhedron and the exact fallback of a plane's vertex
 // comparison (graph3d.hpp).
-#include <algorithm>
-#include <cmath>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -24,28 +23,12 @@ VertexGraph::VertexGraph(const ConvexPolyhedron& polyhedron) {
     for (int k = 0; k < 3; ++k) neighbours[cursor[t[k]]++] = t[(k + 1) % 3];
 }
 
-namespace {
-
-// the lowest exponent of a lowest set bit among the non-zero values (0 when all are zero)
-int lowestBit(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
-  int lo = 0;
-  bool any = false;
-  for (const Vec3* side : {from, to})
-    for (int k = 0; k < 3; ++k)
-      for (double v : {side[k].x, side[k].y, side[k].z}) {
-        if (v == 0.0) continue;
-        const int e = lowestSetBit(v);
-        lo = any ? std::min(lo, e) : e;
-        any = true;
-      }
-  return lo;
-}
-
-}  // namespace
-
 // every operand times 2^-lo is an integer, so the determinant's sign is decided in integers
 int det3DifferencesExact(const Vec3 (&from)[3], const Vec3 (&to)[3]) noexcept {
-  const int shift = -lowestBit(from, to);
+  const int shift = -commonLowestSetBit(std::array<double, 18>{
+      from[0].x, from[0].y, from[0].z, from[1].x, from[1].y, from[1].z, from[2].x, from[2].y,
+      from[2].z, to[0].x, to[0].y, to[0].z, to[1].x, to[1].y, to[1].z, to[2].x, to[2].y,
+      to[2].z});
   auto exact = [shift](double v) { return scaledInteger(v, shift); };
   ExactInt r[3][3];
   for (int k = 0; k < 3; ++k) {
