@@ -52,6 +52,11 @@ double coordinate(Rng& r, Kind kind) {
 
 // a face (a, b, c) and a point d on its plane, or clearly off it
 Orient orientCase(Rng& r, Kind kind) {
+  if (kind == Kind::Step) {
+    auto ground = [&] { return Vec3{integer(r, 1 << 13), integer(r, 1 << 13), 0.0}; };
+    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
+    return {ground(), ground(), ground(), {integer(r, 1 << 13), integer(r, 1 << 13), -step}};
+  }
   if (kind == Kind::Tails || kind == Kind::Wide) {
     auto at = [&] {
       const double x = coordinate(r, kind);
@@ -69,11 +74,6 @@ Orient orientCase(Rng& r, Kind kind) {
                 std::ldexp(o[1] + i * e[1] + j * f[1], -20),
                 std::ldexp(o[2] + i * e[2] + j * f[2] + lift, -20)};
   };
-  if (kind == Kind::Step) {
-    auto ground = [&] { return Vec3{integer(r, 1 << 13), integer(r, 1 << 13), 0.0}; };
-    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
-    return {ground(), ground(), ground(), {integer(r, 1 << 13), integer(r, 1 << 13), -step}};
-  }
   const double lift = kind == Kind::Off ? static_cast<double>(1 << 20) : 0.0;
   Orient out{at(0), at(0), at(0), at(lift)};
   if (kind == Kind::Extreme)  // a power of two keeps the point on the plane
@@ -84,6 +84,10 @@ Orient orientCase(Rng& r, Kind kind) {
 
 // three points on a line, or the third clearly off it
 Turn turnCase(Rng& r, Kind kind) {
+  if (kind == Kind::Step) {
+    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
+    return {{integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), step}};
+  }
   if (kind == Kind::Tails || kind == Kind::Wide) {
     auto at = [&] {
       const double x = coordinate(r, kind);
@@ -97,10 +101,6 @@ Turn turnCase(Rng& r, Kind kind) {
     const double i = integer(r, 1 << 10);
     return Vec2{std::ldexp(o.x + i * e.x, -20), std::ldexp(o.y + i * e.y + lift, -20)};
   };
-  if (kind == Kind::Step) {
-    const double step = std::ldexp(static_cast<double>(1 + r.below(4)), -1074);
-    return {{integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), 0.0}, {integer(r, 1 << 13), step}};
-  }
   const double lift = kind == Kind::Off ? static_cast<double>(1 << 20) : 0.0;
   Turn out{at(0), at(0), at(lift)};
   if (kind == Kind::Extreme)
